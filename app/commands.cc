@@ -1,0 +1,500 @@
+#include "app/commands.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "app/outputs.h"
+#include "app/plots.h"
+#include "app/solution_import.h"
+#include "milp/cbc_solver.h"
+#include "milp/model_io.h"
+#include "transcription/solve.h"
+
+namespace thrustsched::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string F(double v, int digits = 6) {
+  if (std::isnan(v)) return "n/a";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
+  return buf;
+}
+
+std::string Secs(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "%.2f s", v);
+  return buf;
+}
+
+std::string Percent(double gap) {
+  if (std::isnan(gap)) return "n/a";
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "%.3g%%", 100.0 * gap);
+  return buf;
+}
+
+std::string JoinNames(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+// --- SIGINT: stop the solve as at a time limit, keep the best schedule. ---
+std::atomic<bool> g_interrupt{false};
+
+extern "C" void OnSigint(int) {
+  g_interrupt.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C terminates at once
+}
+
+class SigintGuard {
+ public:
+  SigintGuard() {
+    g_interrupt.store(false);
+    previous_ = std::signal(SIGINT, OnSigint);
+  }
+  ~SigintGuard() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  void (*previous_)(int) = SIG_DFL;
+};
+
+void MakeDirectory(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) {
+    throw ScenarioError(dir + ": cannot create the output directory (" + ec.message() + ")");
+  }
+}
+
+Scenario LoadWithOverrides(const std::string& path, const ScenarioOverrides& ov) {
+  Scenario s = LoadScenario(path);
+  ApplyOverrides(ov, &s);
+  return s;
+}
+
+std::string ModelLine(const Scenario& s) {
+  std::ostringstream os;
+  os << ToString(s.model_type) << ", " << s.num_intervals << " intervals of " << F(s.step_s)
+     << " s from t = " << F(s.start_s) << " s, " << s.problem.thrusters.size() << " thrusters ("
+     << JoinNames(s.thruster_names());
+  std::vector<std::string> disabled;
+  for (const auto& t : s.problem.thrusters.thrusters()) {
+    if (!t.enabled) disabled.push_back(t.name);
+  }
+  os << ")";
+  if (!disabled.empty()) os << ", disabled: " << JoinNames(disabled);
+  if (s.impulsive()) os << ", impulsive";
+  return os.str();
+}
+
+std::string MilpLine(const transcription::ScheduleMilp& m, const Scenario& s) {
+  const transcription::BuildStats& st = m.stats();
+  std::ostringstream os;
+  os << st.num_binaries << " binaries, " << st.num_columns << " columns, " << st.num_rows
+     << " rows, " << st.num_nonzeros << " nonzeros (" << ToString(s.build.formulation) << ", "
+     << ToString(s.build.encoding) << ", " << dynamics::ToString(s.build.discretisation.scheme)
+     << ")";
+  return os.str();
+}
+
+void WriteModelFile(const std::string& path, const milp::LpData& lp, bool obfuscate) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  try {
+    if (ext == ".mps") {
+      milp::MpsOptions o;
+      o.obfuscate_names = obfuscate;
+      milp::WriteMpsFile(path, lp, o);
+    } else if (ext == ".lp") {
+      milp::LpFormatOptions o;
+      o.obfuscate_names = obfuscate;
+      milp::WriteLpFile(path, lp, o);
+    } else {
+      throw ScenarioError(path + ": the model file must end in .mps or .lp");
+    }
+  } catch (const std::runtime_error& e) {
+    throw ScenarioError(e.what());
+  }
+}
+
+// Runs the checker on burns; a failing nonlinear replay (e.g. the orbit leaves
+// the model's validity) is reported and the linear check kept.
+transcription::CheckReport RunChecker(const Scenario& s, const std::vector<transcription::Burn>& burns,
+                                      std::string* nonlinear_error) {
+  try {
+    return transcription::CheckSchedule(s.problem, burns, s.check);
+  } catch (const std::runtime_error& e) {
+    if (!s.check.nonlinear) throw;
+    *nonlinear_error = e.what();
+    transcription::CheckOptions o = s.check;
+    o.nonlinear.reset();
+    return transcription::CheckSchedule(s.problem, burns, o);
+  }
+}
+
+void PrintCheck(std::ostream& os, const Scenario& s, const transcription::CheckReport& r,
+                const CheckVerdict& v) {
+  const double k = s.window_unit_per_output_unit;
+  os << "check         " << (v.passed ? "PASSED" : "FAILED") << ": rules "
+     << (r.operational_ok ? "ok" : std::to_string(r.rule_violations.size()) + " violation(s)");
+  if (s.problem.window.enabled()) {
+    os << ", window violation " << F(r.max_window_violation_at_nodes * k, 4) << " " << s.window_unit
+       << " at nodes, " << F(r.max_window_violation * k, 4) << " " << s.window_unit
+       << " on all samples";
+  }
+  if (s.problem.terminal.kind == transcription::TerminalKind::kFixedState ||
+      s.problem.terminal.kind == transcription::TerminalKind::kStateBox) {
+    os << ", terminal " << (r.terminal_ok ? "ok" : "VIOLATED");
+  }
+  os << "\n";
+  if (r.nonlinear_checked) {
+    os << "nonlinear     window violation " << F(r.max_window_violation_nonlinear_deg, 4)
+       << " deg, max |lat| " << F(r.max_abs_lat_deg, 4) << " deg, max |lon - station| "
+       << F(r.max_abs_lon_deg, 4) << " deg, ~" << F(r.time_outside_window_nonlinear_s, 4)
+       << " s outside\n";
+  }
+  for (const std::string& f : v.findings) os << "  finding: " << f << "\n";
+}
+
+void PrintImpulsiveCheck(std::ostream& os, const Scenario& s, const transcription::ImpulsiveCheck& c,
+                         const CheckVerdict& v) {
+  os << "check         " << (v.passed ? "PASSED" : "FAILED");
+  if (s.problem.window.enabled()) {
+    os << ": window violation " << F(c.max_window_violation * s.window_unit_per_output_unit, 4)
+       << " " << s.window_unit << " at nodes";
+  }
+  os << ", terminal error " << F(c.terminal_error, 4) << " (state-scale units)\n";
+  for (const std::string& f : v.findings) os << "  finding: " << f << "\n";
+}
+
+std::string BurnCounts(const Scenario& s, const transcription::Schedule& sch) {
+  std::map<int, int> count;
+  for (const auto& b : sch.burns) ++count[b.thruster];
+  for (const auto& i : sch.impulses) ++count[i.thruster];
+  std::string out;
+  const auto names = s.thruster_names();
+  for (const auto& [i, c] : count) out += (out.empty() ? "" : ", ") + names[i] + " " + std::to_string(c);
+  return out;
+}
+
+void WritePlotsReport(const std::string& dir, const Scenario& s, bool nonlinear, bool no_plots,
+                      std::vector<std::string>* files, std::ostream& err) {
+  PlotOptions po;
+  po.run_gnuplot = !no_plots;
+  const PlotResult p = WritePlots(dir, s, nonlinear, po);
+  for (const auto& f : p.images) files->push_back(f);
+  if (!p.ok && !p.message.empty()) err << "note: " << p.message << "\n";
+}
+
+}  // namespace
+
+int RunSolve(const SolveArgs& a) {
+  const Clock::time_point t_start = Clock::now();
+  Scenario s = LoadWithOverrides(a.scenario, a.overrides);
+  const std::string dir =
+      a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
+  MakeDirectory(dir);
+  std::ostream& err = std::cerr;
+  if (!a.quiet) err << "building the model: " << ModelLine(s) << "\n";
+
+  const transcription::ScheduleMilp milp(s.problem, s.build);
+  if (!a.quiet) {
+    err << "model: " << MilpLine(milp, s) << "; discretised in "
+        << Secs(milp.stats().discretise_seconds) << ", built in " << Secs(milp.stats().build_seconds)
+        << "\n";
+  }
+  for (const std::string& reason : milp.infeasibility_reasons()) {
+    err << "note: infeasible by construction: " << reason << "\n";
+  }
+  if (!a.export_mps.empty()) WriteModelFile(a.export_mps, milp.lp(), false);
+  if (!a.export_lp.empty()) WriteModelFile(a.export_lp, milp.lp(), false);
+
+  // Solve (progress on stderr once the solve has run for a few seconds).
+  transcription::SolveScheduleOptions opt;
+  opt.build = s.build;
+  opt.solve = s.solve;
+  opt.check_schedule = false;  // checked below, with its own timing and messages
+  const bool quiet = a.quiet;
+  // The best incumbent seen so far: progress reports between incumbents may
+  // carry NaN for it, and the line should still show it.
+  auto best = std::make_shared<double>(std::nan(""));
+  opt.solve.progress = [quiet, best, &err](const milp::SolveProgress& p) {
+    if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
+    if (quiet || p.wall_seconds < 3.0) return;
+    const double inc = std::isfinite(p.objective) ? p.objective : *best;
+    double gap = p.gap;
+    if (std::isnan(gap) && std::isfinite(inc) && std::isfinite(p.best_bound)) {
+      gap = std::abs(inc - p.best_bound) / std::max(1e-10, std::abs(inc));
+    }
+    err << "  [" << Secs(p.wall_seconds) << "] incumbent " << F(inc) << ", bound "
+        << F(p.best_bound) << ", gap " << Percent(gap) << ", " << p.nodes << " nodes"
+        << (p.new_incumbent ? " (new incumbent)" : "") << "\n";
+  };
+  opt.solve.interrupt = &g_interrupt;
+  if (!a.quiet) {
+    err << "solving with " << milp::CbcVersion() << " (time limit " << F(s.solve.time_limit_s)
+        << " s, relative gap " << F(s.solve.relative_gap) << ", " << s.solve.threads
+        << " thread(s)); Ctrl-C stops and keeps the best schedule found\n";
+  }
+  const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
+  transcription::ScheduleResult r;
+  bool interrupted = false;
+  {
+    SigintGuard guard;
+    r = transcription::SolveBuilt(milp, *solver, opt);
+    interrupted = g_interrupt.load();
+  }
+  if (interrupted) err << "interrupted: keeping the best schedule found so far\n";
+
+  // Check.
+  std::string nonlinear_error;
+  if (r.has_schedule()) {
+    if (!a.quiet) {
+      err << "checking the schedule"
+          << (s.check.nonlinear ? " (linear re-propagation and nonlinear replay)" : "") << "\n";
+    }
+    const Clock::time_point tc = Clock::now();
+    if (s.impulsive()) {
+      r.impulsive_check = transcription::CheckImpulses(s.problem, r.schedule.impulses);
+    } else {
+      r.check = RunChecker(s, r.schedule.burns, &nonlinear_error);
+    }
+    r.checked = true;
+    r.check_seconds = Since(tc);
+  }
+
+  // Files.
+  std::vector<std::string> files = {"summary.json"};
+  if (r.has_schedule()) {
+    if (s.impulsive()) {
+      WriteImpulsesCsv(dir + "/impulses.csv", s, r.schedule.impulses);
+      WriteScheduleCsv(dir + "/schedule.csv", s, {});
+      WriteImpulsiveTrajectoryCsv(dir + "/trajectory.csv", s, r.schedule.impulses);
+      files.insert(files.end(), {"schedule.csv", "impulses.csv", "trajectory.csv"});
+    } else {
+      WriteScheduleCsv(dir + "/schedule.csv", s, r.schedule.burns);
+      WriteTrajectoryCsv(dir + "/trajectory.csv", s, r.check, r.schedule.burns);
+      files.insert(files.end(), {"schedule.csv", "trajectory.csv"});
+    }
+    WritePlotsReport(dir, s, r.check.nonlinear_checked, a.no_plots, &files, err);
+  }
+  RunFacts facts;
+  facts.interrupted = interrupted;
+  facts.command_line = a.command_line;
+  facts.total_seconds = Since(t_start);
+  nlohmann::json summary = SummaryJson(s, milp, r, facts);
+  if (!nonlinear_error.empty() && summary["check"].is_object()) {
+    summary["check"]["nonlinear_error"] = nonlinear_error;
+  }
+  WriteJsonFile(dir + "/summary.json", summary);
+
+  // Human summary.
+  std::ostream& out = std::cout;
+  const milp::SolveResult& sr = r.solve;
+  out << "scenario      " << s.name << " (" << a.scenario << ")\n";
+  out << "model         " << ModelLine(s) << "\n";
+  out << "MILP          " << MilpLine(milp, s) << "\n";
+  out << "status        " << StatusName(sr.status);
+  if (interrupted) out << " (interrupted)";
+  if (sr.has_solution()) {
+    out << ", objective " << F(sr.objective, 8) << " (" << ToString(s.problem.objective.kind)
+        << "), best bound " << F(sr.best_bound, 8) << ", gap " << Percent(sr.gap);
+  }
+  out << "\n";
+  if (!sr.detail.empty() && !sr.has_solution()) out << "solver says   " << sr.detail << "\n";
+  for (const std::string& reason : r.infeasibility_reasons) out << "reason        " << reason << "\n";
+  if (r.has_schedule()) {
+    const transcription::Schedule& sch = r.schedule;
+    out << "consumption   " << F(sch.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
+        << F(sch.delta_v_m_s, 6) << " m/s, propellant " << F(sch.propellant_kg, 6) << " kg\n";
+    if (s.impulsive()) {
+      out << "impulses      " << sch.impulses.size()
+          << (sch.impulses.empty() ? "" : ": " + BurnCounts(s, sch)) << "\n";
+    } else {
+      out << "burns         " << sch.burns.size()
+          << (sch.burns.empty() ? "" : ": " + BurnCounts(s, sch)) << "\n";
+    }
+  }
+  out << "times         discretise " << Secs(r.stats.discretise_seconds) << ", build "
+      << Secs(r.stats.build_seconds) << ", solve " << Secs(sr.wall_seconds);
+  if (!sr.incumbents.empty()) out << " (first solution " << Secs(sr.incumbents.front().wall_seconds) << ")";
+  if (r.checked) out << ", check " << Secs(r.check_seconds);
+  out << ", total " << Secs(facts.total_seconds) << "\n";
+  if (r.checked) {
+    if (s.impulsive()) {
+      PrintImpulsiveCheck(out, s, r.impulsive_check, JudgeImpulsive(s, r.impulsive_check));
+    } else {
+      PrintCheck(out, s, r.check, Judge(s, r.check));
+    }
+    if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
+  }
+  out << "output        " << dir << " (" << JoinNames(files) << ")\n";
+  out.flush();
+
+  switch (sr.status) {
+    case milp::SolveStatus::kOptimal:
+    case milp::SolveStatus::kFeasible:
+      return kExitOk;
+    case milp::SolveStatus::kInfeasible:
+      return kExitInfeasible;
+    case milp::SolveStatus::kNoSolutionFound:
+      return kExitNoSolution;
+    case milp::SolveStatus::kUnbounded:
+    case milp::SolveStatus::kError:
+      return kExitInternal;
+  }
+  return kExitInternal;
+}
+
+int RunExport(const ExportArgs& a) {
+  const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
+  const transcription::ScheduleMilp milp(s.problem, s.build);
+  WriteModelFile(a.file, milp.lp(), a.obfuscate_names);
+  std::cout << "wrote " << a.file << ": " << MilpLine(milp, s) << "\n"
+            << "objective: " << ToString(s.problem.objective.kind)
+            << (s.problem.objective.kind == transcription::ObjectiveKind::kPropellant ? " (kg)"
+                                                                                     : " (m/s)")
+            << ", minimisation; binaries named on_<thruster index>_<interval> (thrusters: "
+            << JoinNames(s.thruster_names()) << ")\n";
+  return kExitOk;
+}
+
+int RunCheck(const CheckArgs& a) {
+  const Scenario s = LoadScenario(a.scenario);
+  std::ostream& out = std::cout;
+  std::vector<std::string> files;
+  bool passed = false;
+  if (!a.out_dir.empty()) MakeDirectory(a.out_dir);
+  const Clock::time_point tc = Clock::now();
+  if (s.impulsive()) {
+    const std::vector<transcription::Impulse> imp = ReadImpulsesCsv(a.schedule, s);
+    const transcription::ImpulsiveCheck c = transcription::CheckImpulses(s.problem, imp);
+    const CheckVerdict v = JudgeImpulsive(s, c);
+    transcription::Schedule sch;
+    sch.impulses = imp;
+    double dv = 0.0;
+    for (const auto& i : imp) dv += i.delta_v_m_s;
+    out << "schedule      " << a.schedule << ": " << imp.size() << " impulses, total "
+        << F(dv, 8) << " m/s\n";
+    PrintImpulsiveCheck(out, s, c, v);
+    passed = v.passed;
+    if (!a.out_dir.empty()) {
+      WriteJsonFile(a.out_dir + "/check.json", ImpulsiveCheckJson(s, c, v, Since(tc)));
+      WriteImpulsesCsv(a.out_dir + "/impulses.csv", s, imp);
+      WriteScheduleCsv(a.out_dir + "/schedule.csv", s, {});
+      WriteImpulsiveTrajectoryCsv(a.out_dir + "/trajectory.csv", s, imp);
+      files = {"check.json", "impulses.csv", "trajectory.csv"};
+      WritePlotsReport(a.out_dir, s, false, a.no_plots, &files, std::cerr);
+    }
+  } else {
+    const std::vector<transcription::Burn> burns = ReadScheduleCsv(a.schedule, s);
+    std::string nonlinear_error;
+    const transcription::CheckReport r = RunChecker(s, burns, &nonlinear_error);
+    const CheckVerdict v = Judge(s, r);
+    transcription::Schedule sch;
+    sch.burns = burns;
+    transcription::ComputeTotals(s.problem.thrusters, &sch);
+    out << "schedule      " << a.schedule << ": " << burns.size() << " burns"
+        << (burns.empty() ? "" : " (" + BurnCounts(s, sch) + ")") << ", consumption "
+        << F(sch.consumption_l1_m_s, 8) << " m/s (L1), delta-v " << F(sch.delta_v_m_s, 8)
+        << " m/s, propellant " << F(sch.propellant_kg, 8) << " kg\n";
+    PrintCheck(out, s, r, v);
+    if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
+    passed = v.passed;
+    if (!a.out_dir.empty()) {
+      nlohmann::json j = CheckJson(s, r, v, Since(tc));
+      j["consumption_l1_m_s"] = sch.consumption_l1_m_s;
+      j["delta_v_m_s"] = sch.delta_v_m_s;
+      j["propellant_kg"] = sch.propellant_kg;
+      j["n_burns"] = burns.size();
+      if (!nonlinear_error.empty()) j["nonlinear_error"] = nonlinear_error;
+      WriteJsonFile(a.out_dir + "/check.json", j);
+      WriteScheduleCsv(a.out_dir + "/schedule.csv", s, burns);
+      WriteTrajectoryCsv(a.out_dir + "/trajectory.csv", s, r, burns);
+      files = {"check.json", "schedule.csv", "trajectory.csv"};
+      WritePlotsReport(a.out_dir, s, r.nonlinear_checked, a.no_plots, &files, std::cerr);
+    }
+  }
+  if (!a.out_dir.empty()) out << "output        " << a.out_dir << " (" << JoinNames(files) << ")\n";
+  return passed ? kExitOk : kExitCheckFailed;
+}
+
+int RunImportSolution(const ImportArgs& a) {
+  const SolutionFormat format = ParseSolutionFormat(a.format);
+  const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
+  const ImportedSolution sol = ReadSolutionFile(a.solution, format);
+  std::ostream& out = std::cout;
+  out << "solution      " << a.solution << ": status \"" << sol.status << "\", objective "
+      << F(sol.objective, 10) << "\n";
+  if (!sol.has_solution) {
+    std::cerr << "error: the solution file holds no feasible solution (status \"" << sol.status
+              << "\")\n";
+    return sol.status.find("nfeasible") != std::string::npos ||
+                   sol.status.find("EMPTY") != std::string::npos ||
+                   sol.status.find("infeasible") != std::string::npos
+               ? kExitInfeasible
+               : kExitNoSolution;
+  }
+  const transcription::ScheduleMilp milp(s.problem, s.build);
+  const std::vector<std::string> names = milp::ExportedColumnNames(milp.lp(), a.obfuscate_names);
+  const Eigen::VectorXd x = ToColumnVector(sol, names);
+  const transcription::Schedule sch = milp.Decode(x);
+  const double objective = milp.lp().Objective(x);
+  const double violation = milp.lp().MaxViolation(x);
+  if (s.impulsive()) {
+    WriteImpulsesCsv(a.out, s, sch.impulses);
+  } else {
+    WriteScheduleCsv(a.out, s, sch.burns);
+  }
+  out << "model         " << MilpLine(milp, s) << "\n"
+      << "objective     " << F(objective, 10) << " recomputed on our model ("
+      << ToString(s.problem.objective.kind) << "); largest row/bound/integrality violation "
+      << F(violation, 3) << "\n";
+  if (s.impulsive()) {
+    out << "impulses      " << sch.impulses.size() << ", total " << F(sch.consumption_l1_m_s, 8)
+        << " m/s (L1)\n";
+  } else {
+    out << "burns         " << sch.burns.size() << ", consumption " << F(sch.consumption_l1_m_s, 8)
+        << " m/s (L1)\n";
+  }
+  out << "wrote         " << a.out << " (check it with: thrustsched check " << a.scenario << " "
+      << a.out << ")\n";
+  return kExitOk;
+}
+
+int RunValidate(const ValidateArgs& a) {
+  const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
+  std::cout << "scenario      " << s.name << ": valid\n"
+            << "model         " << ModelLine(s) << "\n";
+  if (a.build) {
+    const transcription::ScheduleMilp milp(s.problem, s.build);
+    std::cout << "MILP          " << MilpLine(milp, s) << "\n";
+    for (const std::string& reason : milp.infeasibility_reasons()) {
+      std::cout << "reason        infeasible by construction: " << reason << "\n";
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace thrustsched::app

@@ -1,0 +1,69 @@
+// The subcommands of the thrustsched executable (internal to app/; the
+// reusable pieces are in scenario.h, outputs.h, plots.h, solution_import.h).
+//
+//   app::SolveArgs a;  a.scenario = "data/scenarios/geo_week_anzel4.json";  a.out_dir = "out/demo";
+//   int exit_code = app::RunSolve(a);
+#ifndef THRUSTSCHED_APP_COMMANDS_H_
+#define THRUSTSCHED_APP_COMMANDS_H_
+
+#include <string>
+
+#include "app/scenario.h"
+
+namespace thrustsched::app {
+
+/// Exit codes of the CLI (issue 5).
+inline constexpr int kExitOk = 0;            // solved (optimal or feasible) / check passed
+inline constexpr int kExitInternal = 1;      // internal error
+inline constexpr int kExitBadInput = 2;      // bad input (scenario, files, options)
+inline constexpr int kExitInfeasible = 3;    // proven infeasible
+inline constexpr int kExitNoSolution = 4;    // no solution within the limits
+inline constexpr int kExitCheckFailed = 5;   // `check`: the schedule fails the checks
+
+struct SolveArgs {
+  std::string scenario;
+  std::string out_dir;  // empty: out/<scenario file stem>
+  ScenarioOverrides overrides;
+  std::string export_mps, export_lp;
+  bool quiet = false;
+  bool no_plots = false;
+  std::string command_line;
+};
+int RunSolve(const SolveArgs& args);
+
+struct ExportArgs {
+  std::string scenario;
+  std::string file;  // .mps or .lp
+  ScenarioOverrides overrides;
+  bool obfuscate_names = false;
+};
+int RunExport(const ExportArgs& args);
+
+struct CheckArgs {
+  std::string scenario;
+  std::string schedule;  // schedule.csv (on-off) or impulses.csv (impulsive)
+  std::string out_dir;   // optional: check.json, trajectory.csv, plots
+  bool no_plots = false;
+};
+int RunCheck(const CheckArgs& args);
+
+struct ImportArgs {
+  std::string scenario;
+  std::string solution;
+  std::string format;  // cbc | glpsol | glpsol-raw
+  std::string out;     // schedule.csv (or impulses.csv)
+  ScenarioOverrides overrides;
+  bool obfuscate_names = false;
+};
+int RunImportSolution(const ImportArgs& args);
+
+struct ValidateArgs {
+  std::string scenario;
+  bool build = true;
+  ScenarioOverrides overrides;
+};
+int RunValidate(const ValidateArgs& args);
+
+}  // namespace thrustsched::app
+
+#endif  // THRUSTSCHED_APP_COMMANDS_H_

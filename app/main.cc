@@ -1,0 +1,197 @@
+// thrustsched: minimum-fuel on-off thruster schedules from a scenario file.
+//
+//   thrustsched solve data/scenarios/geo_week_anzel4.json --out out/demo
+//   thrustsched export data/scenarios/hcw_table41_2d.json model.mps
+//   thrustsched check data/scenarios/hcw_table41_2d.json out/x/schedule.csv
+//   thrustsched import-solution SCENARIO.json cbc.sol --format cbc --out schedule.csv
+//
+// Exit codes: 0 solved (optimal or feasible) / check passed, 1 internal
+// error, 2 bad input, 3 infeasible, 4 no solution within the time limit,
+// 5 the checked schedule fails.
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "milp/cbc_solver.h"
+
+#ifndef THRUSTSCHED_VERSION
+#define THRUSTSCHED_VERSION "unknown"
+#endif
+
+namespace {
+
+using thrustsched::app::ScenarioOverrides;
+
+// Optional values from CLI11 (which fills plain variables) into the overrides.
+struct OverrideFlags {
+  double time_limit = 0, gap = 0;
+  int threads = 0;
+  std::string scheme, formulation, encoding;
+  CLI::Option* o_time = nullptr;
+  CLI::Option* o_gap = nullptr;
+  CLI::Option* o_threads = nullptr;
+  CLI::Option* o_scheme = nullptr;
+  CLI::Option* o_formulation = nullptr;
+  CLI::Option* o_encoding = nullptr;
+
+  void AddModelOptions(CLI::App* app) {
+    o_scheme = app->add_option("--scheme", scheme,
+                               "discretisation scheme: exact_zoh, frozen_start, frozen_mid, "
+                               "hermite_simpson, rk4, trapezoid, euler, reference");
+    o_formulation = app->add_option("--formulation", formulation, "sparse | condensed");
+    o_encoding = app->add_option("--encoding", encoding, "operational-rule encoding: thesis | tight");
+  }
+  void AddSolverOptions(CLI::App* app) {
+    o_time = app->add_option("--time-limit", time_limit, "solver wall-clock limit (s)");
+    o_gap = app->add_option("--gap", gap, "relative optimality gap at which the solver stops");
+    o_threads = app->add_option("--threads", threads, "solver threads");
+  }
+  ScenarioOverrides Get() const {
+    ScenarioOverrides o;
+    if (o_time != nullptr && o_time->count() > 0) o.time_limit_s = time_limit;
+    if (o_gap != nullptr && o_gap->count() > 0) o.relative_gap = gap;
+    if (o_threads != nullptr && o_threads->count() > 0) o.threads = threads;
+    if (o_scheme != nullptr && o_scheme->count() > 0) o.scheme = scheme;
+    if (o_formulation != nullptr && o_formulation->count() > 0) o.formulation = formulation;
+    if (o_encoding != nullptr && o_encoding->count() > 0) o.encoding = encoding;
+    return o;
+  }
+};
+
+std::string CommandLine(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace app = thrustsched::app;
+  CLI::App cli{
+      "thrustsched: minimum-fuel on-off thruster firing schedules (station keeping, rendezvous) "
+      "by mixed-integer linear programming.\n"
+      "Scenario files are JSON, documented in data/scenarios/README.md.\n"
+      "Exit codes: 0 solved (optimal or feasible) or check passed, 1 internal error, 2 bad input, "
+      "3 infeasible, 4 no solution within the time limit, 5 check failed."};
+  cli.set_version_flag("--version",
+                       std::string("thrustsched ") + THRUSTSCHED_VERSION + " (" +
+                           thrustsched::milp::CbcVersion() + ")");
+  cli.require_subcommand(1);
+
+  // solve
+  app::SolveArgs solve;
+  OverrideFlags solve_flags;
+  CLI::App* c_solve = cli.add_subcommand(
+      "solve",
+      "Build, solve, check and write results (summary.json, schedule.csv, trajectory.csv, SVG "
+      "plots). Command-line options override the scenario.");
+  c_solve->add_option("scenario", solve.scenario, "scenario file (JSON)")->required();
+  c_solve->add_option("--out", solve.out_dir, "output directory (default out/<scenario file stem>)");
+  solve_flags.AddSolverOptions(c_solve);
+  solve_flags.AddModelOptions(c_solve);
+  c_solve->add_option("--export-mps", solve.export_mps, "also write the model as free MPS");
+  c_solve->add_option("--export-lp", solve.export_lp, "also write the model as CPLEX LP");
+  c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
+  c_solve->add_flag("--no-plots", solve.no_plots, "write the gnuplot scripts but do not run gnuplot");
+
+  // export
+  app::ExportArgs exp;
+  OverrideFlags export_flags;
+  CLI::App* c_export = cli.add_subcommand(
+      "export", "Write the model only, as free MPS (FILE.mps) or CPLEX LP (FILE.lp).");
+  c_export->add_option("scenario", exp.scenario, "scenario file (JSON)")->required();
+  c_export->add_option("file", exp.file, "output model file, .mps or .lp")->required();
+  export_flags.AddModelOptions(c_export);
+  c_export->add_flag("--obfuscate-names", exp.obfuscate_names,
+                     "name columns/rows C0000001/R0000001 (import-solution needs the same flag)");
+
+  // check
+  app::CheckArgs check;
+  CLI::App* c_check = cli.add_subcommand(
+      "check",
+      "Run the independent checker on a schedule (schedule.csv, or impulses.csv for impulsive "
+      "scenarios), e.g. one produced by another solver. Exit 0 if it passes, 5 if not.");
+  c_check->add_option("scenario", check.scenario, "scenario file (JSON)")->required();
+  c_check->add_option("schedule", check.schedule, "schedule CSV")->required();
+  c_check->add_option("--out", check.out_dir,
+                      "also write check.json, trajectory.csv and plots to this directory");
+  c_check->add_flag("--no-plots", check.no_plots, "with --out: do not run gnuplot");
+
+  // import-solution
+  app::ImportArgs imp;
+  OverrideFlags import_flags;
+  CLI::App* c_import = cli.add_subcommand(
+      "import-solution",
+      "Map another solver's solution of the exported model back to a schedule, by column names.\n"
+      "  cbc model.mps sec 60 solve solu sol.txt            -> --format cbc\n"
+      "  glpsol --freemps model.mps --tmlim 60 -o sol.txt   -> --format glpsol\n"
+      "  glpsol --freemps model.mps --tmlim 60 -w sol.raw   -> --format glpsol-raw (full precision)\n"
+      "Use the same --scheme/--formulation/--encoding as for the export.");
+  c_import->add_option("scenario", imp.scenario, "scenario file (JSON)")->required();
+  c_import->add_option("solution", imp.solution, "the solver's solution file")->required();
+  c_import->add_option("--format", imp.format, "cbc | glpsol | glpsol-raw")->required();
+  c_import->add_option("--out", imp.out, "schedule CSV to write")->required();
+  import_flags.AddModelOptions(c_import);
+  c_import->add_flag("--obfuscate-names", imp.obfuscate_names,
+                     "the model was exported with --obfuscate-names");
+
+  // validate
+  app::ValidateArgs val;
+  bool no_build = false;
+  OverrideFlags validate_flags;
+  CLI::App* c_validate = cli.add_subcommand(
+      "validate", "Parse and validate a scenario and build its model (no solve); exit 0 or 2.");
+  c_validate->add_option("scenario", val.scenario, "scenario file (JSON)")->required();
+  c_validate->add_flag("--no-build", no_build, "only parse and validate");
+  validate_flags.AddModelOptions(c_validate);
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);  // prints the message
+    return app::kExitBadInput;
+  }
+
+  try {
+    if (c_solve->parsed()) {
+      solve.overrides = solve_flags.Get();
+      solve.command_line = CommandLine(argc, argv);
+      return app::RunSolve(solve);
+    }
+    if (c_export->parsed()) {
+      exp.overrides = export_flags.Get();
+      return app::RunExport(exp);
+    }
+    if (c_check->parsed()) return app::RunCheck(check);
+    if (c_import->parsed()) {
+      imp.overrides = import_flags.Get();
+      return app::RunImportSolution(imp);
+    }
+    if (c_validate->parsed()) {
+      val.build = !no_build;
+      val.overrides = validate_flags.Get();
+      return app::RunValidate(val);
+    }
+  } catch (const std::invalid_argument& e) {
+    // ScenarioError and the library's documented invalid-input exceptions.
+    std::cerr << "error: " << e.what() << "\n";
+    return app::kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory (is the model too large? try a longer step_s)\n";
+    return app::kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return app::kExitInternal;
+  }
+  return app::kExitInternal;
+}

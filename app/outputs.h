@@ -1,0 +1,106 @@
+// Result files of the thrustsched CLI (formats documented in
+// data/scenarios/README.md, "Output directory"): summary.json,
+// schedule.csv / impulses.csv, trajectory.csv, and the checker verdict.
+//
+//   app::CheckVerdict v = app::Judge(scenario, report);      // pass/fail + findings
+//   app::WriteScheduleCsv(dir + "/schedule.csv", scenario, schedule.burns);
+//   app::WriteTrajectoryCsv(dir + "/trajectory.csv", scenario, report);
+//   std::vector<transcription::Burn> burns = app::ReadScheduleCsv("other.csv", scenario);
+//
+// Units: times in seconds since the model epoch (the grid's clock), windows in
+// the scenario's window unit (m for Cartesian models, deg for GEO).
+#ifndef THRUSTSCHED_APP_OUTPUTS_H_
+#define THRUSTSCHED_APP_OUTPUTS_H_
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/scenario.h"
+#include "transcription/checker.h"
+#include "transcription/schedule_milp.h"
+#include "transcription/solve.h"
+
+namespace thrustsched::app {
+
+/// Pass/fail of a checked schedule and the reasons, one line each.
+struct CheckVerdict {
+  bool passed = false;
+  std::vector<std::string> findings;  // empty when passed
+};
+
+/// On-off schedules: passes iff the operational rules hold, the terminal
+/// constraint holds (checker tolerance), and the window violation (at grid
+/// nodes; at every sample if verdict.include_intersample; also the nonlinear
+/// replay if verdict.include_nonlinear) is <= verdict.window_tolerance.
+CheckVerdict Judge(const Scenario& scenario, const transcription::CheckReport& report);
+/// Impulsive schedules: window at nodes <= tolerance and terminal error
+/// (state-scale units) <= 1e-6.
+CheckVerdict JudgeImpulsive(const Scenario& scenario, const transcription::ImpulsiveCheck& check);
+
+/// The "check" object of summary.json (and of check.json).
+nlohmann::json CheckJson(const Scenario& scenario, const transcription::CheckReport& report,
+                         const CheckVerdict& verdict, double check_seconds);
+nlohmann::json ImpulsiveCheckJson(const Scenario& scenario,
+                                  const transcription::ImpulsiveCheck& check,
+                                  const CheckVerdict& verdict, double check_seconds);
+
+/// Extra facts of a solve run that the library result does not hold.
+struct RunFacts {
+  bool interrupted = false;      // SIGINT stopped the solve
+  double total_seconds = 0.0;    // whole command, wall clock
+  std::string command_line;
+};
+
+/// summary.json content (field list in the README). `result.checked` decides
+/// whether a "check" object is included (null otherwise).
+nlohmann::json SummaryJson(const Scenario& scenario, const transcription::ScheduleMilp& milp,
+                           const transcription::ScheduleResult& result, const RunFacts& facts);
+
+/// Status name used in summary.json: optimal, feasible, infeasible, unbounded,
+/// no_solution, error.
+std::string StatusName(milp::SolveStatus status);
+
+/// @throws std::runtime_error naming the path on I/O failure.
+void WriteTextFile(const std::string& path, const std::string& text);
+void WriteJsonFile(const std::string& path, const nlohmann::json& json);
+
+/// Header "thruster,start_s,end_s,duration_s", one row per burn.
+void WriteScheduleCsv(const std::string& path, const Scenario& scenario,
+                      const std::vector<transcription::Burn>& burns);
+/// Header "thruster,node,time_s,delta_v_m_s", one row per impulse (impulsive mode).
+void WriteImpulsesCsv(const std::string& path, const Scenario& scenario,
+                      const std::vector<transcription::Impulse>& impulses);
+
+/// Reads a schedule written by WriteScheduleCsv or by hand (duration_s
+/// optional; blank lines and lines starting with '#' ignored).
+/// @throws ScenarioError naming the file, line and field on a bad header, an
+/// unknown thruster, a non-finite time, end < start, or a duration that
+/// disagrees with end - start.
+std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const Scenario& scenario);
+/// Reads impulses.csv. The node must be a grid node index; time_s, if not
+/// empty, must equal the node's time. @throws ScenarioError as ReadScheduleCsv.
+std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path,
+                                                    const Scenario& scenario);
+
+/// Columns of trajectory.csv for the scenario (see the README).
+std::vector<std::string> TrajectoryColumns(const Scenario& scenario, bool with_nonlinear);
+/// One row per checker sample (grid nodes and inner samples): linear
+/// re-propagation, and for GEO the nonlinear replay when it was run.
+/// `burns` give the on_<thruster> columns.
+void WriteTrajectoryCsv(const std::string& path, const Scenario& scenario,
+                        const transcription::CheckReport& report,
+                        const std::vector<transcription::Burn>& burns);
+/// Impulsive mode: free motion between nodes with the impulses applied at the
+/// nodes, `samples_per_interval` inner samples per interval.
+void WriteImpulsiveTrajectoryCsv(const std::string& path, const Scenario& scenario,
+                                 const std::vector<transcription::Impulse>& impulses);
+
+/// The thesis drift term 2x + vy/n (m) of an HCW state (Table 4.1), NaN for
+/// other models.
+double HcwDriftTerm(const Scenario& scenario, const Eigen::VectorXd& state);
+
+}  // namespace thrustsched::app
+
+#endif  // THRUSTSCHED_APP_OUTPUTS_H_

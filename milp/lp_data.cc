@@ -1,0 +1,179 @@
+#include "milp/lp_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <unordered_set>
+
+namespace thrustsched::milp {
+namespace {
+
+std::string ColLabel(const LpData& lp, int j) {
+  std::string label = "column " + std::to_string(j);
+  if (static_cast<int>(lp.col_names.size()) == lp.num_cols()) {
+    label += " '" + lp.col_names[static_cast<size_t>(j)] + "'";
+  }
+  return label;
+}
+
+std::string RowLabel(const LpData& lp, int i) {
+  std::string label = "row " + std::to_string(i);
+  if (static_cast<int>(lp.row_names.size()) == lp.num_rows()) {
+    label += " '" + lp.row_names[static_cast<size_t>(i)] + "'";
+  }
+  return label;
+}
+
+std::string Num(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+bool Fail(std::string* error, const std::string& message) {
+  if (error != nullptr) *error = "LpData '" + message;
+  return false;
+}
+
+void CheckSize(const LpData& lp, Eigen::Index size, const char* what) {
+  if (size != lp.num_cols()) {
+    throw std::invalid_argument(std::string("LpData::") + what + ": x has size " +
+                                std::to_string(size) + ", expected " +
+                                std::to_string(lp.num_cols()));
+  }
+}
+
+}  // namespace
+
+int LpData::num_integer_cols() const {
+  return static_cast<int>(std::count_if(col_type.begin(), col_type.end(),
+                                        [](VarType t) { return t != VarType::kContinuous; }));
+}
+
+double LpData::Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  CheckSize(*this, x.size(), "Objective");
+  if (col_cost.size() != x.size()) {
+    throw std::invalid_argument("LpData::Objective: col_cost has size " +
+                                std::to_string(col_cost.size()) + ", expected " +
+                                std::to_string(x.size()));
+  }
+  return col_cost.dot(x) + objective_offset;
+}
+
+double LpData::MaxViolation(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  CheckSize(*this, x.size(), "MaxViolation");
+  const int n = num_cols();
+  double worst = 0.0;
+  auto note = [&worst](double v) {
+    if (std::isnan(v)) {
+      worst = std::numeric_limits<double>::infinity();
+    } else if (v > worst) {
+      worst = v;
+    }
+  };
+  for (int j = 0; j < n; ++j) {
+    const double v = x[j];
+    if (!std::isfinite(v)) {
+      note(std::numeric_limits<double>::infinity());
+      continue;
+    }
+    if (j < col_lower.size()) note(col_lower[j] - v);
+    if (j < col_upper.size()) note(v - col_upper[j]);
+    if (static_cast<size_t>(j) < col_type.size() && col_type[static_cast<size_t>(j)] != VarType::kContinuous) {
+      note(std::abs(v - std::round(v)));
+    }
+  }
+  if (num_rows() > 0) {
+    const Eigen::VectorXd activity = a_matrix * x;
+    for (int i = 0; i < num_rows(); ++i) {
+      if (i < row_lower.size()) note(row_lower[i] - activity[i]);
+      if (i < row_upper.size()) note(activity[i] - row_upper[i]);
+    }
+  }
+  return worst;
+}
+
+bool LpData::IsValid(std::string* error) const {
+  const int n = num_cols();
+  const int m = num_rows();
+  auto size_error = [&](const char* field, Eigen::Index got, int want) {
+    return Fail(error, name + "': " + field + " has size " + std::to_string(got) +
+                           ", expected " + std::to_string(want));
+  };
+  if (col_cost.size() != n) return size_error("col_cost", col_cost.size(), n);
+  if (col_lower.size() != n) return size_error("col_lower", col_lower.size(), n);
+  if (col_upper.size() != n) return size_error("col_upper", col_upper.size(), n);
+  if (static_cast<int>(col_type.size()) != n) {
+    return size_error("col_type", static_cast<Eigen::Index>(col_type.size()), n);
+  }
+  if (row_lower.size() != m) return size_error("row_lower", row_lower.size(), m);
+  if (row_upper.size() != m) return size_error("row_upper", row_upper.size(), m);
+  if (!col_names.empty() && static_cast<int>(col_names.size()) != n) {
+    return size_error("col_names", static_cast<Eigen::Index>(col_names.size()), n);
+  }
+  if (!row_names.empty() && static_cast<int>(row_names.size()) != m) {
+    return size_error("row_names", static_cast<Eigen::Index>(row_names.size()), m);
+  }
+  if (!std::isfinite(objective_offset)) {
+    return Fail(error, name + "': objective_offset must be finite, got " + Num(objective_offset));
+  }
+  for (int j = 0; j < n; ++j) {
+    const double lo = col_lower[j], up = col_upper[j];
+    if (!std::isfinite(col_cost[j])) {
+      return Fail(error, name + "': " + ColLabel(*this, j) + " cost must be finite, got " +
+                             Num(col_cost[j]));
+    }
+    if (std::isnan(lo) || std::isnan(up) || lo > up || lo == kInfinity || up == -kInfinity) {
+      return Fail(error, name + "': " + ColLabel(*this, j) + " has invalid bounds [" + Num(lo) +
+                             ", " + Num(up) + "]");
+    }
+    if (col_type[static_cast<size_t>(j)] == VarType::kBinary && (lo < 0.0 || up > 1.0)) {
+      return Fail(error, name + "': binary " + ColLabel(*this, j) + " has bounds [" + Num(lo) +
+                             ", " + Num(up) + "] outside [0, 1]");
+    }
+  }
+  for (int i = 0; i < m; ++i) {
+    const double lo = row_lower[i], up = row_upper[i];
+    if (std::isnan(lo) || std::isnan(up) || lo > up || lo == kInfinity || up == -kInfinity) {
+      return Fail(error, name + "': " + RowLabel(*this, i) + " has invalid bounds [" + Num(lo) +
+                             ", " + Num(up) + "]");
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    int previous_row = -1;
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(a_matrix, j); it;
+         ++it) {
+      const int i = static_cast<int>(it.row());
+      if (!std::isfinite(it.value())) {
+        return Fail(error, name + "': coefficient of " + ColLabel(*this, j) + " in " +
+                               RowLabel(*this, i) + " must be finite, got " + Num(it.value()));
+      }
+      if (i <= previous_row) {
+        return Fail(error, name + "': a_matrix " + ColLabel(*this, j) +
+                               " has unsorted or duplicate row index " + std::to_string(i));
+      }
+      previous_row = i;
+    }
+  }
+  auto unique_names = [&](const std::vector<std::string>& names, const char* what) {
+    std::unordered_set<std::string_view> seen;
+    seen.reserve(names.size());
+    for (size_t k = 0; k < names.size(); ++k) {
+      if (names[k].empty()) {
+        return Fail(error, name + "': " + what + " name " + std::to_string(k) + " is empty");
+      }
+      if (!seen.insert(names[k]).second) {
+        return Fail(error, name + "': duplicate " + what + " name '" + names[k] + "'");
+      }
+    }
+    return true;
+  };
+  if (!unique_names(col_names, "column")) return false;
+  if (!unique_names(row_names, "row")) return false;
+  return true;
+}
+
+}  // namespace thrustsched::milp

@@ -1,0 +1,67 @@
+// LpData: the frozen, solver-independent standard form of a MILP
+//
+//   min or max   col_cost' x + objective_offset
+//   subject to   row_lower <= a_matrix x <= row_upper
+//                col_lower <= x <= col_upper,   x_j integer for col_type[j] != kContinuous
+//
+// Field names follow HiGHS `HighsLp`. Solvers and file writers read only this
+// struct; `Model::ToLpData()` produces it. Infinite bounds are +-kInfinity.
+// An equality row has row_lower == row_upper; a free row has both infinite.
+//
+//   milp::LpData lp = model.ToLpData();
+//   std::string error;
+//   if (!lp.IsValid(&error)) throw std::invalid_argument(error);
+//   double worst = lp.MaxViolation(x);   // 0 for a feasible x
+//   double f = lp.Objective(x);          // c'x + offset, the model's own sense
+#ifndef THRUSTSCHED_MILP_LP_DATA_H_
+#define THRUSTSCHED_MILP_LP_DATA_H_
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "milp/variable.h"
+
+namespace thrustsched::milp {
+
+enum class ObjectiveSense { kMinimize, kMaximize };
+
+struct LpData {
+  std::string name;
+  ObjectiveSense sense = ObjectiveSense::kMinimize;
+  Eigen::VectorXd col_cost;
+  double objective_offset = 0.0;
+  Eigen::VectorXd col_lower, col_upper;
+  Eigen::VectorXd row_lower, row_upper;
+  /// rows x cols, column-major, compressed; no explicit zeros.
+  Eigen::SparseMatrix<double, Eigen::ColMajor, int> a_matrix;
+  std::vector<VarType> col_type;
+  /// Either empty (writers generate C0000001 / R0000001) or one per column/row.
+  std::vector<std::string> col_names, row_names;
+
+  int num_cols() const { return static_cast<int>(a_matrix.cols()); }
+  int num_rows() const { return static_cast<int>(a_matrix.rows()); }
+  int num_nonzeros() const { return static_cast<int>(a_matrix.nonZeros()); }
+  int num_integer_cols() const;
+  bool is_mip() const { return num_integer_cols() > 0; }
+
+  /// Objective value c'x + offset at x (in the model's own sense).
+  /// @throws std::invalid_argument if x.size() != num_cols().
+  double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  /// Largest violation of bounds, rows and integrality (|x - round(x)|) at x,
+  /// absolute; 0 if feasible, +inf if x holds NaN or inf.
+  /// @throws std::invalid_argument if x.size() != num_cols().
+  double MaxViolation(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+
+  /// Sizes agree, no NaN, finite costs/offset/coefficients, lower <= upper
+  /// (and lower < +inf, upper > -inf), binaries within [0,1], row indices
+  /// strictly increasing within each column, names non-empty and unique. On
+  /// failure fills *error (if not null) naming the row/column and value.
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace thrustsched::milp
+
+#endif  // THRUSTSCHED_MILP_LP_DATA_H_

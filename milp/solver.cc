@@ -1,0 +1,123 @@
+#include "milp/solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace thrustsched::milp {
+namespace {
+
+std::string Num(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+void Validate(const LpData& problem, const SolveOptions& options, const char* what) {
+  std::string error;
+  if (!problem.IsValid(&error)) {
+    throw std::invalid_argument(std::string(what) + ": invalid problem: " + error);
+  }
+  if (!options.IsValid(&error)) {
+    throw std::invalid_argument(std::string(what) + ": invalid options: " + error);
+  }
+  if (options.initial_solution.has_value()) {
+    const Eigen::VectorXd& x0 = *options.initial_solution;
+    if (x0.size() != problem.num_cols()) {
+      throw std::invalid_argument(std::string(what) + ": initial_solution has size " +
+                                  std::to_string(x0.size()) + ", expected " +
+                                  std::to_string(problem.num_cols()));
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view ToString(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::kOptimal:
+      return "optimal";
+    case SolveStatus::kFeasible:
+      return "feasible";
+    case SolveStatus::kInfeasible:
+      return "infeasible";
+    case SolveStatus::kUnbounded:
+      return "unbounded";
+    case SolveStatus::kNoSolutionFound:
+      return "no_solution_found";
+    case SolveStatus::kError:
+      return "error";
+  }
+  return "unknown";
+}
+
+std::ostream& operator<<(std::ostream& os, SolveStatus status) { return os << ToString(status); }
+
+bool SolveOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = "SolveOptions: " + message;
+    return false;
+  };
+  if (std::isnan(time_limit_s) || time_limit_s < 0.0) {
+    return fail("time_limit_s must be >= 0 (or +inf), got " + Num(time_limit_s));
+  }
+  if (!std::isfinite(relative_gap) || relative_gap < 0.0) {
+    return fail("relative_gap must be finite and >= 0, got " + Num(relative_gap));
+  }
+  if (!std::isfinite(absolute_gap) || absolute_gap < 0.0) {
+    return fail("absolute_gap must be finite and >= 0, got " + Num(absolute_gap));
+  }
+  if (threads < 1) return fail("threads must be >= 1, got " + std::to_string(threads));
+  if (random_seed < 0) return fail("random_seed must be >= 0, got " + std::to_string(random_seed));
+  if (log_level < 0) return fail("log_level must be >= 0, got " + std::to_string(log_level));
+  if (std::isnan(progress_interval_s) || progress_interval_s <= 0.0) {
+    return fail("progress_interval_s must be > 0, got " + Num(progress_interval_s));
+  }
+  if (initial_solution.has_value()) {
+    for (Eigen::Index j = 0; j < initial_solution->size(); ++j) {
+      if (!std::isfinite((*initial_solution)[j])) {
+        return fail("initial_solution[" + std::to_string(j) + "] must be finite, got " +
+                    Num((*initial_solution)[j]));
+      }
+    }
+  }
+  return true;
+}
+
+double SolveResult::TimeToGap(double rel_gap) const {
+  if (!std::isfinite(best_bound)) return std::numeric_limits<double>::quiet_NaN();
+  for (const Incumbent& inc : incumbents) {
+    const double g = std::abs(inc.objective - best_bound) / std::max(1e-10, std::abs(inc.objective));
+    if (g <= rel_gap) return inc.wall_seconds;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+SolveResult Solver::Solve(const LpData& problem, const SolveOptions& options) const {
+  Validate(problem, options, "Solver::Solve");
+  const auto start = std::chrono::steady_clock::now();
+  SolveResult result = DoSolve(problem, options);
+  if (result.wall_seconds <= 0.0) {
+    result.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return result;
+}
+
+LpRelaxationResult Solver::SolveLpRelaxation(const LpData& problem,
+                                             const SolveOptions& options) const {
+  Validate(problem, options, "Solver::SolveLpRelaxation");
+  const auto start = std::chrono::steady_clock::now();
+  LpRelaxationResult result = DoSolveLpRelaxation(problem, options);
+  if (result.wall_seconds <= 0.0) {
+    result.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return result;
+}
+
+}  // namespace thrustsched::milp

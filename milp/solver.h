@@ -1,0 +1,148 @@
+// Solver interface, options and results (solver-independent).
+//
+//   std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();   // milp/cbc_solver.h
+//   milp::SolveOptions options;
+//   options.time_limit_s = 60;            // wall clock
+//   options.relative_gap = 1e-4;
+//   milp::SolveResult result = solver->Solve(lp, options);
+//   if (result.has_solution()) use(result.x, result.objective);
+//
+// An infeasible or unbounded model is a result (status), not an error. Invalid
+// input (LpData::IsValid false, options invalid) throws std::invalid_argument.
+// Same input and options (threads == 1) give the same answer. Distinct Solver
+// instances, or one instance called from several threads, may solve in parallel.
+#ifndef THRUSTSCHED_MILP_SOLVER_H_
+#define THRUSTSCHED_MILP_SOLVER_H_
+
+#include <atomic>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "milp/lp_data.h"
+
+namespace thrustsched::milp {
+
+enum class SolveStatus {
+  kOptimal,          // proven optimal within the requested gap
+  kFeasible,         // stopped by a limit with an incumbent; see gap
+  kInfeasible,
+  kUnbounded,
+  kNoSolutionFound,  // stopped by a limit (time, interrupt) without incumbent
+  kError,            // solver failure; see detail
+};
+std::string_view ToString(SolveStatus status);
+std::ostream& operator<<(std::ostream& os, SolveStatus status);
+
+/// Reported to SolveOptions::progress during a solve.
+struct SolveProgress {
+  double wall_seconds = 0.0;
+  double objective = std::numeric_limits<double>::quiet_NaN();   // incumbent, NaN if none
+  double best_bound = std::numeric_limits<double>::quiet_NaN();
+  double gap = std::numeric_limits<double>::quiet_NaN();
+  long long nodes = 0;
+  bool new_incumbent = false;
+};
+
+/// Options of a solve. IsValid() rules: time_limit_s >= 0 (not NaN, may be
+/// +inf); relative_gap, absolute_gap finite and >= 0; threads >= 1;
+/// random_seed >= 0; log_level >= 0; progress_interval_s > 0;
+/// initial_solution entries finite.
+struct SolveOptions {
+  double time_limit_s = std::numeric_limits<double>::infinity();  // wall clock
+  double relative_gap = 1e-4;  // |obj - bound| / max(1e-10, |obj|)
+  double absolute_gap = 1e-9;
+  int threads = 1;             // > 1 may make CBC non-deterministic
+  /// 0 (default): the solver's own default seeds (for CBC: the same run as
+  /// the `cbc` program); > 0: this seed for all random choices.
+  int random_seed = 0;
+  int log_level = 0;           // 0 silent (default); 1 summary; 2+ solver log
+  bool presolve = true;
+  /// MIP start: a full column vector; integer entries are rounded and the
+  /// continuous ones re-optimised with the integers fixed. If the result is
+  /// feasible it is the first incumbent (and a cutoff); otherwise it is
+  /// ignored and SolveResult::detail says so.
+  std::optional<Eigen::VectorXd> initial_solution;
+  /// Called on each new incumbent and otherwise at most every
+  /// progress_interval_s, from the solving thread. An exception thrown by it
+  /// stops the solve and is rethrown by Solve().
+  std::function<void(const SolveProgress&)> progress;
+  double progress_interval_s = 5.0;
+  /// If set and becomes true, the solve stops as at a time limit.
+  const std::atomic<bool>* interrupt = nullptr;
+
+  bool IsValid(std::string* error) const;
+};
+
+/// One improving solution found during the search (objective and best bound
+/// in the model's own sense, with the offset; wall seconds since Solve()).
+struct Incumbent {
+  double wall_seconds;
+  double objective;
+  double best_bound;
+};
+
+struct SolveResult {
+  SolveStatus status = SolveStatus::kError;
+  std::string detail;           // solver-specific explanation, raw codes
+  // objective, best_bound and gap are set when has_solution(); gap is
+  // |objective - best_bound| / max(1e-10, |objective|).
+  std::string solver_version;   // e.g. "CBC 2.10.8"
+  double objective = std::numeric_limits<double>::quiet_NaN();   // model sense, with offset
+  double best_bound = std::numeric_limits<double>::quiet_NaN();
+  double gap = std::numeric_limits<double>::quiet_NaN();         // relative, >= 0
+  long long nodes = 0;
+  double wall_seconds = 0.0;
+  Eigen::VectorXd x;            // column values; empty unless has_solution()
+  std::vector<Incumbent> incumbents;  // in time order
+
+  bool has_solution() const {
+    return status == SolveStatus::kOptimal || status == SolveStatus::kFeasible;
+  }
+  /// Seconds to the first incumbent whose gap to the final best bound is
+  /// <= rel_gap; NaN if none.
+  double TimeToGap(double rel_gap) const;
+};
+
+/// Result of solving the continuous relaxation (integrality dropped).
+struct LpRelaxationResult {
+  SolveStatus status = SolveStatus::kError;
+  std::string detail;
+  double objective = std::numeric_limits<double>::quiet_NaN();
+  double wall_seconds = 0.0;
+  Eigen::VectorXd x;          // primal column values
+  /// One per row: the derivative of the optimal objective (in the model's own
+  /// sense, offset irrelevant) with respect to the row's active bound. For a
+  /// minimisation, a binding ">= lower" row has a dual >= 0 and a binding
+  /// "<= upper" row a dual <= 0; for a maximisation the signs flip. Inactive
+  /// rows have dual 0.
+  Eigen::VectorXd row_duals;
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  virtual std::string_view name() const = 0;
+  virtual std::string version() const = 0;
+  /// @throws std::invalid_argument if !problem.IsValid() or !options.IsValid(),
+  ///         or options.initial_solution has the wrong size.
+  SolveResult Solve(const LpData& problem, const SolveOptions& options = {}) const;
+  /// Solves the LP relaxation. @throws as Solve.
+  LpRelaxationResult SolveLpRelaxation(const LpData& problem,
+                                       const SolveOptions& options = {}) const;
+
+ private:
+  virtual SolveResult DoSolve(const LpData& problem, const SolveOptions& options) const = 0;
+  virtual LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
+                                                 const SolveOptions& options) const = 0;
+};
+
+}  // namespace thrustsched::milp
+
+#endif  // THRUSTSCHED_MILP_SOLVER_H_

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Runs the default scenario with the CLI once it is built; until then the quick-start example.
+set -euo pipefail
+build=${1:-build}; scenario=${2:-data/scenarios/geo_week_anzel4.json}; out=${3:-out/demo}
+if [ -x "$build/app/thrustsched" ] && [ -f "$scenario" ]; then
+  exec "$build/app/thrustsched" solve "$scenario" --out "$out"
+fi
+exec "$build/tests/quickstart_example"

@@ -1,0 +1,457 @@
+// Tests of the CBC/CLP backend (cbc_solver.h) against the hand-derived
+// catalogue, LP duals checked by perturbation, limits, callbacks, MIP starts,
+// determinism, concurrency and silence.
+#include "milp/cbc_solver.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/milp/problem_catalog.h"
+
+namespace thrustsched::milp {
+namespace {
+
+using ::testing::AnyOf;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+using testing::Catalog;
+using testing::CatalogProblem;
+using testing::RandomKnapsack;
+
+constexpr double kTol = 1e-6;
+
+const CatalogProblem& Find(const std::string& name) {
+  static const std::vector<CatalogProblem> catalog = Catalog();
+  for (const CatalogProblem& p : catalog) {
+    if (p.name == name) return p;
+  }
+  throw std::logic_error("no catalogue problem " + name);
+}
+
+std::vector<std::string> CatalogNames() {
+  std::vector<std::string> names;
+  for (const CatalogProblem& p : Catalog()) names.push_back(p.name);
+  return names;
+}
+
+// A hard multi-dimensional knapsack (2000 binaries, 10 rows): not solved to
+// optimality in seconds, but feasible solutions are easy.
+const LpData& HardKnapsack() {
+  static const LpData lp = RandomKnapsack(2000, 10, 12345);
+  return lp;
+}
+
+// Greedy feasible start for a "max c'x, Ax <= b, x binary" knapsack.
+Eigen::VectorXd GreedyStart(const LpData& lp) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(lp.num_cols());
+  Eigen::VectorXd used = Eigen::VectorXd::Zero(lp.num_rows());
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    const Eigen::VectorXd col = lp.a_matrix.col(j);
+    if (((used + col).array() <= lp.row_upper.array()).all() && j % 3 == 0) {
+      used += col;
+      x[j] = 1.0;
+    }
+  }
+  return x;
+}
+
+class CatalogTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CatalogTest, SolvesToTheHandDerivedOptimum) {
+  const CatalogProblem& p = Find(GetParam());
+  const LpData lp = p.build();
+  const SolveResult r = MakeCbcSolver()->Solve(lp);
+  ASSERT_EQ(r.status, p.status) << r.detail;
+  if (p.status == SolveStatus::kOptimal) {
+    ASSERT_EQ(r.x.size(), lp.num_cols());
+    EXPECT_NEAR(r.objective, p.objective, kTol);
+    EXPECT_NEAR(lp.Objective(r.x), r.objective, kTol);
+    EXPECT_LE(lp.MaxViolation(r.x), kTol);
+    EXPECT_NEAR(r.best_bound, p.objective, 1e-4 * std::max(1.0, std::abs(p.objective)));
+    EXPECT_LE(r.gap, 1e-4);
+    if (p.unique_x.has_value()) {
+      EXPECT_LE((r.x - *p.unique_x).lpNorm<Eigen::Infinity>(), kTol) << r.x.transpose();
+    }
+    ASSERT_FALSE(r.incumbents.empty());
+    EXPECT_NEAR(r.incumbents.back().objective, r.objective, kTol);
+    EXPECT_FALSE(std::isnan(r.TimeToGap(1e-4)));
+  } else {
+    EXPECT_FALSE(r.has_solution());
+    EXPECT_EQ(r.x.size(), 0);
+  }
+  EXPECT_THAT(r.solver_version, HasSubstr("CBC 2.10"));
+}
+
+TEST_P(CatalogTest, LpRelaxationMatchesTheHandDerivedValue) {
+  const CatalogProblem& p = Find(GetParam());
+  const LpData lp = p.build();
+  const LpRelaxationResult r = MakeCbcSolver()->SolveLpRelaxation(lp);
+  if (std::isnan(p.lp_objective)) {
+    EXPECT_THAT(r.status, AnyOf(SolveStatus::kInfeasible, SolveStatus::kUnbounded)) << r.detail;
+    if (p.status == SolveStatus::kUnbounded) {
+      EXPECT_EQ(r.status, SolveStatus::kUnbounded);
+    }
+    if (p.name == "infeasible_binaries") {
+      EXPECT_EQ(r.status, SolveStatus::kInfeasible);
+    }
+    return;
+  }
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_NEAR(r.objective, p.lp_objective, kTol);
+  EXPECT_EQ(r.row_duals.size(), lp.num_rows());
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalog, CatalogTest, ::testing::ValuesIn(CatalogNames()),
+                         [](const auto& info) { return info.param; });
+
+TEST(CbcSolverTest, CatalogueHasTheRequiredCases) {
+  EXPECT_GE(Catalog().size(), 12u);
+}
+
+// Duals by hand (see problem_catalog.h) and by finite differences.
+TEST(LpRelaxationTest, RowDualsAreDerivativesOfTheObjective) {
+  auto solver = MakeCbcSolver();
+  struct Case {
+    std::string name;
+    Eigen::VectorXd duals;
+  };
+  // lp_min_duals: (1, 2) = y1 (1, 1) + y2 (1, -1) -> y1 = 1.5 (">=" row, >= 0),
+  // y2 = -0.5 ("<=" row, <= 0).
+  // lp_max_two_rows: (3, 2) = y1 (1, 1) + mu (1, 0) -> y1 = 2 (maximisation:
+  // raising r1's upper bound raises the optimum); r2 slack -> 0.
+  for (const Case& c : {Case{"lp_min_duals", testing::Vec({1.5, -0.5})},
+                        Case{"lp_max_two_rows", testing::Vec({2.0, 0.0})}}) {
+    SCOPED_TRACE(c.name);
+    const LpData lp = Find(c.name).build();
+    const LpRelaxationResult r = solver->SolveLpRelaxation(lp);
+    ASSERT_EQ(r.status, SolveStatus::kOptimal);
+    EXPECT_LE((r.row_duals - c.duals).lpNorm<Eigen::Infinity>(), kTol) << r.row_duals.transpose();
+    for (int i = 0; i < lp.num_rows(); ++i) {
+      LpData moved = lp;
+      const double h = 1e-3;
+      if (std::isfinite(lp.row_lower[i])) moved.row_lower[i] += h;
+      if (std::isfinite(lp.row_upper[i])) moved.row_upper[i] += h;
+      const LpRelaxationResult r2 = solver->SolveLpRelaxation(moved);
+      ASSERT_EQ(r2.status, SolveStatus::kOptimal);
+      EXPECT_NEAR((r2.objective - r.objective) / h, r.row_duals[i], 1e-6) << "row " << i;
+    }
+  }
+}
+
+TEST(CbcSolverTest, TimeLimitIsWallClockAndReportsAGap) {
+  SolveOptions o;
+  o.time_limit_s = 0.5;
+  const auto start = std::chrono::steady_clock::now();
+  const SolveResult r = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_THAT(r.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound)) << r.detail;
+  EXPECT_LT(wall, 0.5 + 2.0);  // generous: the test machine is shared
+  EXPECT_GE(wall, 0.45);
+  EXPECT_THAT(r.detail, HasSubstr("time limit"));
+  if (r.status == SolveStatus::kFeasible) {
+    EXPECT_LE(HardKnapsack().MaxViolation(r.x), kTol);
+    EXPECT_TRUE(std::isfinite(r.gap));
+    EXPECT_GT(r.gap, 0.0);
+    EXPECT_GE(r.best_bound, r.objective);  // maximisation
+    EXPECT_NEAR(r.gap, (r.best_bound - r.objective) / std::abs(r.objective), 1e-12);
+  }
+}
+
+TEST(CbcSolverTest, InterruptFlagStopsTheSearch) {
+  std::atomic<bool> stop{false};
+  SolveOptions o;
+  o.time_limit_s = 60;
+  o.interrupt = &stop;
+  std::thread setter([&stop] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    stop = true;
+  });
+  const auto start = std::chrono::steady_clock::now();
+  const SolveResult r = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  setter.join();
+  EXPECT_THAT(r.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound)) << r.detail;
+  EXPECT_THAT(r.detail, HasSubstr("interrupted"));
+  EXPECT_LT(wall, 5.0);
+
+  // Already set: returns at once.
+  const SolveResult again = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  EXPECT_THAT(again.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound));
+  EXPECT_LT(again.wall_seconds, 2.0);
+}
+
+TEST(CbcSolverTest, MipStartIsTheFirstIncumbent) {
+  const LpData& lp = HardKnapsack();
+  const Eigen::VectorXd start = GreedyStart(lp);
+  ASSERT_LE(lp.MaxViolation(start), 0.0);
+  const double start_objective = lp.Objective(start);
+  SolveOptions o;
+  o.time_limit_s = 1.0;
+  o.initial_solution = start;
+  const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+  ASSERT_TRUE(r.has_solution()) << r.detail;
+  EXPECT_THAT(r.detail, HasSubstr("initial solution accepted"));
+  ASSERT_FALSE(r.incumbents.empty());
+  EXPECT_DOUBLE_EQ(r.incumbents.front().objective, start_objective);
+  EXPECT_LT(r.incumbents.front().wall_seconds, 0.5);
+  EXPECT_GE(r.objective, start_objective - kTol);
+  for (size_t k = 1; k < r.incumbents.size(); ++k) {
+    EXPECT_GT(r.incumbents[k].objective, r.incumbents[k - 1].objective);  // improving (max)
+    EXPECT_GE(r.incumbents[k].wall_seconds, r.incumbents[k - 1].wall_seconds);
+  }
+}
+
+TEST(CbcSolverTest, OptimalMipStartIsProvenOptimal) {
+  const LpData lp = Find("integer_gap_knapsack").build();
+  SolveOptions o;
+  o.initial_solution = testing::Vec({0, 1, 1, 1});
+  const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_NEAR(r.objective, 21.0, kTol);
+  EXPECT_NEAR(r.incumbents.front().objective, 21.0, kTol);
+}
+
+TEST(CbcSolverTest, InfeasibleMipStartIsRejectedButTheSolveGoesOn) {
+  const LpData lp = Find("integer_gap_knapsack").build();
+  SolveOptions o;
+  o.initial_solution = testing::Vec({1, 1, 1, 1});  // weight 19 > 14
+  const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal);
+  EXPECT_NEAR(r.objective, 21.0, kTol);
+  EXPECT_THAT(r.detail, HasSubstr("initial solution rejected"));
+}
+
+TEST(CbcSolverTest, MipStartWithContinuousPartIsCompleted) {
+  // integer_fractional_bound: the start gives x = 2.6 (rounded to 3) and a
+  // wrong y; y is re-optimised to 0.25 with x fixed.
+  const LpData lp = Find("integer_fractional_bound").build();
+  SolveOptions o;
+  o.initial_solution = testing::Vec({2.6, 9.0});
+  const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_THAT(r.detail, HasSubstr("initial solution accepted"));
+  EXPECT_NEAR(r.incumbents.front().objective, 3.125, kTol);
+  EXPECT_NEAR(r.objective, 3.125, kTol);
+}
+
+TEST(CbcSolverTest, ProgressCallbackSeesIncumbentsAndTicks) {
+  std::vector<SolveProgress> calls;
+  SolveOptions o;
+  o.time_limit_s = 1.5;
+  o.progress_interval_s = 0.2;
+  o.progress = [&calls](const SolveProgress& p) { calls.push_back(p); };
+  const SolveResult r = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  ASSERT_TRUE(r.has_solution()) << r.detail;
+  ASSERT_GE(calls.size(), 2u);
+  int with_incumbent = 0;
+  for (size_t k = 0; k < calls.size(); ++k) {
+    if (calls[k].new_incumbent) ++with_incumbent;
+    if (k > 0) {
+      EXPECT_GE(calls[k].wall_seconds, calls[k - 1].wall_seconds);
+    }
+    if (!std::isnan(calls[k].objective)) {
+      EXPECT_GE(calls[k].best_bound, calls[k].objective - kTol);  // maximisation
+    }
+  }
+  // Every reported incumbent is in the history (which may add the final,
+  // polished one).
+  EXPECT_GE(with_incumbent, 1);
+  EXPECT_LE(with_incumbent, static_cast<int>(r.incumbents.size()));
+}
+
+TEST(CbcSolverTest, ProgressCallbackExceptionPropagates) {
+  SolveOptions o;
+  o.progress = [](const SolveProgress&) { throw std::runtime_error("callback says no"); };
+  EXPECT_THAT([&] { MakeCbcSolver()->Solve(Find("integer_gap_knapsack").build(), o); },
+              ThrowsMessage<std::runtime_error>(HasSubstr("callback says no")));
+}
+
+TEST(CbcSolverTest, SameInputSameAnswer) {
+  const LpData lp = RandomKnapsack(40, 5, 7);
+  auto solver = MakeCbcSolver();
+  const SolveResult a = solver->Solve(lp);
+  const SolveResult b = solver->Solve(lp);
+  ASSERT_EQ(a.status, SolveStatus::kOptimal) << a.detail;
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.objective, b.objective);
+  EXPECT_EQ(a.nodes, b.nodes);
+}
+
+TEST(CbcSolverTest, ParallelSolvesMatchSequentialOnes) {
+  std::vector<LpData> models = {RandomKnapsack(30, 4, 1), RandomKnapsack(30, 4, 2),
+                                Find("equality_and_ranged").build(),
+                                Find("lp_max_two_rows").build()};
+  auto solver = MakeCbcSolver();
+  std::vector<SolveResult> sequential;
+  for (const LpData& lp : models) sequential.push_back(solver->Solve(lp));
+  {
+    std::vector<SolveResult> parallel(models.size());
+    std::vector<std::thread> threads;
+    for (size_t k = 0; k < models.size(); ++k) {
+      threads.emplace_back([&, k] {
+        // One solver object per thread, and the shared one, both allowed.
+        parallel[k] = (k % 2 == 0 ? MakeCbcSolver()->Solve(models[k]) : solver->Solve(models[k]));
+      });
+    }
+    for (std::thread& t : threads) t.join();
+    for (size_t k = 0; k < models.size(); ++k) {
+      SCOPED_TRACE(k);
+      EXPECT_EQ(parallel[k].status, sequential[k].status);
+      EXPECT_EQ(parallel[k].x, sequential[k].x);
+      EXPECT_EQ(parallel[k].objective, sequential[k].objective);
+    }
+  }
+}
+
+TEST(LpRelaxationTest, ParallelLpSolvesMatchSequentialOnes) {
+  // LP solves take no lock: four at once must give the sequential answers.
+  std::vector<LpData> models;
+  for (unsigned seed = 1; seed <= 4; ++seed) models.push_back(RandomKnapsack(300, 20, seed));
+  auto solver = MakeCbcSolver();
+  std::vector<LpRelaxationResult> sequential;
+  for (const LpData& lp : models) sequential.push_back(solver->SolveLpRelaxation(lp));
+  std::vector<LpRelaxationResult> parallel(models.size());
+  std::vector<std::thread> threads;
+  for (size_t k = 0; k < models.size(); ++k) {
+    threads.emplace_back([&, k] { parallel[k] = solver->SolveLpRelaxation(models[k]); });
+  }
+  for (std::thread& t : threads) t.join();
+  for (size_t k = 0; k < models.size(); ++k) {
+    ASSERT_EQ(parallel[k].status, SolveStatus::kOptimal);
+    EXPECT_EQ(parallel[k].x, sequential[k].x);
+    EXPECT_EQ(parallel[k].row_duals, sequential[k].row_duals);
+    EXPECT_EQ(parallel[k].objective, sequential[k].objective);
+  }
+}
+
+TEST(CbcSolverTest, ThreadsOptionUsesCbcParallelMode) {
+  SolveOptions o;
+  o.threads = 2;
+  const SolveResult r = MakeCbcSolver()->Solve(RandomKnapsack(30, 4, 3), o);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  const SolveResult serial = MakeCbcSolver()->Solve(RandomKnapsack(30, 4, 3));
+  EXPECT_NEAR(r.objective, serial.objective, 1e-4 * std::abs(serial.objective));
+  EXPECT_THAT(r.detail, AnyOf(HasSubstr("threads=2"), HasSubstr("threads>1 ignored")));
+}
+
+// Redirects stdout and stderr (file descriptors 1 and 2) to a file.
+class CaptureOutput {
+ public:
+  CaptureOutput() {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    path_ = ::testing::TempDir() + "/milp_capture_" + std::to_string(::getpid()) + ".txt";
+    file_ = std::fopen(path_.c_str(), "w+");
+    saved_out_ = ::dup(1);
+    saved_err_ = ::dup(2);
+    ::dup2(::fileno(file_), 1);
+    ::dup2(::fileno(file_), 2);
+  }
+  std::string Finish() {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::dup2(saved_out_, 1);
+    ::dup2(saved_err_, 2);
+    ::close(saved_out_);
+    ::close(saved_err_);
+    std::fclose(file_);
+    std::ifstream in(path_);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::remove(path_.c_str());
+    return ss.str();
+  }
+
+ private:
+  std::string path_;
+  std::FILE* file_;
+  int saved_out_, saved_err_;
+};
+
+TEST(CbcSolverTest, PrintsNothingAtLogLevelZero) {
+  auto solver = MakeCbcSolver();
+  CaptureOutput capture;
+  for (const CatalogProblem& p : Catalog()) {
+    const LpData lp = p.build();
+    solver->Solve(lp);
+    solver->SolveLpRelaxation(lp);
+  }
+  SolveOptions o;
+  o.time_limit_s = 0.3;
+  o.initial_solution = GreedyStart(HardKnapsack());
+  solver->Solve(HardKnapsack(), o);
+  const std::string printed = capture.Finish();
+  EXPECT_EQ(printed, "");
+}
+
+TEST(CbcSolverTest, InvalidInputThrows) {
+  auto solver = MakeCbcSolver();
+  LpData bad = Find("lp_min_duals").build();
+  bad.col_lower[0] = 5;
+  bad.col_upper[0] = 1;
+  EXPECT_THAT([&] { solver->Solve(bad); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("Solver::Solve: invalid problem")));
+  EXPECT_THAT([&] { solver->SolveLpRelaxation(bad); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("SolveLpRelaxation: invalid problem")));
+  const LpData good = Find("lp_min_duals").build();
+  SolveOptions o;
+  o.relative_gap = -1;
+  EXPECT_THAT([&] { solver->Solve(good, o); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("invalid options: SolveOptions: relative_gap")));
+  EXPECT_THAT([&] { solver->SolveLpRelaxation(good, o); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("relative_gap")));
+  o = {};
+  o.initial_solution = Eigen::VectorXd::Zero(3);
+  EXPECT_THAT([&] { solver->Solve(good, o); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("initial_solution has size 3, expected 2")));
+}
+
+TEST(CbcSolverTest, EmptyModelWithRowsOnly) {
+  LpData lp;
+  lp.a_matrix.resize(2, 0);
+  lp.row_lower = Eigen::Vector2d(-1, -kInfinity);
+  lp.row_upper = Eigen::Vector2d(1, 0);
+  lp.objective_offset = -2;
+  auto solver = MakeCbcSolver();
+  SolveResult r = solver->Solve(lp);
+  EXPECT_EQ(r.status, SolveStatus::kOptimal);
+  EXPECT_DOUBLE_EQ(r.objective, -2);
+  lp.row_lower[0] = 0.5;  // 0 >= 0.5 cannot hold
+  r = solver->Solve(lp);
+  EXPECT_EQ(r.status, SolveStatus::kInfeasible);
+}
+
+TEST(CbcSolverTest, NoRowsUnboundedAndInfeasible) {
+  Model m;
+  Variable x = m.AddContinuous(0, kInfinity, "x");
+  m.Maximize(LinearExpr(x));
+  EXPECT_EQ(MakeCbcSolver()->Solve(m.ToLpData()).status, SolveStatus::kUnbounded);
+  Model n;
+  n.AddInteger(0.2, 0.8, "k");
+  EXPECT_EQ(MakeCbcSolver()->Solve(n.ToLpData()).status, SolveStatus::kInfeasible);
+}
+
+TEST(CbcSolverTest, IntegerColumnWithoutIntegerValueIsInfeasible) {
+  Model m;
+  Variable k = m.AddInteger(0.2, 0.8, "k");
+  Variable y = m.AddContinuous(0, 1, "y");
+  m.AddConstraint(k + y <= 5, "r");
+  m.Minimize(k + y);
+  EXPECT_EQ(MakeCbcSolver()->Solve(m.ToLpData()).status, SolveStatus::kInfeasible);
+}
+
+}  // namespace
+}  // namespace thrustsched::milp

@@ -1,0 +1,179 @@
+#include "transcription/problem.h"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace thrustsched::transcription {
+namespace {
+
+bool Fail(std::string* error, const std::string& message) {
+  if (error != nullptr) *error = message;
+  return false;
+}
+
+std::string Num(double v) {
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+
+bool AllFinite(const Eigen::VectorXd& v) { return v.allFinite(); }
+
+}  // namespace
+
+std::string_view ToString(ObjectiveKind kind) {
+  switch (kind) {
+    case ObjectiveKind::kL1:
+      return "l1";
+    case ObjectiveKind::kDeltaV:
+      return "delta_v";
+    case ObjectiveKind::kPropellant:
+      return "propellant";
+  }
+  return "unknown";
+}
+
+ObjectiveKind ParseObjectiveKind(std::string_view name) {
+  if (name == "l1") return ObjectiveKind::kL1;
+  if (name == "delta_v") return ObjectiveKind::kDeltaV;
+  if (name == "propellant") return ObjectiveKind::kPropellant;
+  throw std::invalid_argument("objective: unknown kind \"" + std::string(name) +
+                              "\" (expected l1, delta_v or propellant)");
+}
+
+bool ScheduleProblem::IsValid(std::string* error) const {
+  if (model == nullptr) return Fail(error, "problem.model is not set");
+  const int n = model->num_states();
+  const int m = thrusters.size();
+  if (m == 0) return Fail(error, "problem.thrusters is empty");
+  if (model->num_inputs() != 3) {
+    return Fail(error, "problem.model takes " + std::to_string(model->num_inputs()) +
+                           " acceleration components; thruster sets need 3 (RTN)");
+  }
+  if (grid.size() < 2) {
+    return Fail(error, "problem.grid needs at least 2 points, got " + std::to_string(grid.size()));
+  }
+  for (size_t j = 0; j < grid.size(); ++j) {
+    if (!std::isfinite(grid[j])) {
+      return Fail(error, "problem.grid[" + std::to_string(j) + "] is not finite: " + Num(grid[j]));
+    }
+    if (j > 0 && !(grid[j] > grid[j - 1])) {
+      return Fail(error, "problem.grid is not strictly increasing at index " + std::to_string(j) +
+                             ": " + Num(grid[j - 1]) + " then " + Num(grid[j]));
+    }
+  }
+  if (initial_state.size() != n) {
+    return Fail(error, "problem.initial_state has " + std::to_string(initial_state.size()) +
+                           " components, the model has " + std::to_string(n) + " states");
+  }
+  if (!AllFinite(initial_state)) return Fail(error, "problem.initial_state has non-finite values");
+  if (!rules.IsValid(error)) return false;
+  if (!history.IsValid(m, error)) return false;
+  for (size_t k = 0; k < forced_off.size(); ++k) {
+    const ForcedOff& f = forced_off[k];
+    const std::string where = "problem.forced_off[" + std::to_string(k) + "]";
+    if (f.thruster < 0 || f.thruster >= m) {
+      return Fail(error, where + ".thruster " + std::to_string(f.thruster) +
+                             " is not a thruster index (0.." + std::to_string(m - 1) + ")");
+    }
+    if (std::isnan(f.start_s) || std::isnan(f.end_s) || !(f.end_s > f.start_s)) {
+      return Fail(error, where + " must have start_s < end_s, got [" + Num(f.start_s) + ", " +
+                             Num(f.end_s) + ")");
+    }
+  }
+  // Window.
+  if (window.outputs.size() != window.half_widths.size()) {
+    return Fail(error, "window: " + std::to_string(window.outputs.size()) + " outputs but " +
+                           std::to_string(window.half_widths.size()) + " half widths");
+  }
+  std::set<int> seen;
+  for (size_t k = 0; k < window.outputs.size(); ++k) {
+    const int o = window.outputs[k];
+    if (o < 0 || o >= model->num_outputs()) {
+      return Fail(error, "window.outputs[" + std::to_string(k) + "] = " + std::to_string(o) +
+                             " is not an output of model " + std::string(model->name()) + " (0.." +
+                             std::to_string(model->num_outputs() - 1) + ")");
+    }
+    if (!seen.insert(o).second) {
+      return Fail(error, "window.outputs lists output " + std::to_string(o) + " twice");
+    }
+    const double w = window.half_widths[k];
+    if (!std::isfinite(w) || w <= 0.0) {
+      return Fail(error, "window.half_widths[" + std::to_string(k) +
+                             "] must be finite and > 0, got " + Num(w));
+    }
+  }
+  if (std::isnan(window.enforce_from_s)) return Fail(error, "window.enforce_from_s is NaN");
+  if (window.enabled() && window.enforce_from_s > grid.back()) {
+    return Fail(error, "window.enforce_from_s = " + Num(window.enforce_from_s) +
+                           " s is after the horizon end " + Num(grid.back()) + " s");
+  }
+  if (!std::isfinite(window.soft_penalty) || window.soft_penalty <= 0.0) {
+    return Fail(error, "window.soft_penalty must be finite and > 0, got " +
+                           Num(window.soft_penalty));
+  }
+  if (window.intersample_points < 0 || window.intersample_points > 100) {
+    return Fail(error, "window.intersample_points must be in [0, 100], got " +
+                           std::to_string(window.intersample_points));
+  }
+  // Terminal.
+  switch (terminal.kind) {
+    case TerminalKind::kFree:
+      break;
+    case TerminalKind::kFixedState:
+      if (terminal.target.size() != n || !AllFinite(terminal.target)) {
+        return Fail(error, "terminal.target must have " + std::to_string(n) +
+                               " finite components, got " + std::to_string(terminal.target.size()));
+      }
+      break;
+    case TerminalKind::kStateBox:
+      if (terminal.target.size() != n || !AllFinite(terminal.target)) {
+        return Fail(error, "terminal.target must have " + std::to_string(n) +
+                               " finite components, got " + std::to_string(terminal.target.size()));
+      }
+      if (terminal.tolerance.size() != n) {
+        return Fail(error, "terminal.tolerance must have " + std::to_string(n) +
+                               " components, got " + std::to_string(terminal.tolerance.size()));
+      }
+      for (int i = 0; i < n; ++i) {
+        if (std::isnan(terminal.tolerance[i]) || terminal.tolerance[i] < 0.0) {
+          return Fail(error, "terminal.tolerance[" + std::to_string(i) +
+                                 "] must be >= 0 (or infinite), got " + Num(terminal.tolerance[i]));
+        }
+      }
+      break;
+    case TerminalKind::kStationKeepingSets:
+      if (terminal.facets_out_of_plane < 3 || terminal.facets_cone_plus < 3 ||
+          terminal.facets_cone_minus < 3) {
+        return Fail(error, "terminal facets must be >= 3, got " +
+                               std::to_string(terminal.facets_out_of_plane) + ", " +
+                               std::to_string(terminal.facets_cone_plus) + ", " +
+                               std::to_string(terminal.facets_cone_minus));
+      }
+      for (double t : terminal.lookahead_s) {
+        if (!std::isfinite(t) || t < 0.0) {
+          return Fail(error, "terminal.lookahead_s entries must be finite and >= 0, got " + Num(t));
+        }
+      }
+      if (!(terminal.margin >= 0.0 && terminal.margin < 1.0)) {
+        return Fail(error, "terminal.margin must be in [0, 1), got " + Num(terminal.margin));
+      }
+      if (window.outputs.size() < 2) {
+        return Fail(error, "terminal station-keeping sets need a window on two outputs");
+      }
+      break;
+  }
+  if (!std::isfinite(objective.burn_start_penalty) || objective.burn_start_penalty < 0.0) {
+    return Fail(error, "objective.burn_start_penalty must be finite and >= 0, got " +
+                           Num(objective.burn_start_penalty));
+  }
+  if (std::isnan(max_impulse_m_s) || max_impulse_m_s <= 0.0) {
+    return Fail(error, "problem.max_impulse_m_s must be > 0, got " + Num(max_impulse_m_s));
+  }
+  return true;
+}
+
+}  // namespace thrustsched::transcription

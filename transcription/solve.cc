@@ -1,0 +1,91 @@
+#include "transcription/solve.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "dynamics/propagation.h"
+
+namespace thrustsched::transcription {
+namespace {
+
+double Seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+ImpulsiveCheck CheckImpulses(const ScheduleProblem& p, const std::vector<Impulse>& impulses) {
+  std::string err;
+  if (!p.IsValid(&err)) throw std::invalid_argument(err);
+  const dynamics::LinearModel& model = *p.model;
+  const int nn = p.num_intervals();
+  // Impulse delta-v (m/s) along each thruster direction, per node.
+  std::vector<Eigen::Vector3d> kick(nn + 1, Eigen::Vector3d::Zero());
+  for (const Impulse& im : impulses) {
+    if (im.node < 0 || im.node > nn || im.thruster < 0 || im.thruster >= p.thrusters.size()) {
+      throw std::invalid_argument("CheckImpulses: impulse at node " + std::to_string(im.node) +
+                                  " of thruster " + std::to_string(im.thruster) + " out of range");
+    }
+    kick[im.node] += im.delta_v_m_s * p.thrusters.thruster(im.thruster).direction;
+  }
+  ImpulsiveCheck out;
+  Eigen::VectorXd x = p.initial_state;
+  const Eigen::MatrixXd no_input = Eigen::MatrixXd::Zero(3, 1);
+  for (int j = 0; j <= nn; ++j) {
+    if (j > 0 && p.window.enabled() && p.grid[j] >= p.window.enforce_from_s - kTimeTolerance) {
+      const Eigen::VectorXd y = model.EvaluateOutput(p.grid[j]).c * x;
+      for (size_t k = 0; k < p.window.outputs.size(); ++k) {
+        out.max_window_violation = std::max(
+            out.max_window_violation, std::abs(y[p.window.outputs[k]]) - p.window.half_widths[k]);
+      }
+    }
+    x += model.Evaluate(p.grid[j]).b * kick[j];
+    if (j == nn) break;
+    x = dynamics::PropagateLinear(model, no_input, x, p.grid[j], {}, {p.grid[j + 1]})[0];
+  }
+  out.final_state = x;
+  if (p.terminal.kind == TerminalKind::kFixedState || p.terminal.kind == TerminalKind::kStateBox) {
+    const Eigen::VectorXd s = model.state_scale();
+    for (int c = 0; c < model.num_states(); ++c) {
+      const double tol = p.terminal.kind == TerminalKind::kStateBox ? p.terminal.tolerance[c] : 0.0;
+      const double excess = std::abs(x[c] - p.terminal.target[c]) - tol;
+      out.terminal_error = std::max(out.terminal_error, excess / s[c]);
+    }
+  }
+  return out;
+}
+
+ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
+                          const SolveScheduleOptions& options) {
+  ScheduleResult r;
+  r.stats = milp.stats();
+  r.infeasibility_reasons = milp.infeasibility_reasons();
+  milp::SolveOptions solve_options = options.solve;
+  const ScheduleProblem& p = milp.problem();
+  if (!options.warm_start.empty() && p.input_mode == InputMode::kOnOff) {
+    solve_options.initial_solution = milp.StartFromBurns(options.warm_start);
+  }
+  r.solve = solver.Solve(milp.lp(), solve_options);
+  if (!r.solve.has_solution()) return r;
+  r.schedule = milp.Decode(r.solve.x);
+  if (!options.check_schedule) return r;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (p.input_mode == InputMode::kOnOff) {
+    r.check = CheckSchedule(p, r.schedule.burns, options.check);
+  } else {
+    r.impulsive_check = CheckImpulses(p, r.schedule.impulses);
+  }
+  r.checked = true;
+  r.check_seconds = Seconds(t0);
+  return r;
+}
+
+ScheduleResult SolveSchedule(const ScheduleProblem& problem, const milp::Solver& solver,
+                             const SolveScheduleOptions& options) {
+  const ScheduleMilp milp(problem, options.build);
+  return SolveBuilt(milp, solver, options);
+}
+
+}  // namespace thrustsched::transcription

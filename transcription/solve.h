@@ -1,0 +1,74 @@
+// One call from a problem to a verified schedule: discretise, build, solve,
+// decode, check.
+//
+//   auto solver = milp::MakeCbcSolver();
+//   transcription::SolveScheduleOptions opt;
+//   opt.solve.time_limit_s = 60;
+//   transcription::ScheduleResult r = transcription::SolveSchedule(problem, *solver, opt);
+//   if (r.has_schedule()) {
+//     std::cout << r.schedule.consumption_l1_m_s << " m/s, window violation "
+//               << r.check.max_window_violation << "\n";
+//   }
+//
+// The solver's word alone is not evidence: unless disabled, every schedule
+// goes through CheckSchedule (operational rules in continuous time, linear
+// re-propagation between nodes, nonlinear replay for GEO when requested).
+#ifndef THRUSTSCHED_TRANSCRIPTION_SOLVE_H_
+#define THRUSTSCHED_TRANSCRIPTION_SOLVE_H_
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "milp/solver.h"
+#include "transcription/checker.h"
+#include "transcription/problem.h"
+#include "transcription/schedule_milp.h"
+
+namespace thrustsched::transcription {
+
+struct SolveScheduleOptions {
+  BuildOptions build;
+  milp::SolveOptions solve;
+  CheckOptions check;
+  bool check_schedule = true;
+  /// Optional MIP start (on-off mode): a burn list, e.g. the previous cycle's
+  /// schedule shifted, or a heuristic.
+  std::vector<Burn> warm_start;
+};
+
+/// Check of an impulsive schedule: impulses applied to the continuous model
+/// (adaptive propagation between nodes), window at nodes, terminal error.
+struct ImpulsiveCheck {
+  double max_window_violation = 0.0;
+  double terminal_error = 0.0;   // max |x_N+ - target| / state_scale (fixed/box kinds)
+  Eigen::VectorXd final_state;
+};
+ImpulsiveCheck CheckImpulses(const ScheduleProblem& problem, const std::vector<Impulse>& impulses);
+
+struct ScheduleResult {
+  BuildStats stats;
+  milp::SolveResult solve;
+  Schedule schedule;             // valid if has_schedule()
+  bool checked = false;
+  CheckReport check;             // on-off mode
+  ImpulsiveCheck impulsive_check;  // impulsive mode
+  double check_seconds = 0.0;
+  std::vector<std::string> infeasibility_reasons;  // from the rules, known before solving
+  bool has_schedule() const { return solve.has_solution(); }
+};
+
+/// @throws std::invalid_argument if !problem.IsValid() or the options are invalid.
+ScheduleResult SolveSchedule(const ScheduleProblem& problem, const milp::Solver& solver,
+                             const SolveScheduleOptions& options = {});
+
+/// Same, on an already built transcription (e.g. to solve one model with
+/// several solvers or options).
+ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
+                          const SolveScheduleOptions& options = {});
+
+}  // namespace thrustsched::transcription
+
+#endif  // THRUSTSCHED_TRANSCRIPTION_SOLVE_H_
