@@ -43,6 +43,7 @@
 #include "ClpEventHandler.hpp"
 #include "ClpPresolve.hpp"
 #include "ClpSimplex.hpp"
+#include "ClpSolve.hpp"
 #include "CoinMessageHandler.hpp"
 #include "CoinTypes.hpp"
 #include "OsiClpSolverInterface.hpp"
@@ -303,6 +304,31 @@ void Silence(ClpSimplex* clp, SilentHandler* handler, int log_level) {
   }
 }
 
+// CbcMain1 calls this at fixed points of its actions; some actions (e.g.
+// -primalS) call it without checking for null.
+int DriverCallback(CbcModel* /*model*/, int /*where_from*/) { return 0; }
+
+void RunLp(ClpSimplex* model, LpAlgorithm algorithm) {
+  switch (algorithm) {
+    case LpAlgorithm::kPrimal:
+      model->primal();
+      break;
+    case LpAlgorithm::kDual:
+      model->dual();
+      break;
+    case LpAlgorithm::kBarrier: {
+      ClpSolve how;
+      how.setSolveType(ClpSolve::useBarrier);
+      model->initialSolve(how);
+      // Clean-up from the barrier's basis (usually no iterations); it also
+      // classifies problems the barrier misjudges (it can call an unbounded
+      // LP optimal).
+      model->dual();
+      break;
+    }
+  }
+}
+
 // Solves min cost'x over the continuous relaxation with CLP. Primal and dual
 // infeasibility are told apart by a zero-objective feasibility solve.
 LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOptions& options,
@@ -328,7 +354,7 @@ LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOpt
       Silence(reduced, &silent, options.log_level);
       reduced->passInEventHandler(&events);
       set_time(reduced);
-      reduced->dual();
+      RunLp(reduced, options.lp_algorithm);
       if (reduced->status() == 0) {
         presolve.postsolve(true);
         delete reduced;
@@ -345,7 +371,7 @@ LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOpt
   }
   if (!solved) {
     set_time(&model);
-    model.dual();
+    RunLp(&model, options.lp_algorithm);
   }
   const int status = model.status();
   if (status == 0) {
@@ -500,6 +526,7 @@ class CbcSolverImpl final : public Solver {
 
  private:
   SolveResult DoSolve(const LpData& problem, const SolveOptions& options) const override;
+  SolveResult SolveOnce(const LpData& problem, const SolveOptions& options) const;
   LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
                                          const SolveOptions& options) const override;
 };
@@ -566,6 +593,22 @@ SolveResult FromLpOutcome(const LpData& lp, const LpOutcome& o, Control* control
 }
 
 SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options) const {
+  SolveResult r = SolveOnce(lp, options);
+  // CLP's barrier misclassifies some unbounded problems (reported optimal or
+  // infeasible); an infeasible/unbounded verdict reached through it is
+  // confirmed with the dual simplex, which classifies them correctly.
+  if (options.lp_algorithm == LpAlgorithm::kBarrier &&
+      (r.status == SolveStatus::kInfeasible || r.status == SolveStatus::kUnbounded)) {
+    SolveOptions dual = options;
+    dual.lp_algorithm = LpAlgorithm::kDual;
+    SolveResult confirmed = SolveOnce(lp, dual);
+    confirmed.detail = "barrier verdict re-checked with dual simplex; " + confirmed.detail;
+    return confirmed;
+  }
+  return r;
+}
+
+SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& options) const {
   Control control;
   InitControl(&control, lp, options);
   const double sign = control.sign;
@@ -682,6 +725,11 @@ SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options
     args.insert(args.end(),
                 {"-cutoff", num(start_min + 1e-9 * std::max(1.0, std::abs(start_min)))});
   }
+  if (options.objective_step > 0.0) {
+    // CBC prunes nodes whose bound exceeds incumbent - increment: stay just
+    // below the step so a solution exactly one step better is never cut off.
+    args.insert(args.end(), {"-increment", num(options.objective_step * (1.0 - 1e-4))});
+  }
   if (!options.presolve) args.insert(args.end(), {"-preprocess", "off", "-presolve", "off"});
   if (options.threads > 1) {
     if (CbcModel::haveMultiThreadSupport()) {
@@ -691,6 +739,18 @@ SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options
     } else {
       detail += "threads>1 ignored (CBC built without thread support); ";
     }
+  }
+  // The root LP is solved first as a separate driver action; the search then
+  // starts from its basis.
+  switch (options.lp_algorithm) {
+    case LpAlgorithm::kPrimal:
+      args.push_back("-primalS");
+      break;
+    case LpAlgorithm::kDual:
+      break;  // the driver's default
+    case LpAlgorithm::kBarrier:
+      args.push_back("-barrier");
+      break;
   }
   args.insert(args.end(), {"-solve", "-quit"});
   std::vector<const char*> argv;
@@ -705,7 +765,7 @@ SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options
     model.passInMessageHandler(&silent);
     model.setLogLevel(0);
   }
-  CbcMain1(static_cast<int>(argv.size()), argv.data(), model, nullptr, driver_data);
+  CbcMain1(static_cast<int>(argv.size()), argv.data(), model, DriverCallback, driver_data);
   {
     std::lock_guard<std::mutex> lock(control.mu);
     control.main = nullptr;

@@ -57,6 +57,18 @@ std::string_view ToString(SolveStatus status) {
 
 std::ostream& operator<<(std::ostream& os, SolveStatus status) { return os << ToString(status); }
 
+std::string_view ToString(LpAlgorithm algorithm) {
+  switch (algorithm) {
+    case LpAlgorithm::kPrimal:
+      return "primal";
+    case LpAlgorithm::kDual:
+      return "dual";
+    case LpAlgorithm::kBarrier:
+      return "barrier";
+  }
+  return "unknown";
+}
+
 bool SolveOptions::IsValid(std::string* error) const {
   auto fail = [error](const std::string& message) {
     if (error != nullptr) *error = "SolveOptions: " + message;
@@ -70,6 +82,9 @@ bool SolveOptions::IsValid(std::string* error) const {
   }
   if (!std::isfinite(absolute_gap) || absolute_gap < 0.0) {
     return fail("absolute_gap must be finite and >= 0, got " + Num(absolute_gap));
+  }
+  if (!std::isfinite(objective_step) || objective_step < 0.0) {
+    return fail("objective_step must be finite and >= 0, got " + Num(objective_step));
   }
   if (threads < 1) return fail("threads must be >= 1, got " + std::to_string(threads));
   if (random_seed < 0) return fail("random_seed must be >= 0, got " + std::to_string(random_seed));

@@ -75,6 +75,23 @@ std::string Tag(const char* what, int a, int b) {
   return std::string(what) + "_" + std::to_string(a) + "_" + std::to_string(b);
 }
 
+// See ScheduleMilp::objective_step().
+double ObjectiveStep(const milp::LpData& lp) {
+  double smallest = 0.0;
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    const double c = std::abs(lp.col_cost[j]);
+    if (c == 0.0) continue;
+    if (lp.col_type[j] == milp::VarType::kContinuous) return 0.0;
+    if (smallest == 0.0 || c < smallest) smallest = c;
+  }
+  if (smallest == 0.0) return 0.0;
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    const double ratio = std::abs(lp.col_cost[j]) / smallest;
+    if (std::abs(ratio - std::round(ratio)) > 1e-9 * std::max(1.0, ratio)) return 0.0;
+  }
+  return smallest;
+}
+
 }  // namespace
 
 std::string_view ToString(Formulation formulation) {
@@ -202,6 +219,7 @@ void ScheduleMilp::Build() {
   }
   AddObjective();
   lp_ = model_.ToLpData();
+  objective_step_ = ObjectiveStep(lp_);
   stats_.build_seconds = Seconds(t0);
   stats_.num_binaries = lp_.num_integer_cols();
   stats_.num_columns = lp_.num_cols();

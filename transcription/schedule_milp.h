@@ -108,6 +108,11 @@ class ScheduleMilp {
   /// Reasons the problem is infeasible whatever the solver does (conflicting
   /// history and forced-off windows, ...); empty in general.
   const std::vector<std::string>& infeasibility_reasons() const { return reasons_; }
+  /// If every costed column is integer and every cost an integer multiple of
+  /// the smallest (equal thruster costs on a uniform grid), that smallest cost:
+  /// feasible objective values then differ by whole steps, which lets the
+  /// solver prove optimality (milp::SolveOptions::objective_step). Else 0.
+  double objective_step() const { return objective_step_; }
 
   /// Adds rows/columns through `edit`, then refreezes lp().
   template <typename Edit>
@@ -144,6 +149,7 @@ class ScheduleMilp {
   OperationalEncoding encoding_;
   BuildStats stats_;
   std::vector<std::string> reasons_;
+  double objective_step_ = 0.0;
   Eigen::VectorXd scale_;                          // state scale S (ones if !scale)
   std::vector<std::vector<milp::Variable>> state_;  // sparse: [node][component], scaled
   std::vector<std::vector<milp::Variable>> dv_;     // impulsive: [thruster][node]

@@ -63,6 +63,7 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
   r.stats = milp.stats();
   r.infeasibility_reasons = milp.infeasibility_reasons();
   milp::SolveOptions solve_options = options.solve;
+  if (solve_options.objective_step == 0.0) solve_options.objective_step = milp.objective_step();
   const ScheduleProblem& p = milp.problem();
   if (!options.warm_start.empty() && p.input_mode == InputMode::kOnOff) {
     solve_options.initial_solution = milp.StartFromBurns(options.warm_start);

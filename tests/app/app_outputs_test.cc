@@ -304,5 +304,15 @@ TEST(Plots, ScriptsAlwaysWrittenGnuplotOptional) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Outputs, WritersThrowOnUnwritablePaths) {
+  const Scenario s = Hcw();
+  EXPECT_THROW(WriteTextFile("/nonexistent/dir/x.txt", "x"), std::runtime_error);
+  EXPECT_THROW(WriteJsonFile("/nonexistent/dir/x.json", nlohmann::json::object()), std::runtime_error);
+  EXPECT_THROW(WriteScheduleCsv("/nonexistent/dir/s.csv", s, {}), std::runtime_error);
+  PlotOptions o;
+  o.run_gnuplot = false;
+  EXPECT_THROW(WritePlots("/nonexistent/dir", s, false, o), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace thrustsched::app

@@ -114,6 +114,26 @@ TEST_P(CatalogTest, LpRelaxationMatchesTheHandDerivedValue) {
   EXPECT_EQ(r.row_duals.size(), lp.num_rows());
 }
 
+// Every LP algorithm gives the hand-derived optimum (MILP root and relaxation).
+TEST_P(CatalogTest, EveryLpAlgorithmAgrees) {
+  const CatalogProblem& p = Find(GetParam());
+  const LpData lp = p.build();
+  for (LpAlgorithm a : {LpAlgorithm::kPrimal, LpAlgorithm::kDual, LpAlgorithm::kBarrier}) {
+    SolveOptions o;
+    o.lp_algorithm = a;
+    const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+    ASSERT_EQ(r.status, p.status) << ToString(a) << " " << r.detail;
+    if (p.status == SolveStatus::kOptimal) {
+      EXPECT_NEAR(r.objective, p.objective, kTol) << ToString(a);
+    }
+    if (!std::isnan(p.lp_objective)) {
+      const LpRelaxationResult l = MakeCbcSolver()->SolveLpRelaxation(lp, o);
+      ASSERT_EQ(l.status, SolveStatus::kOptimal) << ToString(a);
+      EXPECT_NEAR(l.objective, p.lp_objective, kTol) << ToString(a);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Catalog, CatalogTest, ::testing::ValuesIn(CatalogNames()),
                          [](const auto& info) { return info.param; });
 
@@ -432,6 +452,34 @@ TEST(CbcSolverTest, EmptyModelWithRowsOnly) {
   lp.row_lower[0] = 0.5;  // 0 >= 0.5 cannot hold
   r = solver->Solve(lp);
   EXPECT_EQ(r.status, SolveStatus::kInfeasible);
+}
+
+// min 0.3 * sum x_i over 12 binaries s.t. sum_i (i % 4 + 2) x_i >= 17:
+// the LP bound is 17/5 * 0.3 = 1.02 (weights up to 5), the MILP optimum 4
+// items (5+5+5+2 = 17) = 1.2. Objective values are multiples of 0.3, so the
+// step lets the search stop as soon as 1.2 is found; it must not change the
+// optimum, and a negative step is rejected.
+TEST(CbcSolverTest, ObjectiveStepKeepsTheOptimum) {
+  Model m("step");
+  VarBlock x = m.AddVariables(12, 0, 1, VarType::kBinary, "x");
+  LinearExpr weight, cost;
+  for (int i = 0; i < 12; ++i) {
+    weight.AddTerm(x[i], i % 4 + 2);
+    cost.AddTerm(x[i], 0.3);
+  }
+  m.AddConstraint(weight >= 17, "cover");
+  m.Minimize(cost);
+  const LpData lp = m.ToLpData();
+  for (double step : {0.0, 0.3}) {
+    SolveOptions o;
+    o.objective_step = step;
+    const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+    ASSERT_EQ(r.status, SolveStatus::kOptimal) << step;
+    EXPECT_NEAR(r.objective, 1.2, 1e-9) << step;
+  }
+  SolveOptions bad;
+  bad.objective_step = -0.3;
+  EXPECT_THROW(MakeCbcSolver()->Solve(lp, bad), std::invalid_argument);
 }
 
 TEST(CbcSolverTest, NoRowsUnboundedAndInfeasible) {
