@@ -1,23 +1,18 @@
-# The two commands of the README:
+# The two commands of the README (the only targets; `make` alone is `make demo`):
 #   make demo   install missing Debian packages, build (Release, build/), solve the default scenario
 #   make test   same set-up, then run every test with ctest
-# Internal helper targets (deps, build) are used by both.
+# The shared set-up (packages, configure, build) is scripts/setup.sh.
 BUILD_DIR ?= build
 JOBS ?= 2
 DEMO_SCENARIO ?= data/scenarios/geo_week_anzel4.json
 DEMO_OUT ?= out/demo
 
-.PHONY: demo test deps build
+.PHONY: demo test
 
-deps:
-	@bash scripts/install-deps.sh
-
-build: deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
-	cmake --build $(BUILD_DIR) -j $(JOBS)
-
-demo: build
+demo:
+	bash scripts/setup.sh $(BUILD_DIR) $(JOBS)
 	bash scripts/demo.sh $(BUILD_DIR) $(DEMO_SCENARIO) $(DEMO_OUT)
 
-test: build
+test:
+	bash scripts/setup.sh $(BUILD_DIR) $(JOBS)
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)

@@ -1,10 +1,11 @@
 #include "app/commands.h"
 
+#include <unistd.h>
+
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <sstream>
 
+#include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
 #include "app/solution_import.h"
@@ -57,28 +59,6 @@ std::string JoinNames(const std::vector<std::string>& v) {
   return s;
 }
 
-// --- SIGINT: stop the solve as at a time limit, keep the best schedule. ---
-std::atomic<bool> g_interrupt{false};
-
-extern "C" void OnSigint(int) {
-  g_interrupt.store(true);
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C terminates at once
-}
-
-class SigintGuard {
- public:
-  SigintGuard() {
-    g_interrupt.store(false);
-    previous_ = std::signal(SIGINT, OnSigint);
-  }
-  ~SigintGuard() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
-
- private:
-  void (*previous_)(int) = SIG_DFL;
-};
-
 void MakeDirectory(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -118,9 +98,26 @@ std::string MilpLine(const transcription::ScheduleMilp& m, const Scenario& s) {
   return os.str();
 }
 
-void WriteModelFile(const std::string& path, const milp::LpData& lp, bool obfuscate) {
+// ".mps" or ".lp" (lower case) from the file name. `option` names the flag
+// that asked for a given format ("--export-mps"), empty for `export`.
+// @throws ScenarioError if the extension is neither, or not the flag's.
+std::string ModelFileExtension(const std::string& path, const std::string& option = "") {
   std::string ext = fs::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (option == "--export-mps" && ext != ".mps") {
+    throw ScenarioError("--export-mps " + path + ": the file name must end in .mps");
+  }
+  if (option == "--export-lp" && ext != ".lp") {
+    throw ScenarioError("--export-lp " + path + ": the file name must end in .lp");
+  }
+  if (ext != ".mps" && ext != ".lp") {
+    throw ScenarioError(path + ": the model file must end in .mps or .lp");
+  }
+  return ext;
+}
+
+void WriteModelFile(const std::string& path, const milp::LpData& lp, bool obfuscate) {
+  const std::string ext = ModelFileExtension(path);
   try {
     if (ext == ".mps") {
       milp::MpsOptions o;
@@ -212,6 +209,8 @@ void WritePlotsReport(const std::string& dir, const Scenario& s, bool nonlinear,
 int RunSolve(const SolveArgs& a) {
   const Clock::time_point t_start = Clock::now();
   Scenario s = LoadWithOverrides(a.scenario, a.overrides);
+  if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
+  if (!a.export_lp.empty()) ModelFileExtension(a.export_lp, "--export-lp");
   const std::string dir =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
   MakeDirectory(dir);
@@ -240,8 +239,13 @@ int RunSolve(const SolveArgs& a) {
   // carry NaN for it, and the line should still show it.
   auto best = std::make_shared<double>(std::nan(""));
   opt.solve.progress = [quiet, best, &err](const milp::SolveProgress& p) {
+    InterruptForTestAtIncumbent(p);
     if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
     if (quiet || p.wall_seconds < 3.0) return;
+    if (p.in_root_lp) {
+      err << "  [" << Secs(p.wall_seconds) << "] solving the root LP relaxation\n";
+      return;
+    }
     const double inc = std::isfinite(p.objective) ? p.objective : *best;
     double gap = p.gap;
     if (std::isnan(gap) && std::isfinite(inc) && std::isfinite(p.best_bound)) {
@@ -251,7 +255,7 @@ int RunSolve(const SolveArgs& a) {
         << F(p.best_bound) << ", gap " << Percent(gap) << ", " << p.nodes << " nodes"
         << (p.new_incumbent ? " (new incumbent)" : "") << "\n";
   };
-  opt.solve.interrupt = &g_interrupt;
+  opt.solve.interrupt = InterruptWatcher::flag();
   if (!a.quiet) {
     err << "solving with " << milp::CbcVersion() << " (time limit " << F(s.solve.time_limit_s)
         << " s, relative gap " << F(s.solve.relative_gap) << ", " << s.solve.threads
@@ -261,10 +265,10 @@ int RunSolve(const SolveArgs& a) {
   transcription::ScheduleResult r;
   bool interrupted = false;
   {
-    SigintGuard guard;
+    InterruptWatcher watcher;
     r = transcription::SolveBuilt(milp, *solver, opt);
-    interrupted = g_interrupt.load();
   }
+  interrupted = InterruptWatcher::interrupted();
   if (interrupted) err << "interrupted: keeping the best schedule found so far\n";
 
   // Check.

@@ -112,7 +112,15 @@ nlohmann::json ParseJsonText(std::string_view text, const std::string& what) {
     j = nlohmann::json::parse(text.begin(), text.end(), cb, /*allow_exceptions=*/true,
                               /*ignore_comments=*/false);
   } catch (const nlohmann::json::exception& e) {
-    throw ScenarioError(what + ": not valid JSON: " + e.what());
+    // Name the field being read (e.g. a number too large for a double, such
+    // as 1e999, fails here, before any field check could see it).
+    std::string where;
+    if (!frames.empty()) {
+      std::vector<Frame> at = frames;
+      if (!at.back().is_object) ++at.back().index;  // the element being read
+      where = " at " + PathOf(root, at, at.size());
+    }
+    throw ScenarioError(what + ": not valid JSON" + where + ": " + e.what());
   }
   if (!duplicate.empty()) {
     throw ScenarioError(duplicate + ": duplicate key in " + what);

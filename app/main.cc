@@ -4,6 +4,7 @@
 //   thrustsched export data/scenarios/hcw_table41_2d.json model.mps
 //   thrustsched check data/scenarios/hcw_table41_2d.json out/x/schedule.csv
 //   thrustsched import-solution SCENARIO.json cbc.sol --format cbc --out schedule.csv
+//   thrustsched simulate data/scenarios/year/year_anzel4_fixed.json --out out/year [--cycles N] [--resume]
 //
 // Exit codes: 0 solved (optimal or feasible) / check passed, 1 internal
 // error, 2 bad input, 3 infeasible, 4 no solution within the time limit,
@@ -15,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/simulate.h"
 #include "milp/cbc_solver.h"
 
 #ifndef THRUSTSCHED_VERSION
@@ -107,7 +109,7 @@ int main(int argc, char** argv) {
   c_export->add_option("file", exp.file, "output model file, .mps or .lp")->required();
   export_flags.AddModelOptions(c_export);
   c_export->add_flag("--obfuscate-names", exp.obfuscate_names,
-                     "name columns/rows C0000001/R0000001 (import-solution needs the same flag)");
+                     "name columns/rows C000001/R000001 (import-solution needs the same flag)");
 
   // check
   app::CheckArgs check;
@@ -149,6 +151,25 @@ int main(int argc, char** argv) {
   c_validate->add_flag("--no-build", no_build, "only parse and validate");
   validate_flags.AddModelOptions(c_validate);
 
+  // simulate
+  app::SimulateArgs sim;
+  CLI::App* c_simulate = cli.add_subcommand(
+      "simulate",
+      "Long station-keeping simulation (thesis ch. 5): chained cycle MILPs closed through the "
+      "nonlinear GEO model, from the scenario's \"long_horizon\" section. Writes cycles.csv, "
+      "year.json, trajectory.csv, per-cycle schedules, checkpoint.json and SVG plots. Exit 0 "
+      "when every requested cycle ran (fallbacks are reported, not errors), 4 if interrupted "
+      "(continue with --resume).");
+  c_simulate->add_option("scenario", sim.scenario, "scenario file (JSON) with a long_horizon section")
+      ->required();
+  c_simulate->add_option("--out", sim.out_dir, "output directory (default out/<scenario file stem>)");
+  c_simulate->add_option("--cycles", sim.cycles, "stop once this many cycles (in total) are done")
+      ->check(CLI::PositiveNumber);
+  c_simulate->add_flag("--resume", sim.resume,
+                       "continue from the checkpoint in the output directory");
+  c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
+  c_simulate->add_flag("--no-plots", sim.no_plots, "write the gnuplot scripts but do not run gnuplot");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -176,6 +197,10 @@ int main(int argc, char** argv) {
     if (c_import->parsed()) {
       imp.overrides = import_flags.Get();
       return app::RunImportSolution(imp);
+    }
+    if (c_simulate->parsed()) {
+      sim.command_line = CommandLine(argc, argv);
+      return app::RunSimulate(sim);
     }
     if (c_validate->parsed()) {
       val.build = !no_build;

@@ -230,6 +230,10 @@ Eigen::VectorXd ToColumnVector(const ImportedSolution& sol,
     return x;
   }
   for (const auto& [name, value] : sol.values) {
+    // "~<row>" columns are the LP writer's slacks of ranged and free rows
+    // (milp/model_io.h): not part of the model, and '~' never starts one of
+    // its sanitised names.
+    if (!name.empty() && name[0] == '~') continue;
     auto it = index.find(name);
     if (it == index.end()) {
       throw ScenarioError("solution names column \"" + name +

@@ -91,6 +91,11 @@ struct Control {
   std::vector<Incumbent> incumbents;
   std::exception_ptr callback_error;
   bool stopped_by_interrupt = false;
+  // Set by the first CBC event of the driver's search (from then on CBC's
+  // own time checks run); until then the root LP is stopped by
+  // RootLpEventHandler, which records it in root_lp_stopped.
+  std::atomic<bool> search_started{false};
+  std::atomic<bool> root_lp_stopped{false};
 
   double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
   double Remaining() const {
@@ -129,6 +134,23 @@ struct Control {
     }
   }
 
+  // Progress while the driver is still in its root LP (no CBC event yet).
+  void RootHeartbeat() {
+    if (!progress) return;
+    std::lock_guard<std::mutex> lock(mu);
+    const double wall = Elapsed();
+    if (callback_error != nullptr || wall - last_progress < progress_interval_s) return;
+    last_progress = wall;
+    SolveProgress p;
+    p.wall_seconds = wall;
+    p.in_root_lp = true;
+    try {
+      progress(p);
+    } catch (...) {
+      callback_error = std::current_exception();
+    }
+  }
+
   // Records an incumbent found by our own code (MIP start, polishing).
   void RecordOwn(double cbc_objective, double bound_model) {
     std::lock_guard<std::mutex> lock(mu);
@@ -143,6 +165,7 @@ struct Control {
   // model (no parent; sub-searches of heuristics have one) gives incumbents,
   // bounds and progress.
   void Observe(CbcModel* model, bool final_event) {
+    search_started.store(true);
     std::lock_guard<std::mutex> lock(mu);
     if (!driver || model == nullptr || model->parentModel() != nullptr) return;
     main = model;
@@ -203,10 +226,37 @@ class LpEventHandler : public ClpEventHandler {
   unsigned count_ = 0;
 };
 
+// The cbc driver solves the root LP (and CglPreProcess's LPs) before its
+// search starts, without looking at its time limit or at our interrupt flag
+// (coin-or/Cbc#231, #514): on the larger scheduling models that is minutes.
+// This handler, on the driver's CLP model (its clones inherit it), stops
+// those LPs at the deadline or on interrupt; once the search has started
+// (first CBC event) it never interferes, since stopping a node LP could make
+// CBC prune that node as if it were infeasible. A stopped root LP proves
+// nothing, so the result is then "no solution" (see root_lp_stopped).
+class RootLpEventHandler : public ClpEventHandler {
+ public:
+  explicit RootLpEventHandler(Control* control) : control_(control) {}
+  int event(Event which) override {
+    if (which != endOfIteration) return -1;
+    if ((++count_ & 15) != 0) return -1;
+    if (control_->search_started.load()) return -1;
+    control_->RootHeartbeat();
+    if (!control_->ShouldStop()) return -1;
+    control_->root_lp_stopped.store(true);
+    return 0;
+  }
+  ClpEventHandler* clone() const override { return new RootLpEventHandler(*this); }
+
+ private:
+  Control* control_;
+  unsigned count_ = 0;
+};
+
 // The cbc driver (CbcMain0/CbcMain1) keeps state in process-wide globals:
 // one call at a time.
-std::mutex& DriverMutex() {
-  static std::mutex mutex;
+std::timed_mutex& DriverMutex() {
+  static std::timed_mutex mutex;
   return mutex;
 }
 
@@ -665,12 +715,31 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
     return r;
   };
   auto limit_status = [&]() {
-    return control.stopped_by_interrupt ? std::string("interrupted") : std::string("time limit");
+    if (control.stopped_by_interrupt) return std::string("interrupted");
+    return options.max_nodes >= 0 && !control.ShouldStop() ? std::string("node limit")
+                                                           : std::string("time limit");
   };
 
-  // ---- The cbc driver, one call at a time in this process.
-  std::unique_lock<std::mutex> driver_lock(DriverMutex());
-  if (control.ShouldStop()) {
+  // ---- The cbc driver, one call at a time in this process. The time spent
+  // waiting for it is not charged to this solve (the clock and the deadline
+  // move by the wait), so a solve's result does not depend on what other
+  // threads are doing; the interrupt flag is still honoured while waiting.
+  std::unique_lock<std::timed_mutex> driver_lock(DriverMutex(), std::defer_lock);
+  {
+    const Clock::time_point wait_start = Clock::now();
+    while (!driver_lock.try_lock_for(std::chrono::milliseconds(50))) {
+      if (control.Interrupted()) break;
+    }
+    const Clock::duration waited = Clock::now() - wait_start;
+    if (waited > std::chrono::milliseconds(10)) {
+      std::lock_guard<std::mutex> lock(control.mu);
+      control.start += waited;
+      control.deadline += waited;
+      detail += "waited " + Num(std::chrono::duration<double>(waited).count()) +
+                " s for the CBC driver (another solve held it; not counted); ";
+    }
+  }
+  if (!driver_lock.owns_lock() || control.ShouldStop()) {
     if (have_start) return finish(start_result(SolveStatus::kFeasible, limit_status()));
     SolveResult r;
     r.status = SolveStatus::kNoSolutionFound;
@@ -679,6 +748,10 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
   }
   OsiClpSolverInterface base;
   LoadOsi(&base, arrays, lp);
+  if (control.has_deadline || control.interrupt != nullptr || control.progress) {
+    RootLpEventHandler root_lp_events(&control);
+    base.getModelPtr()->passInEventHandler(&root_lp_events);  // cloned
+  }
   if (quiet) {
     base.passInMessageHandler(&silent);
     base.getModelPtr()->passInMessageHandler(&silent);
@@ -731,6 +804,9 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
     args.insert(args.end(), {"-increment", num(options.objective_step * (1.0 - 1e-4))});
   }
   if (!options.presolve) args.insert(args.end(), {"-preprocess", "off", "-presolve", "off"});
+  if (options.max_nodes >= 0) {
+    args.insert(args.end(), {"-maxNodes", std::to_string(options.max_nodes)});
+  }
   if (options.threads > 1) {
     if (CbcModel::haveMultiThreadSupport()) {
       args.insert(args.end(), {"-threads", std::to_string(options.threads)});
@@ -799,7 +875,11 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
   r.nodes = model.getNodeCount();
   const bool has_x = x.size() > 0;
   const bool stopped = status == 1 || control.ShouldStop();
-  if (model.isProvenOptimal() || (status == 0 && model.isProvenInfeasible() && has_x)) {
+  if (control.root_lp_stopped.load()) {
+    // Whatever CBC concluded from a root LP we stopped, it proves nothing.
+    r.status = has_x ? SolveStatus::kFeasible : SolveStatus::kNoSolutionFound;
+    detail += "; " + limit_status() + " in the root LP relaxation";
+  } else if (model.isProvenOptimal() || (status == 0 && model.isProvenInfeasible() && has_x)) {
     // (With the start as cutoff, "infeasible" means nothing better than it.)
     r.status = SolveStatus::kOptimal;
     if (!has_x) r.status = SolveStatus::kInfeasible;

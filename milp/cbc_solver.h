@@ -20,9 +20,13 @@
 //    arguments through process-wide globals, installs a process-wide SIGINT
 //    handler during the search, and CglZeroHalf keeps file-static state;
 //    two unlocked concurrent solves were measured to corrupt each other
-//    (coin-or/Cbc#332). A solve waiting for the mutex spends its own time
-//    limit (counted from the Solve call); it returns kNoSolutionFound if the
-//    limit passes while it waits.
+//    (coin-or/Cbc#332). So several MILP solves in parallel threads are safe
+//    but run one after another. The wait for the mutex is not charged to a
+//    solve's time limit (its clock starts when it gets the driver, and
+//    SolveResult::detail reports the wait), so its result does not depend on
+//    the other threads; the interrupt flag is honoured while it waits. For
+//    truly parallel MILP solves, use one process per solve (as
+//    thrustsched-bench does).
 //  * LP solves (no integer columns, SolveLpRelaxation) use only per-call CLP
 //    objects and run truly in parallel.
 //  * threads > 1 switches on CBC's parallel branch and cut (the Debian build

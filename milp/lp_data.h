@@ -38,7 +38,7 @@ struct LpData {
   /// rows x cols, column-major, compressed; no explicit zeros.
   Eigen::SparseMatrix<double, Eigen::ColMajor, int> a_matrix;
   std::vector<VarType> col_type;
-  /// Either empty (writers generate C0000001 / R0000001) or one per column/row.
+  /// Either empty (writers generate C000001 / R000001) or one per column/row.
   std::vector<std::string> col_names, row_names;
 
   int num_cols() const { return static_cast<int>(a_matrix.cols()); }

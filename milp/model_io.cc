@@ -74,7 +74,7 @@ std::string Sanitise(const std::string& raw) {
 
 std::string Numbered(char prefix, size_t index) {
   char buf[32];
-  std::snprintf(buf, sizeof(buf), "%c%07zu", prefix, index + 1);
+  std::snprintf(buf, sizeof(buf), "%c%06zu", prefix, index + 1);
   return buf;
 }
 
@@ -164,10 +164,28 @@ class Out {
   std::string buf_;
 };
 
+double IntegerLower(double lo);
+double IntegerUpper(double up);
+
 void CheckProblem(const LpData& problem, const char* what) {
   std::string error;
   if (!problem.IsValid(&error)) {
     throw std::invalid_argument(std::string(what) + ": invalid problem: " + error);
+  }
+  // Integer bounds are written rounded inward (below); a column whose bounds
+  // hold no integer would come out as LO > UP, which readers reject as a bad
+  // file rather than an infeasible model.
+  for (int j = 0; j < problem.num_cols(); ++j) {
+    if (problem.col_type[static_cast<size_t>(j)] == VarType::kContinuous) continue;
+    const double lo = problem.col_lower[j], up = problem.col_upper[j];
+    if (IntegerLower(lo) > IntegerUpper(up)) {
+      const std::string name = static_cast<size_t>(j) < problem.col_names.size()
+                                   ? problem.col_names[static_cast<size_t>(j)]
+                                   : "#" + std::to_string(j);
+      throw std::invalid_argument(std::string(what) + ": integer column '" + name +
+                                  "' has no integer value within its bounds [" + Fmt17(lo) + ", " +
+                                  Fmt17(up) + "] (the model is infeasible as stated)");
+    }
   }
 }
 

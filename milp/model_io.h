@@ -3,7 +3,7 @@
 //
 //   milp::WriteMpsFile("week.mps", lp);                         // free MPS
 //   milp::WriteLpFile("week.lp", lp);                           // CPLEX LP
-//   milp::MpsOptions o; o.obfuscate_names = true;               // C0000001 / R0000001
+//   milp::MpsOptions o; o.obfuscate_names = true;               // C000001 / R000001
 //
 // Conventions (each guards against a pitfall other readers hit, see
 // field-notes §2.3): numbers with %.17g (exact double round trip); minimisation
@@ -24,7 +24,7 @@
 // else -> '_'); a leading digit, '.', or exponent-like 'e1'/'E'/'ee' gets a
 // '_' prefix, as do LP keywords (st, bounds, free, inf, end, ...); at most 96
 // characters; duplicates (and the reserved OBJ, OBJ_CONST, OBJCONST) get the
-// smallest free suffix "_k". Missing names become C0000001 / R0000001.
+// smallest free suffix "_k". Missing names become C000001 / R000001.
 // Integer bounds are written rounded inward (GLPK rejects fractional bounds on
 // integer columns): 0..3.5 becomes 0..3, never a binary.
 #ifndef THRUSTSCHED_MILP_MODEL_IO_H_

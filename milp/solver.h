@@ -48,6 +48,9 @@ struct SolveProgress {
   double gap = std::numeric_limits<double>::quiet_NaN();
   long long nodes = 0;
   bool new_incumbent = false;
+  /// True while the MILP's root LP relaxation is being solved (before the
+  /// search: no incumbent, no bound yet); reported every progress_interval_s.
+  bool in_root_lp = false;
 };
 
 /// Options of a solve. IsValid() rules: time_limit_s >= 0 (not NaN, may be
@@ -93,6 +96,10 @@ struct SolveOptions {
   double progress_interval_s = 5.0;
   /// If set and becomes true, the solve stops as at a time limit.
   const std::atomic<bool>* interrupt = nullptr;
+  /// >= 0: stop after this many branch-and-bound nodes (status kFeasible or
+  /// kNoSolutionFound, like a time limit). Unlike the wall-clock limit it
+  /// gives the same result on every run (threads == 1). < 0: no limit.
+  long long max_nodes = -1;
 
   bool IsValid(std::string* error) const;
 };

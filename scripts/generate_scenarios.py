@@ -29,7 +29,10 @@ def write(name, scenario):
     print("wrote", os.path.relpath(path))
 
 
-def hcw(name, description, x0_m, v0_m_s, days, enforce_from_s=0, time_limit=600):
+def hcw(name, description, x0_m, v0_m_s, days, enforce_from_s=0, time_limit=600, presolve=True):
+    solver = {"time_limit_s": time_limit, "relative_gap": 1e-4, "threads": 2}
+    if not presolve:
+        solver["presolve"] = False
     return {
         "name": name,
         "description": description,
@@ -41,7 +44,7 @@ def hcw(name, description, x0_m, v0_m_s, days, enforce_from_s=0, time_limit=600)
         "operations": dict(THESIS_RULES),
         "objective": "l1",
         "discretisation": {"scheme": "exact_zoh"},
-        "solver": {"time_limit_s": time_limit, "relative_gap": 1e-4, "threads": 2},
+        "solver": solver,
     }
 
 
@@ -66,20 +69,23 @@ def thesis_tables():
             f"Gazzino 2018, Table 4.2 (sec. 4.3.3, thesis text L4519-L4543): HCW at GEO, ideal 6 "
             f"thrusters, X0 = [0, 0, 60 km, 0, 0, 0] (outside the window), horizon 7 days, window "
             f"imposed only on [t1, tf] with t1 - t0 = {t1} day(s). Published: consumption "
-            f"{published_42[t1]} m/s (L1) (data/reference/thesis_tables.json, table_4_2).",
-            [0, 0, 60000], [0, 0, 0], 7, enforce_from_s=t1 * DAY))
+            f"{published_42[t1]} m/s (L1) (data/reference/thesis_tables.json, table_4_2). CBC "
+            f"presolve is off: with it, CBC 2.10.8 spends minutes in the root LP of these models.",
+            [0, 0, 60000], [0, 0, 0], 7, enforce_from_s=t1 * DAY, presolve=False))
     write("hcw_10km_infeasible", hcw(
         "hcw_10km_infeasible",
         "Gazzino 2018, sec. 4.3.3 (Fig. 4.10 discussion): X0 = [10 km, 0, 0, 0, 0, 0], 7 days, "
         "window enforced from t0: the thesis reports the problem infeasible (the drift cannot be "
-        "corrected before y leaves the window). Expected exit code 3.",
-        [10000, 0, 0], [0, 0, 0], 7, time_limit=300))
+        "corrected before y leaves the window). Expected exit code 3. CBC presolve is off (with "
+        "it, CBC 2.10.8 spends minutes in the root LP).",
+        [10000, 0, 0], [0, 0, 0], 7, time_limit=300, presolve=False))
     write("hcw_10km_relaxed_2d", hcw(
         "hcw_10km_relaxed_2d",
         "Gazzino 2018, sec. 4.3.3 (Fig. 4.10): the infeasible X0 = [10 km, 0, 0, 0, 0, 0] case "
         "becomes feasible when the window is relaxed on the first 2 days (t1 - t0 = 2 d, chosen "
-        "empirically in the thesis). No consumption is published.",
-        [10000, 0, 0], [0, 0, 0], 7, enforce_from_s=2 * DAY, time_limit=300))
+        "empirically in the thesis). No consumption is published. CBC presolve is off (with it, "
+        "CBC 2.10.8 spends minutes in the root LP).",
+        [10000, 0, 0], [0, 0, 0], 7, enforce_from_s=2 * DAY, time_limit=300, presolve=False))
     n = N_GEO
     write("hcw_periodic_no_thrust", hcw(
         "hcw_periodic_no_thrust",
@@ -88,8 +94,9 @@ def thesis_tables():
         [5000, 10000, -20000], [0, -10000 * n, 0], 7, time_limit=300))
 
 
-def geo(name, description, thrusters, disabled=(), time_limit=75, gap=0.01):
-    return {
+def geo(name, description, thrusters, disabled=(), time_limit=90, gap=0.01, encoding=None):
+    extra = {"transcription": {"encoding": encoding}} if encoding else {}
+    return dict({
         "name": name,
         "description": description,
         "model": {"type": "geo", "station_longitude_deg": 118, "epoch": "2034-01-01T00:00:00Z",
@@ -104,7 +111,7 @@ def geo(name, description, thrusters, disabled=(), time_limit=75, gap=0.01):
         "objective": "l1",
         "discretisation": {"scheme": "exact_zoh"},
         "solver": {"time_limit_s": time_limit, "relative_gap": gap, "threads": 2},
-    }
+    }, **extra)
 
 
 def geo_weeks():
@@ -116,12 +123,14 @@ def geo_weeks():
     write("geo_week_anzel4", geo(
         "geo_week_anzel4",
         common + "The four thesis (Anzel) thrusters NE, SE, NW, SW. Default scenario of `make "
-        "demo`: stops at a 1 % gap or after 75 s of solve (under 2 minutes in total on 2 cores).",
+        "demo`: stops at a 1 % gap or after 90 s of solve (under 2 minutes in total on 2 cores).",
         anzel))
     write("geo_week_ideal6", geo(
         "geo_week_ideal6",
-        common + "One thruster per face (+R, +T, +N, -R, -T, -N), thesis sec. 5.3.8.",
-        {"preset": "ideal6"}))
+        common + "One thruster per face (+R, +T, +N, -R, -T, -N), thesis sec. 5.3.8. Uses the "
+        "thesis encoding of the rules (same feasible schedules): with the tight encoding CBC "
+        "2.10.8 spends minutes in the root LP of this model. Allow ~3-5 minutes.",
+        {"preset": "ideal6"}, time_limit=300, encoding="thesis"))
     write("geo_week_anzel4_failed_ne", geo(
         "geo_week_anzel4_failed_ne",
         common + "Anzel thrusters with NE failed (disabled: forced off), thesis sec. 5.3.7.",

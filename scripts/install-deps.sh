@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages thrustsched needs, only when some are missing.
-# Uses apt-get when run as root, sudo otherwise; fails clearly if it can do neither.
+# Uses apt-get when run as root, sudo otherwise (asking for the password when
+# there is a terminal to ask on); fails clearly if it can do neither.
 set -euo pipefail
 
 PACKAGES=(
@@ -29,8 +30,12 @@ if [ "$(id -u)" -eq 0 ]; then
   SUDO=()
 elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
   SUDO=(sudo)
+elif command -v sudo >/dev/null 2>&1 && [ -t 0 ]; then
+  echo "install-deps: sudo will ask for your password to run apt-get"
+  SUDO=(sudo)
 else
-  echo "install-deps: error: not root and passwordless sudo is unavailable." >&2
+  echo "install-deps: error: not root, and sudo is unavailable (not installed, or it needs a" \
+       "password and there is no terminal to ask on)." >&2
   echo "install-deps: install these packages by hand: ${missing[*]}" >&2
   exit 1
 fi

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
-#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -205,6 +204,18 @@ TEST(Cli, ExportWritesModelFiles) {
   EXPECT_HAS(r.err, "must end in .mps or .lp");
   r = RunCli({"export", kScenarios + "serra_double_integrator_onoff.json", "/nonexistent/dir/m.mps"});
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  // The solve flags name their format: a mismatched extension is bad input,
+  // caught before any work.
+  r = RunCli({"solve", kScenarios + "serra_double_integrator_onoff.json", "--out", dir + "/s",
+              "--export-lp", dir + "/wrong.mps"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_HAS(r.err, "--export-lp");
+  EXPECT_FALSE(fs::exists(dir + "/wrong.mps"));
+  EXPECT_FALSE(fs::exists(dir + "/s/summary.json"));
+  r = RunCli({"solve", kScenarios + "serra_double_integrator_onoff.json", "--out", dir + "/s",
+              "--export-mps", dir + "/m.lp"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_HAS(r.err, "--export-mps");
   fs::remove_all(dir);
 }
 
@@ -232,36 +243,29 @@ TEST(Cli, NoSolutionWithinTheTimeLimitExitsFour) {
 }
 
 // Ctrl-C stops the solve like a time limit; the best schedule is checked and written.
+// The SIGINT is sent by the CLI to itself at its first incumbent (test hook
+// THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT, app/interrupt.h), so it always lands
+// mid-search whatever the machine's speed, and goes through the same watcher as
+// a real Ctrl-C. Without it the solve proves optimality (gap 0).
 TEST(Cli, SigintKeepsTheBestSchedule) {
   const std::string dir = TempDir("sigint");
-  const auto t0 = std::chrono::steady_clock::now();
   const RunResult r = RunProgram(
-      THRUSTSCHED_CLI,
-      {"solve", kTestData + "geo_day_small.json", "--out", dir, "--gap", "0", "--time-limit", "300"},
-      280.0, [](pid_t pid, const std::string& err_path) {
-        // Wait until the solve has started, then a little more, then interrupt.
-        for (int i = 0; i < 6000; ++i) {
-          if (ReadFile(err_path).find("solving with") != std::string::npos) break;
-          std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-        std::this_thread::sleep_for(std::chrono::seconds(4));
-        kill(pid, SIGINT);
-      });
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      "env", {"THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT=1", THRUSTSCHED_CLI, "solve",
+              kTestData + "geo_2day_5min.json", "--out", dir, "--gap", "0", "--time-limit", "250"},
+      280.0);
   ASSERT_TRUE(r.exited) << r.Describe();
-  EXPECT_LT(elapsed, 200.0);
+  EXPECT_EQ(r.exit_code, 0) << r.Describe();
   const json s = ReadJson(dir + "/summary.json");
   EXPECT_TRUE(s["interrupted"].get<bool>()) << r.Describe();
-  EXPECT_HAS(r.err, "interrupted");
-  if (s["status"] == "feasible" || s["status"] == "optimal") {
-    EXPECT_EQ(r.exit_code, 0);
-    EXPECT_TRUE(fs::exists(dir + "/schedule.csv"));
-    EXPECT_TRUE(s["check"].is_object());
-  } else {
-    EXPECT_EQ(s["status"], "no_solution");
-    EXPECT_EQ(r.exit_code, 4);
-  }
+  EXPECT_HAS(r.err, "interrupt");
+  EXPECT_HAS(r.out, "(interrupted)");
+  // Stopped before the proof: the incumbent is kept with its open gap.
+  EXPECT_EQ(s["status"], "feasible") << r.Describe();
+  EXPECT_GT(s["gap"].get<double>(), 0.0);
+  EXPECT_GT(s["n_burns"].get<int>(), 0);
+  EXPECT_TRUE(fs::exists(dir + "/schedule.csv"));
+  ASSERT_TRUE(s["check"].is_object());
+  EXPECT_TRUE(s["check"]["operational_ok"].get<bool>());
   fs::remove_all(dir);
 }
 

@@ -517,7 +517,12 @@ TEST(ScenarioParserRejects, NonFiniteNumbers) {
   EXPECT_HAS(TextErrorOf(t1), "not valid JSON");
   std::string t2 = text;
   t2.replace(t2.find("4850"), 4, "1e999");
-  EXPECT_HAS(TextErrorOf(t2), "scenario");
+  // The field and the literal are both named.
+  EXPECT_HAS(TextErrorOf(t2), "not valid JSON at scenario.spacecraft.mass_kg");
+  EXPECT_HAS(TextErrorOf(t2), "1e999");
+  std::string t3 = text;
+  t3.replace(t3.find("[1000"), 5, "[-1e400");
+  EXPECT_HAS(TextErrorOf(t3), "at scenario.initial_state.hcw_position_m[0]");
 }
 
 TEST(ScenarioParserRejects, EmptyThrusterSets) {

@@ -26,6 +26,7 @@ namespace {
 
 using ::testing::AnyOf;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::ThrowsMessage;
 using testing::Catalog;
 using testing::CatalogProblem;
@@ -334,6 +335,28 @@ TEST(CbcSolverTest, ParallelSolvesMatchSequentialOnes) {
       EXPECT_EQ(parallel[k].objective, sequential[k].objective);
     }
   }
+}
+
+// MILP solves share one CBC driver (see cbc_solver.h): a solve that waits for
+// it must still get its whole time limit, not "time limit before the solve
+// started".
+TEST(CbcSolverTest, WaitingForTheDriverDoesNotSpendTheTimeLimit) {
+  const LpData hard = RandomKnapsack(2000, 20, 7);  // not solved within 1 s
+  SolveOptions first;
+  first.time_limit_s = 1.5;
+  SolveOptions second;
+  second.time_limit_s = 1.0;  // shorter than the first solve's hold on the driver
+  SolveResult a, b;
+  std::thread ta([&] { a = MakeCbcSolver()->Solve(hard, first); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  std::thread tb([&] { b = MakeCbcSolver()->Solve(hard, second); });
+  ta.join();
+  tb.join();
+  EXPECT_TRUE(a.has_solution()) << a.detail;
+  EXPECT_THAT(b.detail, HasSubstr("waited"));
+  EXPECT_THAT(b.detail, Not(HasSubstr("before the solve started")));
+  EXPECT_TRUE(b.has_solution()) << b.detail;
+  EXPECT_LT(b.wall_seconds, 1.0 + 5.0);  // its own limit (+ CBC's root-LP overrun)
 }
 
 TEST(LpRelaxationTest, ParallelLpSolvesMatchSequentialOnes) {

@@ -339,8 +339,8 @@ TEST(MpsPitfallsTest, NamesWithSpacesAreSanitisedAndKeptUnique) {
                                              "_free", "x(2)", "OBJ_CONST_1", "tab_here"};
   EXPECT_EQ(cols, expected);
   EXPECT_EQ(ExportedRowNames(lp, false), (std::vector<std::string>{"row_1", "OBJ_1"}));
-  EXPECT_EQ(ExportedColumnNames(lp, true)[8], "C0000009");
-  EXPECT_EQ(ExportedRowNames(lp, true)[1], "R0000002");
+  EXPECT_EQ(ExportedColumnNames(lp, true)[8], "C000009");
+  EXPECT_EQ(ExportedRowNames(lp, true)[1], "R000002");
   const std::string text = ToMpsString(lp);
   EXPECT_THAT(text, HasSubstr("NAME          name_test  FREE\n"));
   for (const std::string& c : cols) EXPECT_THAT(text, HasSubstr("    " + c + "  "));
@@ -354,7 +354,7 @@ TEST(MpsPitfallsTest, NamesWithSpacesAreSanitisedAndKeptUnique) {
   // Obfuscation.
   MpsOptions o;
   o.obfuscate_names = true;
-  EXPECT_THAT(ToMpsString(lp, o), HasSubstr("C0000001"));
+  EXPECT_THAT(ToMpsString(lp, o), HasSubstr("C000001"));
   EXPECT_THAT(ToMpsString(lp, o), Not(HasSubstr("my_var")));
 }
 
@@ -396,7 +396,7 @@ TEST(MpsWriterTest, FixedMpsNeedsShortNames) {
   EXPECT_THAT([&] { ToMpsString(m.ToLpData(), fixed); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("'a_long_name' is longer")));
   fixed.obfuscate_names = true;
-  EXPECT_THAT(ToMpsString(m.ToLpData(), fixed), HasSubstr("C0000001"));
+  EXPECT_THAT(ToMpsString(m.ToLpData(), fixed), HasSubstr("C000001"));
 }
 
 TEST(MpsWriterTest, StreamAndStringAgree) {
@@ -519,6 +519,24 @@ TEST(ModelIoErrorsTest, InvalidProblemIsRejected) {
               ThrowsMessage<std::invalid_argument>(HasSubstr("WriteMpsFile")));
   EXPECT_THAT([&] { WriteLpFile(TempPath("bad.lp"), lp); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("WriteLpFile")));
+}
+
+// Integer bounds are written rounded inward; bounds that hold no integer
+// would give LO 1 / UP 0, which cbc and glpsol reject as a malformed file.
+TEST(ModelIoErrorsTest, IntegerColumnWithoutIntegerValueIsRejectedByName) {
+  Model m("no_integer");
+  const Variable x = m.AddInteger(0.2, 0.8, "x_frac");
+  const Variable y = m.AddInteger(-0.5, 0.5, "y_zero");  // holds 0: fine
+  m.AddConstraint(LinearExpr(x) + y, 0, 2, "r");
+  m.Minimize(LinearExpr(x));
+  const LpData lp = m.ToLpData();
+  EXPECT_THAT([&] { ToMpsString(lp); },
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("integer column 'x_frac' has no integer value within its bounds [0.2")));
+  EXPECT_THAT([&] { ToLpString(lp); }, ThrowsMessage<std::invalid_argument>(HasSubstr("x_frac")));
+  LpData ok = lp;
+  ok.col_upper[0] = 1.0;
+  EXPECT_THAT(ToMpsString(ok), HasSubstr("x_frac"));  // [1, 1]: written
 }
 
 }  // namespace

@@ -1,0 +1,64 @@
+// Ctrl-C for long runs (`solve`, `simulate`): the first SIGINT raises a flag
+// that the solver polls (the solve stops as at a time limit and keeps its best
+// schedule), a second one ends the program at once (exit 130).
+//
+//   {
+//     InterruptWatcher watcher;                  // SIGINT now goes to the flag
+//     options.interrupt = watcher.flag();
+//     options.progress = [](const milp::SolveProgress& p) { InterruptForTestAtIncumbent(p); };
+//     result = solver.Solve(lp, options);
+//     if (watcher.interrupted()) ...
+//   }                                            // SIGINT handling restored
+//
+// Why not a plain signal handler: CBC's driver installs its own SIGINT handler
+// while it runs (and swallows the signal in some phases). Instead SIGINT is
+// blocked in every thread (the solver's threads inherit the mask) and a
+// watcher thread takes it with sigtimedwait. A Ctrl-C still pending when the
+// watcher ends is consumed (it counts as an interrupt) instead of killing the
+// program while it writes its results.
+#ifndef THRUSTSCHED_APP_INTERRUPT_H_
+#define THRUSTSCHED_APP_INTERRUPT_H_
+
+#include <signal.h>
+
+#include <atomic>
+#include <thread>
+
+#include "milp/solver.h"
+
+namespace thrustsched::app {
+
+class InterruptWatcher {
+ public:
+  /// Clears the flag, blocks SIGINT in the calling thread (threads it starts
+  /// later inherit that) and starts the watcher. One watcher at a time.
+  InterruptWatcher();
+  ~InterruptWatcher();
+  InterruptWatcher(const InterruptWatcher&) = delete;
+  InterruptWatcher& operator=(const InterruptWatcher&) = delete;
+
+  /// The flag to hand to milp::SolveOptions::interrupt; it outlives the watcher.
+  static const std::atomic<bool>* flag();
+  /// A SIGINT was received since this watcher started.
+  static bool interrupted();
+
+ private:
+  void Watch();
+
+  sigset_t set_{};
+  sigset_t old_{};
+  bool blocked_ = false;
+  std::atomic<bool> done_{false};
+  std::thread thread_;
+};
+
+/// Test hook, for a deterministic Ctrl-C test: when the environment variable
+/// THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT is set, the first new incumbent
+/// reported by `p` sends SIGINT to this process and waits (up to 10 s) until
+/// the watcher has raised the flag, so the solve is interrupted right there,
+/// mid-search, through the same path as a real Ctrl-C. Otherwise does nothing.
+void InterruptForTestAtIncumbent(const milp::SolveProgress& p);
+
+}  // namespace thrustsched::app
+
+#endif  // THRUSTSCHED_APP_INTERRUPT_H_

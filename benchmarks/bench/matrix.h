@@ -1,0 +1,103 @@
+// The benchmark matrix of thrustsched-bench: which scenario is run with which
+// scheme, formulation, encoding, horizon, step, rules and solver settings,
+// grouped by the sections of the report (issue 6, "What it must show").
+//
+//   bench::MatrixOptions o;
+//   o.quick = false;
+//   o.scenario_dirs = {"data/scenarios", "benchmarks/bench/scenarios"};
+//   std::vector<bench::CaseSpec> cases = bench::BuildMatrix(o);   // filtered by o.scenario_glob
+//
+// Every case names a scenario file (parsed by app::LoadScenario's parser)
+// and a JSON merge patch (RFC 7386) applied to it before parsing, so that
+// horizon, step, scheme, formulation, encoding and rules changes go through
+// the same validation as a user's scenario file.
+#ifndef THRUSTSCHED_BENCHMARKS_BENCH_MATRIX_H_
+#define THRUSTSCHED_BENCHMARKS_BENCH_MATRIX_H_
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "milp/solver.h"
+
+namespace thrustsched::bench {
+
+/// Report sections (also the `section` column of results.csv).
+inline constexpr const char* kSectionTargets = "targets";
+inline constexpr const char* kSectionAccuracy = "accuracy";
+inline constexpr const char* kSectionCost = "cost";
+inline constexpr const char* kSectionSchemeSolve = "scheme_solve";
+inline constexpr const char* kSectionFormulation = "formulation";
+inline constexpr const char* kSectionAblation = "ablation";
+inline constexpr const char* kSectionScalingHorizon = "scaling_horizon";
+inline constexpr const char* kSectionScalingStep = "scaling_step";
+inline constexpr const char* kSectionOperations = "operations";
+
+enum class CaseKind {
+  kAccuracy,    // every scheme vs the reference on each step of `accuracy_steps_s`
+  kDiscretise,  // discretise only (and the error vs the reference)
+  kBuild,       // discretise + build (sizes, build time, memory)
+  kSolve,       // + LP relaxation + MILP solve + independent check
+};
+
+struct CaseSpec {
+  std::string id;             // unique; also the file stem under DIR/runs/
+  std::string section;
+  std::string scenario;       // scenario name (file stem), matched by --scenarios
+  std::string scenario_path;
+  nlohmann::json patch = nlohmann::json::object();  // merge patch for the scenario JSON
+  std::string variant;        // short human label ("rules off", "dual LP", ...)
+  CaseKind kind = CaseKind::kSolve;
+  int repeats = 1;
+
+  // Solver settings (kSolve).
+  double time_limit_s = 60.0;
+  double relative_gap = 1e-4;
+  int threads = 1;
+  milp::LpAlgorithm lp_algorithm = milp::LpAlgorithm::kPrimal;
+  bool use_objective_step = true;  // pass ScheduleMilp::objective_step() to the solver
+  bool lp_relaxation = true;       // also solve the root LP alone (lp_bound, lp_s)
+  bool error_metrics = true;       // max_rel_err_* against the reference discretisation
+  bool external = false;           // cross-check the exported MPS with cbc / glpsol
+  double external_time_limit_s = 60.0;
+
+  // kAccuracy: steps to compare (s) and schemes (empty = all but the reference).
+  std::vector<double> accuracy_steps_s;
+
+  // Published figure this case reproduces (NaN if none) and its source.
+  double published = std::numeric_limits<double>::quiet_NaN();
+  std::string published_source;
+  std::string note;  // written to the `note` column
+};
+
+struct MatrixOptions {
+  bool quick = false;
+  std::vector<std::string> scenario_dirs;  // searched in order for <name>.json
+  std::string scenario_glob = "*";         // fnmatch on the scenario name
+  int threads = 2;                         // CBC threads of matrix solves (targets fixed)
+  double time_limit_s = 60.0;              // per matrix solve (targets fixed)
+  int timing_repeats = 3;                  // repeats of the timing-target cases
+};
+
+/// The cases, in run order. Scenario files are located but not parsed.
+/// @throws std::invalid_argument if a needed scenario file is missing from
+///         every directory (naming it), or an option is out of range.
+std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options);
+
+/// Published thesis figures used by the matrix and the report (value, source).
+struct Published {
+  double value;
+  const char* source;
+};
+/// Table 4.1 (horizon days 1..8) and Table 4.2 (t1 days 1..7), in m/s (L1).
+Published Table41(int horizon_days);
+Published Table42(int t1_days);
+
+/// RFC 7386 JSON merge patch.
+nlohmann::json MergePatch(nlohmann::json target, const nlohmann::json& patch);
+
+}  // namespace thrustsched::bench
+
+#endif  // THRUSTSCHED_BENCHMARKS_BENCH_MATRIX_H_

@@ -1,0 +1,55 @@
+// report.md and the SVG plots of thrustsched-bench, generated from the rows
+// of results.csv alone (plus the progress traces in DIR/runs/ when present),
+// so `thrustsched-bench --report-only DIR` regenerates them after a run.
+//
+//   bench::ReportMeta meta = bench::CollectMeta(argc, argv, /*quick=*/false);
+//   bench::WriteMetaJson("out/meta.json", meta);
+//   bench::WriteReport("out", bench::ReadResultsCsv("out/results.csv"), meta);
+//
+// Sections (headings the test suite checks): "## Targets",
+// "## 1. Accuracy", "## 2. Cost per scheme", "## 3. Formulations and encodings",
+// "## 4. Scaling", "## 5. Operational constraints", "## Method and definitions",
+// "## Not run or skipped".
+#ifndef THRUSTSCHED_BENCHMARKS_BENCH_REPORT_H_
+#define THRUSTSCHED_BENCHMARKS_BENCH_REPORT_H_
+
+#include <string>
+#include <vector>
+
+#include "benchmarks/bench/results.h"
+
+namespace thrustsched::bench {
+
+struct ReportMeta {
+  std::string command;         // command line as run
+  std::string date_utc;        // ISO 8601
+  std::string machine;         // CPU model, cores, memory, kernel
+  std::string load_average;    // /proc/loadavg at start
+  std::string git_revision;    // short hash (+ "-dirty"), or "unknown"
+  std::string solver;          // CBC/CLP versions linked
+  std::string external;        // versions of the cbc and glpsol programs found
+  std::string build_type;      // CMAKE_BUILD_TYPE of the tool
+  bool quick = false;
+  int threads = 0;
+  double time_limit_s = 0.0;
+  std::string scenario_glob;
+  double total_wall_s = 0.0;
+};
+
+/// Machine, date, versions, command line.
+ReportMeta CollectMeta(int argc, char** argv, bool quick);
+/// @throws std::runtime_error naming the path on I/O failure.
+void WriteMetaJson(const std::string& path, const ReportMeta& meta);
+ReportMeta ReadMetaJson(const std::string& path);
+
+/// Writes dir/report.md and the plots (dir/*.svg via gnuplot, scripts and
+/// data dir/plots/*.gp, *.dat; skipped with a note if gnuplot is missing).
+/// @throws std::runtime_error if report.md cannot be written.
+void WriteReport(const std::string& dir, const std::vector<Row>& rows, const ReportMeta& meta);
+
+/// Median of the finite values (NaN if none).
+double Median(std::vector<double> values);
+
+}  // namespace thrustsched::bench
+
+#endif  // THRUSTSCHED_BENCHMARKS_BENCH_REPORT_H_

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The set-up shared by `make demo` and `make test`: install the missing Debian
+# packages (scripts/install-deps.sh), configure a Release build and build it.
+#   scripts/setup.sh [BUILD_DIR (default build)] [JOBS (default 2)]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+jobs=${2:-2}
+bash scripts/install-deps.sh
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build" -j "$jobs"

@@ -1,0 +1,171 @@
+// Runs `thrustsched-bench --quick` into a temporary directory and checks
+// that results.csv has every contract column, that report.md has every
+// section, and that the numbers in it are right where an independent value is
+// known: the thesis Table 4.1 one-day optimum (one 5-min slot, 0.016392 m/s),
+// the textbook orders of the schemes on HCW, the external solvers' objective
+// and the independent checker's verdict. One test (one run of the binary):
+// ctest runs each TEST in its own process.
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "benchmarks/bench/results.h"
+
+namespace thrustsched::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int RunCommand(const std::string& cmd) {
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+const Row* Find(const std::vector<Row>& rows, const std::map<std::string, std::string>& match) {
+  for (const Row& r : rows) {
+    bool ok = true;
+    for (const auto& [k, v] : match) ok = ok && r.Get(k) == v;
+    if (ok) return &r;
+  }
+  return nullptr;
+}
+
+TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
+  const fs::path dir = fs::temp_directory_path() / ("thrustsched_bench_quick_" +
+                                                    std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string log = (dir.string() + ".log");
+  ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --quick --out '" + dir.string() +
+                "' > '" + log + "' 2>&1"),
+            0)
+      << ReadAll(log);
+
+  // results.csv: the header has every contract column.
+  std::ifstream csv(dir / "results.csv");
+  std::string header;
+  ASSERT_TRUE(std::getline(csv, header));
+  const std::vector<std::string> cols = SplitCsvLine(header);
+  const std::set<std::string> col_set(cols.begin(), cols.end());
+  for (const std::string& c : ContractColumns()) EXPECT_TRUE(col_set.count(c)) << "column " << c;
+  const std::vector<Row> rows = ReadResultsCsv((dir / "results.csv").string());
+  ASSERT_GT(rows.size(), 20u);
+  for (const Row& r : rows) {
+    EXPECT_NE(r.Get("status"), "error") << r.Get("case_id") << ": " << r.Get("note");
+    EXPECT_NE(r.Get("status"), "crashed") << r.Get("case_id");
+    EXPECT_NE(r.Get("status"), "killed") << r.Get("case_id");
+  }
+
+  // Every scheme appears in the accuracy study, on both models.
+  for (const char* model : {"hcw", "geo"}) {
+    for (const char* scheme : {"exact_zoh", "frozen_start", "frozen_mid", "hermite_simpson", "rk4",
+                               "trapezoid", "euler"}) {
+      EXPECT_NE(Find(rows, {{"section", "accuracy"}, {"model", model}, {"scheme", scheme}}),
+                nullptr)
+          << model << " " << scheme;
+    }
+  }
+  // Observed one-step orders on HCW (time-invariant, exact reference):
+  // RK4 / Hermite-Simpson Phi p+1 = 5, Gamma p = 4; trapezoid 3 / 2; Euler 2 / 1.
+  const std::map<std::string, std::pair<double, double>> orders = {
+      {"rk4", {5, 4}}, {"hermite_simpson", {5, 4}}, {"trapezoid", {3, 2}}, {"euler", {2, 1}}};
+  for (const auto& [scheme, o] : orders) {
+    const Row* r = Find(rows, {{"section", "accuracy"}, {"model", "hcw"}, {"scheme", scheme}});
+    ASSERT_NE(r, nullptr) << scheme;
+    EXPECT_NEAR(r->Num("observed_order_phi"), o.first, 0.15) << scheme;
+    EXPECT_NEAR(r->Num("observed_order_gamma"), o.second, 0.15) << scheme;
+  }
+  // exact_zoh on HCW is the exact exponential: at the reference's floor.
+  const Row* ez = Find(rows, {{"section", "accuracy"}, {"model", "hcw"}, {"scheme", "exact_zoh"}});
+  ASSERT_NE(ez, nullptr);
+  EXPECT_LT(ez->Num("max_rel_err_phi"), 1e-11);
+
+  // Table 4.1, one day: optimum = one 5-min slot of an ideal thruster (thesis 0.0164),
+  // in all four formulation x encoding combinations.
+  const double slot = 0.265 / 4850 * 300;
+  for (const char* f : {"sparse", "condensed"}) {
+    for (const char* e : {"tight", "thesis"}) {
+      const Row* r = Find(rows, {{"section", "formulation"}, {"scenario", "hcw_table41_1d"},
+                                 {"formulation", f}, {"encoding", e}});
+      ASSERT_NE(r, nullptr) << f << " " << e;
+      EXPECT_EQ(r->Get("status"), "optimal") << f << " " << e;
+      EXPECT_NEAR(r->Num("objective"), slot, 1e-9) << f << " " << e;
+      EXPECT_NEAR(r->Num("consumption_l1_m_s"), slot, 1e-9);
+      EXPECT_NEAR(r->Num("ratio"), slot / 0.0164, 1e-6);
+      EXPECT_LE(r->Num("lp_bound"), r->Num("objective") + 1e-9);
+      EXPECT_EQ(r->Get("operational_ok"), "1");
+      EXPECT_LE(r->Num("max_window_violation_nodes"), 1e-3 * 36800);
+      EXPECT_GT(r->Num("n_binaries"), 0);
+      EXPECT_GT(r->Num("peak_rss_mb"), 1.0);
+    }
+  }
+  // The condensed formulation has more nonzeros than the sparse one (O(N^2)).
+  EXPECT_GT(Find(rows, {{"section", "formulation"}, {"formulation", "condensed"}})->Num("n_nonzeros"),
+            Find(rows, {{"section", "formulation"}, {"formulation", "sparse"}})->Num("n_nonzeros"));
+  // The external cross-check, where the programs are installed, finds the same optimum.
+  const Row* x = Find(rows, {{"section", "formulation"}, {"scenario", "hcw_table41_1d"},
+                             {"formulation", "sparse"}, {"encoding", "tight"}});
+  ASSERT_NE(x, nullptr);
+  for (const char* p : {"cbc", "glpsol"}) {
+    const std::string st = x->Get(std::string("ext_") + p + "_status");
+    EXPECT_FALSE(st.empty()) << p;
+    if (st != "not installed") {
+      EXPECT_NEAR(x->Num(std::string("ext_") + p + "_objective"), slot, 1e-6) << p << " " << st;
+    }
+  }
+  // Operational rules off cannot cost more; a 10-min minimum burn is two slots here.
+  const Row* off = Find(rows, {{"section", "operations"}, {"variant", "rules_off"}});
+  ASSERT_NE(off, nullptr);
+  EXPECT_LE(off->Num("objective"), slot + 1e-9);
+  // GEO solves are replayed through the nonlinear simulator.
+  const Row* geo = Find(rows, {{"section", "scheme_solve"}, {"scheme", "hermite_simpson"}});
+  ASSERT_NE(geo, nullptr);
+  EXPECT_TRUE(geo->Has("max_window_violation_nonlinear_deg"));
+  EXPECT_EQ(geo->Get("window_unit"), "deg");
+
+  // report.md: every section, and the quick-mode banner.
+  const std::string report = ReadAll((dir / "report.md").string());
+  for (const char* h : {"# thrustsched-bench report", "## Targets", "## 1. Accuracy",
+                        "## 2. Cost per scheme", "## 3. Formulations and encodings",
+                        "### 3.1 Design choices", "### 3.2 Cross-check with other solvers",
+                        "## 4. Scaling", "## 5. Operational constraints",
+                        "## Method and definitions", "## Not run or skipped",
+                        "## Columns of results.csv", "Quick mode"}) {
+    EXPECT_NE(report.find(h), std::string::npos) << "missing: " << h;
+  }
+  EXPECT_NE(report.find("| hcw_table41_1d | sparse | tight |"), std::string::npos);
+  // The report can be regenerated from the CSV alone.
+  fs::remove(dir / "report.md");
+  ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --report-only --out '" +
+                dir.string() + "' > '" + log + "' 2>&1"),
+            0)
+      << ReadAll(log);
+  EXPECT_EQ(ReadAll((dir / "report.md").string()), report);
+  // Bad input: exit code 2.
+  EXPECT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --quick --threads 0 > /dev/null 2>&1"),
+            2);
+  EXPECT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH +
+                "' --quick --scenarios no_such_scenario --out '" + dir.string() +
+                "/x' > /dev/null 2>&1"),
+            2);
+  fs::remove_all(dir);
+  fs::remove(log);
+}
+
+}  // namespace
+}  // namespace thrustsched::bench

@@ -1,0 +1,733 @@
+#include "transcription/long_horizon.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <sstream>
+#include <stdexcept>
+
+#include "dynamics/geo_model.h"
+#include "dynamics/propagation.h"
+#include "transcription/schedule_milp.h"
+
+namespace thrustsched::transcription {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+constexpr double kDirectionTolerance = 1e-6;
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+double CpuSince(std::clock_t c0) {
+  return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+}
+
+std::string Num(double v) {
+  std::ostringstream os;
+  os.precision(12);
+  os << v;
+  return os.str();
+}
+
+bool Fail(std::string* error, const std::string& message) {
+  if (error != nullptr) *error = message;
+  return false;
+}
+
+// True if `value` is an integer multiple of `step` (relative 1e-9).
+bool Divides(double step, double value) {
+  const double r = value / step;
+  return std::abs(r - std::round(r)) <= 1e-9 * std::max(1.0, r);
+}
+
+int Steps(double step, double value) { return static_cast<int>(std::llround(value / step)); }
+
+bool Interrupted(const milp::SolveOptions& o) {
+  return o.interrupt != nullptr && o.interrupt->load();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Names.
+
+std::string_view ToString(HorizonMode mode) {
+  return mode == HorizonMode::kFixed ? "fixed" : "receding";
+}
+
+HorizonMode ParseHorizonMode(std::string_view name) {
+  if (name == "fixed") return HorizonMode::kFixed;
+  if (name == "receding") return HorizonMode::kReceding;
+  throw std::invalid_argument("horizon mode must be \"fixed\" or \"receding\", got \"" +
+                              std::string(name) + "\"");
+}
+
+std::string_view ToString(Fallback fallback) {
+  switch (fallback) {
+    case Fallback::kNone:
+      return "none";
+    case Fallback::kSoftWindow:
+      return "soft_window";
+    case Fallback::kSoftWindowFreeTerminal:
+      return "soft_window_free_terminal";
+    case Fallback::kZeroThrust:
+      return "zero_thrust";
+  }
+  return "unknown";
+}
+
+Fallback ParseFallback(std::string_view name) {
+  for (Fallback f : {Fallback::kNone, Fallback::kSoftWindow, Fallback::kSoftWindowFreeTerminal,
+                     Fallback::kZeroThrust}) {
+    if (name == ToString(f)) return f;
+  }
+  throw std::invalid_argument(
+      "fallback must be one of none, soft_window, soft_window_free_terminal, zero_thrust; got \"" +
+      std::string(name) + "\"");
+}
+
+// ---------------------------------------------------------------------------
+// Thruster geometry.
+
+int OppositeThruster(const dynamics::ThrusterSet& thrusters, int thruster) {
+  if (thruster < 0 || thruster >= thrusters.size()) {
+    throw std::invalid_argument("OppositeThruster: thruster index " + std::to_string(thruster) +
+                                " out of range (0.." + std::to_string(thrusters.size() - 1) + ")");
+  }
+  const Eigen::Vector3d d = thrusters.thruster(thruster).direction;
+  int best = -1;
+  double best_r = kInf;
+  for (int j = 0; j < thrusters.size(); ++j) {
+    if (j == thruster) continue;
+    const Eigen::Vector3d s = d + thrusters.thruster(j).direction;
+    if (std::abs(s(1)) > kDirectionTolerance || std::abs(s(2)) > kDirectionTolerance) continue;
+    if (std::abs(s(0)) < best_r) {
+      best_r = std::abs(s(0));
+      best = j;
+    }
+  }
+  if (best < 0) {
+    throw std::invalid_argument("OppositeThruster: no thruster is diametrically opposite to " +
+                                thrusters.thruster(thruster).name +
+                                " (none has its along-track and normal components reversed)");
+  }
+  return best;
+}
+
+ThrusterFaces FacesOf(const dynamics::Thruster& thruster) {
+  const Eigen::Vector3d& d = thruster.direction;
+  ThrusterFaces f;
+  f.north = d(2) < -kDirectionTolerance;
+  f.south = d(2) > kDirectionTolerance;
+  f.east = d(1) < -kDirectionTolerance;
+  f.west = d(1) > kDirectionTolerance;
+  return f;
+}
+
+Controllability CheckControllability(const dynamics::ThrusterSet& thrusters,
+                                     const std::vector<bool>& available) {
+  if (static_cast<int>(available.size()) != thrusters.size()) {
+    throw std::invalid_argument("CheckControllability: available has " +
+                                std::to_string(available.size()) + " entries for " +
+                                std::to_string(thrusters.size()) + " thrusters");
+  }
+  bool plus_n = false, minus_n = false, plus_t = false, minus_t = false;
+  std::string names;
+  for (int i = 0; i < thrusters.size(); ++i) {
+    if (!available[i]) continue;
+    const Eigen::Vector3d& d = thrusters.thruster(i).direction;
+    plus_n = plus_n || d(2) > kDirectionTolerance;
+    minus_n = minus_n || d(2) < -kDirectionTolerance;
+    plus_t = plus_t || d(1) > kDirectionTolerance;
+    minus_t = minus_t || d(1) < -kDirectionTolerance;
+    names += (names.empty() ? "" : ", ") + thrusters.thruster(i).name;
+  }
+  std::vector<std::string> missing;
+  if (!plus_n) missing.push_back("north (+N)");
+  if (!minus_n) missing.push_back("south (-N)");
+  if (!plus_t) missing.push_back("east (+T)");
+  if (!minus_t) missing.push_back("west (-T)");
+  Controllability c;
+  if (missing.empty()) return c;
+  c.controllable = false;
+  c.reason = "uncontrollable: no available thruster pushes ";
+  for (size_t k = 0; k < missing.size(); ++k) c.reason += (k ? ", " : "") + missing[k];
+  c.reason += "; available: " + (names.empty() ? std::string("none") : names);
+  return c;
+}
+
+// ---------------------------------------------------------------------------
+// Options.
+
+int LongHorizonOptions::num_cycles() const {
+  if (!IsValid(nullptr)) return 0;
+  const double applied = mode == HorizonMode::kFixed ? cycle_s : control_s;
+  return static_cast<int>(std::ceil(duration_s / applied - 1e-9));
+}
+
+bool LongHorizonOptions::IsValid(std::string* error) const {
+  if (!std::isfinite(start_s)) return Fail(error, "long_horizon.start_s must be finite, got " + Num(start_s));
+  auto positive = [&](double v, const char* name) {
+    if (!std::isfinite(v) || v <= 0.0) {
+      return Fail(error, std::string("long_horizon.") + name + " must be finite and > 0, got " + Num(v));
+    }
+    return true;
+  };
+  if (!positive(duration_s, "duration_s") || !positive(cycle_s, "cycle_s") ||
+      !positive(step_s, "step_s")) {
+    return false;
+  }
+  if (!Divides(step_s, cycle_s)) {
+    return Fail(error, "long_horizon.step_s " + Num(step_s) + " s does not divide cycle_s " +
+                           Num(cycle_s) + " s");
+  }
+  if (!Divides(step_s, duration_s)) {
+    return Fail(error, "long_horizon.step_s " + Num(step_s) + " s does not divide duration_s " +
+                           Num(duration_s) + " s");
+  }
+  if (mode == HorizonMode::kReceding) {
+    if (!positive(control_s, "control_s")) return false;
+    if (!(control_s < cycle_s)) {
+      return Fail(error, "long_horizon.control_s " + Num(control_s) +
+                             " s must be shorter than cycle_s " + Num(cycle_s) +
+                             " s in receding mode");
+    }
+    if (!Divides(step_s, control_s)) {
+      return Fail(error, "long_horizon.step_s " + Num(step_s) + " s does not divide control_s " +
+                             Num(control_s) + " s");
+    }
+  }
+  const double applied = mode == HorizonMode::kFixed ? cycle_s : control_s;
+  if (duration_s / applied > 100000.0) {
+    return Fail(error, "long_horizon: duration_s / cycle length = " + Num(duration_s / applied) +
+                           " cycles; at most 100000 are allowed");
+  }
+  for (size_t k = 0; k < outages.size(); ++k) {
+    const ThrusterOutage& o = outages[k];
+    if (std::isnan(o.from_s) || std::isnan(o.until_s) || !(o.until_s > o.from_s)) {
+      return Fail(error, "long_horizon.outages[" + std::to_string(k) +
+                             "] must have from_s < until_s, got [" + Num(o.from_s) + ", " +
+                             Num(o.until_s) + ")");
+    }
+  }
+  if (!std::isfinite(soft_penalty) || soft_penalty <= 0.0) {
+    return Fail(error, "long_horizon.soft_penalty must be finite and > 0, got " + Num(soft_penalty));
+  }
+  if (replay_samples_per_step < 1 || replay_samples_per_step > 1000) {
+    return Fail(error, "long_horizon.replay_samples_per_step must be in [1, 1000], got " +
+                           std::to_string(replay_samples_per_step));
+  }
+  if (solve.check.nonlinear) {
+    return Fail(error,
+                "long_horizon.solve.check.nonlinear must be null (the cycle replay is done from "
+                "the true state by the long-horizon driver)");
+  }
+  std::string e;
+  if (!solve.solve.IsValid(&e)) return Fail(error, "long_horizon.solve: " + e);
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// Statistics.
+
+Distribution Distribute(std::vector<double> values) {
+  values.erase(std::remove_if(values.begin(), values.end(),
+                              [](double v) { return !std::isfinite(v); }),
+               values.end());
+  Distribution d;
+  d.count = static_cast<int>(values.size());
+  if (values.empty()) return d;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  d.median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  const size_t rank = static_cast<size_t>(std::ceil(0.9 * static_cast<double>(n)));
+  d.p90 = values[std::max<size_t>(rank, 1) - 1];
+  d.max = values.back();
+  double s = 0.0;
+  for (double v : values) s += v;
+  d.mean = s / static_cast<double>(n);
+  return d;
+}
+
+LongHorizonSummary Summarise(const std::vector<CycleRecord>& cycles,
+                             const dynamics::ThrusterSet& thrusters) {
+  LongHorizonSummary s;
+  const int m = thrusters.size();
+  s.on_time_s.assign(m, 0.0);
+  s.thrust_days.assign(m, 0.0);
+  std::vector<double> solve, gap, wall, cpu;
+  for (const CycleRecord& c : cycles) {
+    ++s.cycles;
+    s.simulated_s += c.applied_end_s - c.start_s;
+    s.consumption_l1_m_s += c.consumption_l1_m_s;
+    s.delta_v_m_s += c.delta_v_m_s;
+    s.propellant_kg += c.propellant_kg;
+    s.normal_delta_v_m_s += c.normal_delta_v_m_s;
+    s.burns += static_cast<int>(c.burns.size());
+    for (int i = 0; i < m && i < static_cast<int>(c.on_time_s.size()); ++i) {
+      s.on_time_s[i] += c.on_time_s[i];
+    }
+    s.time_outside_window_s += c.time_outside_window_s;
+    s.max_abs_lat_deg = std::max(s.max_abs_lat_deg, c.max_abs_lat_deg);
+    s.max_abs_lon_deg = std::max(s.max_abs_lon_deg, c.max_abs_lon_deg);
+    if (c.max_window_violation_deg > s.max_window_violation_deg) {
+      s.max_window_violation_deg = c.max_window_violation_deg;
+      s.worst_time_s = c.worst_time_s;
+    }
+    switch (c.fallback) {
+      case Fallback::kNone:
+        break;
+      case Fallback::kSoftWindow:
+        ++s.fallback_soft_window;
+        break;
+      case Fallback::kSoftWindowFreeTerminal:
+        ++s.fallback_free_terminal;
+        break;
+      case Fallback::kZeroThrust:
+        ++s.fallback_zero_thrust;
+        break;
+    }
+    if (!c.controllable) ++s.uncontrollable_cycles;
+    if (c.status == milp::SolveStatus::kFeasible) ++s.time_limited_cycles;
+    s.rules_ok = s.rules_ok && c.rules_ok;
+    solve.push_back(c.solve_seconds);
+    gap.push_back(c.gap);
+    wall.push_back(c.wall_seconds);
+    cpu.push_back(c.cpu_seconds);
+    s.wall_seconds_total += c.wall_seconds;
+    s.cpu_seconds_total += c.cpu_seconds;
+  }
+  for (int i = 0; i < m; ++i) {
+    s.thrust_days[i] = s.on_time_s[i] / 86400.0;
+    const ThrusterFaces f = FacesOf(thrusters.thruster(i));
+    if (f.north) s.north_days += s.thrust_days[i];
+    if (f.south) s.south_days += s.thrust_days[i];
+    if (f.east) s.east_days += s.thrust_days[i];
+    if (f.west) s.west_days += s.thrust_days[i];
+  }
+  s.solve_seconds = Distribute(solve);
+  s.gap = Distribute(gap);
+  s.wall_seconds = Distribute(wall);
+  s.cpu_seconds = Distribute(cpu);
+  return s;
+}
+
+// ---------------------------------------------------------------------------
+// The driver.
+
+LongHorizonSimulation::LongHorizonSimulation(ScheduleProblem base, LongHorizonOptions options,
+                                             std::shared_ptr<const dynamics::GeoSimulator> simulator,
+                                             std::shared_ptr<const milp::Solver> solver)
+    : base_(std::move(base)),
+      options_(std::move(options)),
+      simulator_(std::move(simulator)),
+      solver_(std::move(solver)) {
+  std::string err;
+  if (!options_.IsValid(&err)) throw std::invalid_argument(err);
+  if (!simulator_) throw std::invalid_argument("LongHorizonSimulation: simulator is null");
+  if (!solver_) throw std::invalid_argument("LongHorizonSimulation: solver is null");
+  if (!base_.model) throw std::invalid_argument("LongHorizonSimulation: base.model is null");
+  const auto* geo = dynamic_cast<const dynamics::GeoLinearModel*>(base_.model.get());
+  if (geo == nullptr) {
+    throw std::invalid_argument("LongHorizonSimulation: base.model must be the GEO model, got '" +
+                                std::string(base_.model->name()) + "'");
+  }
+  if (geo->options().station_longitude_deg != simulator_->options().station_longitude_deg ||
+      geo->options().epoch != simulator_->options().epoch) {
+    throw std::invalid_argument(
+        "LongHorizonSimulation: the simulator's station (" +
+        Num(simulator_->options().station_longitude_deg) + " deg, epoch " +
+        simulator_->options().epoch + ") differs from the model's (" +
+        Num(geo->options().station_longitude_deg) + " deg, epoch " + geo->options().epoch + ")");
+  }
+  if (base_.input_mode != InputMode::kOnOff) {
+    throw std::invalid_argument("LongHorizonSimulation: input_mode must be on-off");
+  }
+  // The base grid is replaced; give it one valid cycle grid so that IsValid
+  // judges the remaining fields.
+  base_.grid = dynamics::UniformGrid(options_.start_s, options_.start_s + options_.step_s, 1);
+  base_.terminal = TerminalSpec{};
+  base_.window.soft = false;
+  base_.window.enforce_from_s = -kInf;
+  if (!base_.IsValid(&err)) throw std::invalid_argument("LongHorizonSimulation: base problem: " + err);
+  if (!base_.window.enabled()) {
+    throw std::invalid_argument("LongHorizonSimulation: base.window must constrain lat and lon");
+  }
+  for (int i = 0; i < base_.thrusters.size(); ++i) {
+    if (base_.history.is_on(i)) {
+      throw std::invalid_argument("LongHorizonSimulation: base.history.on_for_s[" +
+                                  std::to_string(i) +
+                                  "] > 0 is not supported (start with every thruster off)");
+    }
+  }
+  for (size_t k = 0; k < options_.outages.size(); ++k) {
+    const int t = options_.outages[k].thruster;
+    if (t < 0 || t >= base_.thrusters.size()) {
+      throw std::invalid_argument("long_horizon.outages[" + std::to_string(k) + "].thruster " +
+                                  std::to_string(t) + " is not a thruster index (0.." +
+                                  std::to_string(base_.thrusters.size() - 1) + ")");
+    }
+  }
+  if (options_.mode == HorizonMode::kFixed || options_.terminal_in_receding) {
+    TerminalSpec t = options_.terminal;
+    ScheduleProblem probe = base_;
+    probe.terminal = t;
+    if (!probe.IsValid(&err)) throw std::invalid_argument("long_horizon.terminal: " + err);
+  }
+  num_cycles_ = options_.num_cycles();
+}
+
+LongHorizonSimulation::CycleTimes LongHorizonSimulation::Times(int k) const {
+  if (k < 0 || k >= num_cycles_) {
+    throw std::out_of_range("LongHorizonSimulation: cycle " + std::to_string(k) +
+                            " out of range (0.." + std::to_string(num_cycles_ - 1) + ")");
+  }
+  const LongHorizonOptions& o = options_;
+  const double end = o.start_s + o.duration_s;
+  const double step = o.step_s;
+  const int total = Steps(step, o.duration_s);
+  CycleTimes t;
+  if (o.mode == HorizonMode::kFixed) {
+    const int per = Steps(step, o.cycle_s);
+    const int a = k * per;
+    const int b = std::min(total, a + per);
+    t.start_s = o.start_s + a * step;
+    t.applied_end_s = b == total ? end : o.start_s + b * step;
+    t.prediction_end_s = t.applied_end_s;
+  } else {
+    const int per = Steps(step, o.control_s);
+    const int a = k * per;
+    const int b = std::min(total, a + per);
+    t.start_s = o.start_s + a * step;
+    t.applied_end_s = b == total ? end : o.start_s + b * step;
+    t.prediction_end_s = o.start_s + (a + Steps(step, o.cycle_s)) * step;
+  }
+  return t;
+}
+
+LongHorizonState LongHorizonSimulation::InitialState() const {
+  LongHorizonState s;
+  s.next_cycle = 0;
+  s.time_s = options_.start_s;
+  s.eci = simulator_->EciFromRelative(base_.initial_state, options_.start_s);
+  const int m = base_.thrusters.size();
+  s.last_burn_end_s.assign(m, -kInf);
+  for (int i = 0; i < m; ++i) {
+    const double off = base_.history.off_for(i);
+    if (std::isfinite(off)) s.last_burn_end_s[i] = options_.start_s - off;
+  }
+  return s;
+}
+
+std::vector<bool> LongHorizonSimulation::Available(int k) const {
+  const CycleTimes t = Times(k);
+  const int m = base_.thrusters.size();
+  std::vector<bool> a(m, true);
+  for (int i = 0; i < m; ++i) a[i] = base_.thrusters.thruster(i).enabled;
+  // A thruster is unavailable if outages (and fixed forced-off windows) cover
+  // the whole prediction [start, prediction_end).
+  for (int i = 0; i < m; ++i) {
+    if (!a[i]) continue;
+    std::vector<std::pair<double, double>> cover;
+    for (const ThrusterOutage& o : options_.outages) {
+      if (o.thruster == i) cover.emplace_back(o.from_s, o.until_s);
+    }
+    for (const ForcedOff& f : base_.forced_off) {
+      if (f.thruster == i) cover.emplace_back(f.start_s, f.end_s);
+    }
+    std::sort(cover.begin(), cover.end());
+    double reached = t.start_s;
+    for (const auto& [from, until] : cover) {
+      if (from > reached + kTimeTolerance) break;
+      reached = std::max(reached, until);
+    }
+    if (reached >= t.prediction_end_s - kTimeTolerance) a[i] = false;
+  }
+  return a;
+}
+
+ScheduleProblem LongHorizonSimulation::CycleProblem(const LongHorizonState& state) const {
+  const int k = state.next_cycle;
+  if (k < 0 || k >= num_cycles_) {
+    throw std::invalid_argument("LongHorizonSimulation: state.next_cycle " + std::to_string(k) +
+                                " is not a cycle (0.." + std::to_string(num_cycles_ - 1) + ")");
+  }
+  const CycleTimes t = Times(k);
+  if (std::abs(state.time_s - t.start_s) > 1e-6) {
+    throw std::invalid_argument("LongHorizonSimulation: state.time_s " + Num(state.time_s) +
+                                " s is not the start of cycle " + std::to_string(k) + " (" +
+                                Num(t.start_s) + " s)");
+  }
+  const int m = base_.thrusters.size();
+  if (static_cast<int>(state.last_burn_end_s.size()) != m) {
+    throw std::invalid_argument("LongHorizonSimulation: state.last_burn_end_s has " +
+                                std::to_string(state.last_burn_end_s.size()) + " entries for " +
+                                std::to_string(m) + " thrusters");
+  }
+  ScheduleProblem p = base_;
+  const int n = Steps(options_.step_s, t.prediction_end_s - t.start_s);
+  p.grid = dynamics::UniformGrid(t.start_s, t.prediction_end_s, n);
+  p.initial_state = simulator_->RelativeFromEci(state.eci, t.start_s);
+  p.rules.allow_burn_across_end = false;
+  p.history = BoundaryHistory::AllOff(m);
+  for (int i = 0; i < m; ++i) {
+    const double e = state.last_burn_end_s[i];
+    if (std::isnan(e) || e > t.start_s + kTimeTolerance) {
+      throw std::invalid_argument("LongHorizonSimulation: state.last_burn_end_s[" +
+                                  std::to_string(i) + "] = " + Num(e) +
+                                  " s is after the cycle start " + Num(t.start_s) + " s");
+    }
+    p.history.off_for_s[i] = std::isfinite(e) ? std::max(0.0, t.start_s - e) : kInf;
+  }
+  for (const ThrusterOutage& o : options_.outages) {
+    if (o.until_s <= t.start_s || o.from_s >= t.prediction_end_s) continue;
+    p.forced_off.push_back({o.thruster, std::max(o.from_s, t.start_s),
+                            std::min(o.until_s, t.prediction_end_s)});
+  }
+  if (options_.mode == HorizonMode::kFixed || options_.terminal_in_receding) {
+    p.terminal = options_.terminal;
+  } else {
+    p.terminal = TerminalSpec{};
+  }
+  p.window.soft = false;
+  p.window.soft_penalty = options_.soft_penalty;
+  p.window.enforce_from_s = -kInf;
+  return p;
+}
+
+CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
+  const Clock::time_point t_cycle = Clock::now();
+  const std::clock_t cpu_cycle = std::clock();
+  const ScheduleProblem nominal = CycleProblem(*state);
+  const int k = state->next_cycle;
+  const CycleTimes t = Times(k);
+  const int m = base_.thrusters.size();
+  const milp::SolveOptions& so = options_.solve.solve;
+
+  CycleRecord rec;
+  rec.index = k;
+  rec.start_s = t.start_s;
+  rec.applied_end_s = t.applied_end_s;
+  rec.prediction_end_s = t.prediction_end_s;
+  rec.eci_start = state->eci;
+  rec.initial_state = nominal.initial_state;
+  rec.on_time_s.assign(m, 0.0);
+
+  const std::vector<bool> available = Available(k);
+  const Controllability ctrl = CheckControllability(base_.thrusters, available);
+  rec.controllable = ctrl.controllable;
+  if (!ctrl.controllable) rec.note = ctrl.reason;
+  {
+    std::string off;
+    for (int i = 0; i < m; ++i) {
+      if (base_.thrusters.thruster(i).enabled && !available[i]) {
+        off += (off.empty() ? "" : ", ") + base_.thrusters.thruster(i).name;
+      }
+    }
+    if (!off.empty()) {
+      rec.note += std::string(rec.note.empty() ? "" : "; ") + "unavailable (outage): " + off;
+    }
+  }
+
+  // Receding mode: the boundary node of the applied part.
+  const int control_node = options_.mode == HorizonMode::kReceding
+                               ? Steps(options_.step_s, t.applied_end_s - t.start_s)
+                               : -1;
+  const int num_intervals = nominal.num_intervals();
+
+  // Attempts in order of escalation. An uncontrollable cycle goes straight to
+  // the best-effort problem (the nominal one is infeasible in general).
+  std::vector<Fallback> levels;
+  if (ctrl.controllable) {
+    levels.push_back(Fallback::kNone);
+    levels.push_back(Fallback::kSoftWindow);
+    if (nominal.terminal.kind != TerminalKind::kFree) {
+      levels.push_back(Fallback::kSoftWindowFreeTerminal);
+    }
+  } else {
+    levels.push_back(Fallback::kSoftWindowFreeTerminal);
+  }
+
+  ScheduleResult accepted;
+  bool have = false;
+  for (Fallback level : levels) {
+    ScheduleProblem p = nominal;
+    if (level != Fallback::kNone) p.window.soft = true;
+    if (level == Fallback::kSoftWindowFreeTerminal) p.terminal = TerminalSpec{};
+    CycleAttempt attempt;
+    attempt.level = level;
+    ScheduleResult r;
+    try {
+      const Clock::time_point tb = Clock::now();
+      ScheduleMilp milp(p, options_.solve.build);
+      if (control_node > 0 && control_node < num_intervals) {
+        // No burn across the control boundary: on[c-1] + on[c] <= 1.
+        milp.Modify([&](milp::Model& model) {
+          for (int i = 0; i < m; ++i) {
+            milp::LinearExpr e(milp.on(i, control_node - 1));
+            e.AddTerm(milp.on(i, control_node), 1.0);
+            model.AddConstraint(e, -kInf, 1.0, "control_boundary_" + std::to_string(i));
+          }
+        });
+      }
+      rec.build_seconds += Since(tb);
+      SolveScheduleOptions opt = options_.solve;
+      opt.check.nonlinear.reset();
+      if (level == Fallback::kSoftWindowFreeTerminal) {
+        // Zero thrust is feasible here (the window is soft, the end free):
+        // start from it, so that a schedule exists whatever the time limit.
+        opt.warm_start.clear();
+        opt.solve.initial_solution = milp.StartFromBurns({});
+      }
+      r = SolveBuilt(milp, *solver_, opt);
+      attempt.status = r.solve.status;
+      attempt.solve_seconds = r.solve.wall_seconds;
+      attempt.detail = r.solve.detail;
+      for (const std::string& reason : r.infeasibility_reasons) {
+        attempt.detail += (attempt.detail.empty() ? "" : "; ") + reason;
+      }
+      rec.check_seconds += r.check_seconds;
+    } catch (const std::exception& e) {
+      attempt.status = milp::SolveStatus::kError;
+      attempt.detail = e.what();
+    }
+    rec.solve_seconds += attempt.solve_seconds;
+    rec.attempts.push_back(attempt);
+    if (Interrupted(so)) {
+      rec.interrupted = true;
+      rec.wall_seconds = Since(t_cycle);
+      rec.cpu_seconds = CpuSince(cpu_cycle);
+      return rec;
+    }
+    if (r.has_schedule()) {
+      accepted = std::move(r);
+      rec.fallback = level;
+      have = true;
+      break;
+    }
+  }
+
+  std::vector<Burn> planned;
+  if (have) {
+    rec.status = accepted.solve.status;
+    rec.objective = accepted.solve.objective;
+    rec.best_bound = accepted.solve.best_bound;
+    rec.gap = accepted.solve.gap;
+    rec.nodes = accepted.solve.nodes;
+    if (!accepted.solve.incumbents.empty()) {
+      rec.first_solution_seconds = accepted.solve.incumbents.front().wall_seconds;
+    }
+    planned = accepted.schedule.burns;
+    rec.planned_burns = static_cast<int>(planned.size());
+    if (accepted.checked) {
+      rec.checked = true;
+      rec.rules_ok = accepted.check.operational_ok;
+      rec.linear_window_violation_deg = accepted.check.max_window_violation_at_nodes * kRadToDeg;
+      if (rec.fallback != Fallback::kNone) rec.soft_violation_deg = rec.linear_window_violation_deg;
+    }
+  } else {
+    rec.fallback = Fallback::kZeroThrust;
+    rec.status = rec.attempts.empty() ? milp::SolveStatus::kError : rec.attempts.back().status;
+  }
+
+  // Applied part.
+  for (const Burn& b : planned) {
+    if (b.start_s < t.applied_end_s - kTimeTolerance) {
+      Burn a = b;
+      a.end_s = std::min(a.end_s, t.applied_end_s);
+      rec.burns.push_back(a);
+    }
+  }
+  {
+    Schedule applied;
+    applied.burns = rec.burns;
+    ComputeTotals(base_.thrusters, &applied);
+    rec.consumption_l1_m_s = applied.consumption_l1_m_s;
+    rec.delta_v_m_s = applied.delta_v_m_s;
+    rec.propellant_kg = applied.propellant_kg;
+    rec.on_time_s = applied.on_time_s;
+    rec.on_time_s.resize(m, 0.0);
+    const double acc = base_.thrusters.acceleration();
+    for (const Burn& b : rec.burns) {
+      rec.normal_delta_v_m_s +=
+          acc * std::abs(base_.thrusters.thruster(b.thruster).direction(2)) * b.duration_s();
+    }
+  }
+
+  // Nonlinear replay from the true state.
+  const Clock::time_point tr = Clock::now();
+  const int applied_steps = Steps(options_.step_s, t.applied_end_s - t.start_s);
+  const int q = options_.replay_samples_per_step;
+  std::vector<double> times;
+  times.reserve(static_cast<size_t>(applied_steps) * q + 1);
+  for (int j = 0; j < applied_steps; ++j) {
+    for (int s = 0; s < q; ++s) {
+      times.push_back(t.start_s + (j + static_cast<double>(s) / q) * options_.step_s);
+    }
+  }
+  times.push_back(t.applied_end_s);
+  std::vector<dynamics::InputPulse> pulses;
+  for (const Burn& b : rec.burns) pulses.push_back({b.thruster, b.start_s, b.end_s});
+  const std::vector<dynamics::Vector6d> eci = simulator_->Propagate(
+      state->eci, t.start_s, base_.thrusters.AccelerationMatrix(), pulses, times);
+  const WindowSpec& w = nominal.window;
+  bool prev_outside = false;
+  rec.sample_times = times;
+  rec.sample_outputs.reserve(times.size());
+  rec.sample_states.reserve(times.size());
+  for (size_t s = 0; s < times.size(); ++s) {
+    const Eigen::Vector3d y = simulator_->RelativeOutputs(eci[s], times[s]);
+    rec.sample_outputs.push_back(y);
+    rec.sample_states.push_back(simulator_->RelativeFromEci(eci[s], times[s]));
+    rec.max_abs_lat_deg = std::max(rec.max_abs_lat_deg, std::abs(y(1)) * kRadToDeg);
+    rec.max_abs_lon_deg = std::max(rec.max_abs_lon_deg, std::abs(y(2)) * kRadToDeg);
+    bool outside = false;
+    if (s > 0) {
+      for (size_t o = 0; o < w.outputs.size(); ++o) {
+        if (w.outputs[o] != 1 && w.outputs[o] != 2) continue;
+        const double excess = (std::abs(y(w.outputs[o])) - w.half_widths[o]) * kRadToDeg;
+        outside = outside || excess > 0.0;
+        if (excess > rec.max_window_violation_deg) {
+          rec.max_window_violation_deg = excess;
+          rec.worst_time_s = times[s];
+        }
+      }
+      rec.time_outside_window_s +=
+          0.5 * (times[s] - times[s - 1]) * ((prev_outside ? 1 : 0) + (outside ? 1 : 0));
+    }
+    prev_outside = outside;
+    // Synthesis-model error at grid nodes of the applied part.
+    if (have && s % static_cast<size_t>(q) == 0) {
+      const size_t node = s / static_cast<size_t>(q);
+      if (node < accepted.schedule.outputs.size()) {
+        const Eigen::VectorXd& yl = accepted.schedule.outputs[node];
+        const double e = std::max(std::abs(yl(1) - y(1)), std::abs(yl(2) - y(2))) * kRadToDeg;
+        rec.prediction_error_deg = std::max(rec.prediction_error_deg, e);
+      }
+    }
+  }
+  if (!have) rec.prediction_error_deg = kNaN;
+  rec.replay_seconds = Since(tr);
+  rec.eci_end = eci.back();
+  rec.final_state = rec.sample_states.back();
+
+  // Hand over.
+  state->next_cycle = k + 1;
+  state->time_s = t.applied_end_s;
+  state->eci = rec.eci_end;
+  for (const Burn& b : rec.burns) {
+    state->last_burn_end_s[b.thruster] = std::max(state->last_burn_end_s[b.thruster], b.end_s);
+  }
+  rec.wall_seconds = Since(t_cycle);
+  rec.cpu_seconds = CpuSince(cpu_cycle);
+  return rec;
+}
+
+}  // namespace thrustsched::transcription
