@@ -324,6 +324,10 @@ void ParseWindow(JsonObject w, Scenario* s) {
     win.soft_penalty = *p;
   }
   win.intersample_points = w.OptionalInteger("intersample_points", 0, 100).value_or(0);
+  if (auto mg = w.OptionalNumber("margin", Bound::kNonNegative)) {
+    if (*mg >= 1.0) w.Fail("margin", "must be in [0, 1), got " + FormatNumber(*mg));
+    win.margin = *mg;
+  }
   w.Finish();
 }
 
@@ -505,7 +509,10 @@ void ParseCheck(JsonObject c, Scenario* s) {
   s->verdict.include_intersample = c.OptionalBool("include_intersample").value_or(false);
   if (s->model_type == ModelType::kGeo) {
     const bool nonlinear = c.OptionalBool("nonlinear").value_or(true);
-    if (!nonlinear) s->check.nonlinear.reset();
+    if (!nonlinear) {
+      s->check.nonlinear.reset();
+      s->check.nonlinear_default = false;
+    }
     s->verdict.include_nonlinear = c.OptionalBool("include_nonlinear").value_or(false);
     if (s->verdict.include_nonlinear && !nonlinear) {
       c.Fail("include_nonlinear", "needs \"nonlinear\": true");

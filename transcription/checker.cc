@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "dynamics/geo_model.h"
+#include "dynamics/models.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/propagation.h"
 
@@ -331,6 +332,65 @@ std::vector<double> SampleTimes(const std::vector<double>& grid, int per_interva
 
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
+// Relative tolerance of the end-of-horizon set judgement: the re-propagated
+// final state differs from the MILP's discrete one by the scheme's error.
+constexpr double kSkSetTolerance = 1e-3;
+
+// End-of-horizon station-keeping sets, judged on the exact (round) sets that
+// the MILP's inscribed polygons approximate from inside (terminal_sets.h), in
+// HCW coordinates zeta = (x, y, z, xdot, ydot, zdot) computed here from the
+// model's own outputs: HCW outputs are (x, y, z); GEO outputs are (dr, lat,
+// lon) and x = dr, y = rho lon, z = rho lat with rho the station radius.
+// Returns max(0, worst excess / half width) over the disk
+//   sqrt(z^2 + (zdot/n)^2) <= eps_z
+// and, at every look-ahead time t, the two cones
+//   |(2 xdot/n, 6 x + 4 ydot/n)| <= eps_y -+ ((6 n x + 3 ydot) t - y + 2 xdot/n)
+// (the drifting free-motion ellipse fits the window at t), with eps the
+// window half widths shrunk by the window and terminal margins.
+double StationKeepingExcess(const ScheduleProblem& problem, const Eigen::VectorXd& xf) {
+  const dynamics::LinearModel& model = *problem.model;
+  const double tf = problem.grid.back();
+  const dynamics::OutputMatrices out = model.EvaluateOutput(tf);
+  const dynamics::ModelMatrices mm = model.Evaluate(tf);
+  const Eigen::VectorXd y = out.c * xf;
+  const Eigen::VectorXd ydot = out.c_dot * xf + out.c * (mm.a * xf + mm.d);  // thrust off
+  Eigen::Matrix<double, 6, 1> zeta;
+  double n = 0.0, rho = 1.0;
+  int along = 1, normal = 2;  // window outputs of the along-track and normal positions
+  if (const auto* hcw = dynamic_cast<const dynamics::HcwModel*>(&model)) {
+    n = hcw->mean_motion();
+    zeta << y(0), y(1), y(2), ydot(0), ydot(1), ydot(2);
+  } else if (const auto* geo = dynamic_cast<const dynamics::GeoLinearModel*>(&model)) {
+    rho = geo->station_radius_m();
+    n = geo->mean_motion();
+    zeta << y(0), rho * y(2), rho * y(1), ydot(0), rho * ydot(2), rho * ydot(1);
+    along = 2;
+    normal = 1;
+  } else {
+    throw std::invalid_argument("CheckSchedule: station-keeping sets need an HCW or GEO model, got " +
+                                std::string(model.name()));
+  }
+  double eps_y = 0.0, eps_z = 0.0;
+  const WindowSpec& w = problem.window;
+  for (std::size_t k = 0; k < w.outputs.size(); ++k) {
+    if (w.outputs[k] == along) eps_y = rho * w.half_widths[k];
+    if (w.outputs[k] == normal) eps_z = rho * w.half_widths[k];
+  }
+  const double shrink = (1.0 - w.margin) * (1.0 - problem.terminal.margin);
+  eps_y *= shrink;
+  eps_z *= shrink;
+  double excess = std::hypot(zeta(2), zeta(5) / n) / eps_z - 1.0;
+  const double amp = std::hypot(2.0 * zeta(3) / n, 6.0 * zeta(0) + 4.0 * zeta(4) / n);
+  std::vector<double> lookahead = problem.terminal.lookahead_s;
+  if (lookahead.empty()) lookahead = {0.0, problem.horizon_s()};
+  for (double t : lookahead) {
+    const double drift = (6.0 * n * zeta(0) + 3.0 * zeta(4)) * t - zeta(1) + 2.0 * zeta(3) / n;
+    excess = std::max(excess, (amp - (eps_y + drift)) / eps_y);
+    excess = std::max(excess, (amp - (eps_y - drift)) / eps_y);
+  }
+  return std::max(0.0, excess);
+}
+
 /// Nonlinear replay of a GEO schedule (fills the nonlinear_* fields of r,
 /// whose sample_times are already set). Window outputs 1 (lat) and 2 (lon)
 /// are angles and are judged in degrees; a window on output 0 (radius, m)
@@ -504,7 +564,19 @@ CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn
     r.terminal_ok = worst <= kTerminalTolerance;
   }
 
-  if (options.nonlinear) ReplayNonlinear(problem, *options.nonlinear, pulses, &r);
+  if (term.kind == TerminalKind::kStationKeepingSets) {
+    r.terminal_error = StationKeepingExcess(problem, r.final_state);
+    r.terminal_ok = r.terminal_error <= kSkSetTolerance;
+  }
+
+  if (options.nonlinear) {
+    ReplayNonlinear(problem, *options.nonlinear, pulses, &r);
+  } else if (options.nonlinear_default) {
+    if (const auto* geo = dynamic_cast<const dynamics::GeoLinearModel*>(problem.model.get())) {
+      const dynamics::GeoSimulator simulator(geo->options());
+      ReplayNonlinear(problem, simulator, pulses, &r);
+    }
+  }
   return r;
 }
 

@@ -46,8 +46,13 @@ std::vector<RuleViolation> CheckOperationalRules(const OperationalRules& rules,
 struct CheckOptions {
   int samples_per_interval = 4;       // propagation samples strictly inside each interval
   double propagation_tolerance = 1e-11;
-  /// GEO only: also replay through the nonlinear model (expensive). Null = skip.
+  /// GEO only: also replay through this nonlinear model (~0.1-1 s per week).
   std::shared_ptr<const dynamics::GeoSimulator> nonlinear;
+  /// GEO only, when `nonlinear` is null: replay through a GeoSimulator made
+  /// from the problem's GeoLinearModel options (same station, epoch and
+  /// forces), so every GEO schedule is judged by the nonlinear model unless
+  /// this is switched off.
+  bool nonlinear_default = true;
 };
 
 struct CheckReport {

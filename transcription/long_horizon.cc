@@ -580,6 +580,7 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
       rec.build_seconds += Since(tb);
       SolveScheduleOptions opt = options_.solve;
       opt.check.nonlinear.reset();
+      opt.check.nonlinear_default = false;  // replayed below, from the true state
       if (level == Fallback::kSoftWindowFreeTerminal) {
         // Zero thrust is feasible here (the window is soft, the end free):
         // start from it, so that a schedule exists whatever the time limit.

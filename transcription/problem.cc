@@ -106,6 +106,9 @@ bool ScheduleProblem::IsValid(std::string* error) const {
                              "] must be finite and > 0, got " + Num(w));
     }
   }
+  if (!(window.margin >= 0.0 && window.margin < 1.0)) {
+    return Fail(error, "window.margin must be in [0, 1), got " + Num(window.margin));
+  }
   if (std::isnan(window.enforce_from_s)) return Fail(error, "window.enforce_from_s is NaN");
   if (window.enabled() && window.enforce_from_s > grid.back()) {
     return Fail(error, "window.enforce_from_s = " + Num(window.enforce_from_s) +

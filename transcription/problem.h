@@ -45,6 +45,11 @@ struct WindowSpec {
   double soft_penalty = 1e3;
   /// Extra constrained points strictly inside each interval (0 = nodes only).
   int intersample_points = 0;
+  /// Planning margin, a fraction in [0, 1): the MILP keeps the outputs within
+  /// (1 - margin) x half_widths (and the terminal sets within that), so that
+  /// what it does not model (motion between nodes, linearisation error) has
+  /// room; the checker still judges the full half_widths.
+  double margin = 0.0;
 
   bool enabled() const { return !outputs.empty(); }
 };

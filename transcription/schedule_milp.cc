@@ -344,7 +344,7 @@ void ScheduleMilp::BuildSparse() {
     auto add_window_row = [&](const Eigen::RowVectorXd& cx, int node_for_x,
                               const Eigen::RowVectorXd& cu, int interval_for_u, double shift,
                               int k, int node, int sub) {
-      const double w = p.window.half_widths[k];
+      const double w = p.window.half_widths[k] * (1.0 - p.window.margin);  // planned box
       milp::Variable slack;
       if (p.window.soft) {
         slack = model_.AddContinuous(0.0, kInf,
@@ -407,8 +407,8 @@ void ScheduleMilp::BuildSparse() {
     SkSetOptions o;
     o.mean_motion = HcwMeanMotion(model);
     HcwWindowWidths(model, p.window.outputs, p.window.half_widths, &o.eps_y, &o.eps_z);
-    o.eps_y *= 1.0 - term.margin;
-    o.eps_z *= 1.0 - term.margin;
+    o.eps_y *= (1.0 - p.window.margin) * (1.0 - term.margin);
+    o.eps_z *= (1.0 - p.window.margin) * (1.0 - term.margin);
     o.facets_out_of_plane = term.facets_out_of_plane;
     o.facets_cone_plus = term.facets_cone_plus;
     o.facets_cone_minus = term.facets_cone_minus;
@@ -451,7 +451,7 @@ void ScheduleMilp::BuildCondensed() {
   };
   auto add_window = [&](const Eigen::RowVectorXd& coef, int used_cols, double shift, int k,
                         int node, int sub) {
-    const double w = p.window.half_widths[k];
+    const double w = p.window.half_widths[k] * (1.0 - p.window.margin);  // planned box
     const std::string tag = "win_" + std::to_string(k) + "_" + std::to_string(node) +
                             (sub > 0 ? "_" + std::to_string(sub) : "");
     if (!p.window.soft) {
@@ -514,8 +514,8 @@ void ScheduleMilp::BuildCondensed() {
     SkSetOptions o;
     o.mean_motion = HcwMeanMotion(model);
     HcwWindowWidths(model, p.window.outputs, p.window.half_widths, &o.eps_y, &o.eps_z);
-    o.eps_y *= 1.0 - term.margin;
-    o.eps_z *= 1.0 - term.margin;
+    o.eps_y *= (1.0 - p.window.margin) * (1.0 - term.margin);
+    o.eps_z *= (1.0 - p.window.margin) * (1.0 - term.margin);
     o.facets_out_of_plane = term.facets_out_of_plane;
     o.facets_cone_plus = term.facets_cone_plus;
     o.facets_cone_minus = term.facets_cone_minus;

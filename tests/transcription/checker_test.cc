@@ -310,6 +310,26 @@ ScheduleProblem GeoProblem(const dynamics::GeoModelOptions& options, double hori
   return p;
 }
 
+// Without an explicit simulator, a GEO problem is still judged by the
+// nonlinear model (one made from the problem's own GeoModelOptions), with the
+// same verdict as the explicit one; it can be switched off.
+TEST(CheckerGeo, NonlinearReplayIsTheDefaultForGeo) {
+  const dynamics::GeoModelOptions options;
+  const ScheduleProblem p = GeoProblem(options, 86400, 24);
+  const std::vector<Burn> burns = {{0, 3600, 4500}, {3, 30000, 30600}};
+  CheckOptions opt;
+  opt.samples_per_interval = 1;
+  const CheckReport by_default = CheckSchedule(p, burns, opt);
+  ASSERT_TRUE(by_default.nonlinear_checked);
+  opt.nonlinear = std::make_shared<dynamics::GeoSimulator>(options);
+  const CheckReport explicit_sim = CheckSchedule(p, burns, opt);
+  EXPECT_EQ(by_default.max_abs_lat_deg, explicit_sim.max_abs_lat_deg);
+  EXPECT_EQ(by_default.max_abs_lon_deg, explicit_sim.max_abs_lon_deg);
+  opt.nonlinear.reset();
+  opt.nonlinear_default = false;
+  EXPECT_FALSE(CheckSchedule(p, burns, opt).nonlinear_checked);
+}
+
 TEST(CheckerGeo, NonlinearReplayAgreesWithLinearModel) {
   const dynamics::GeoModelOptions options;
   ScheduleProblem p = GeoProblem(options, 86400, 24);
