@@ -4,7 +4,7 @@
 # (data/reference/thesis_chapter5.json). Results are written to OUT/<name>/
 # (cycles.csv, year.json, plots); an interrupted run continues with --resume.
 #
-#   scripts/run_year_validation.sh                    # all five years, 2 at a time
+#   scripts/run_year_validation.sh                    # all six years, 2 at a time
 #   scripts/run_year_validation.sh -j 1 year_anzel4_fixed
 #   scripts/run_year_validation.sh --summary-only      # table from existing results
 #
@@ -35,8 +35,8 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 if [[ ${#names[@]} -eq 0 ]]; then
-  names=(year_anzel4_fixed year_ideal6_fixed year_anzel4_receding year_ideal6_receding
-         year_anzel4_failed_ne)
+  names=(year_anzel4_fixed year_anzel4_fixed_margin year_ideal6_fixed year_anzel4_failed_ne
+         year_anzel4_receding year_ideal6_receding)
 fi
 
 if [[ $summary_only -eq 0 ]]; then

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "dynamics/propagation.h"
 
@@ -12,6 +15,59 @@ namespace {
 
 double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+// See SolveScheduleOptions::prefix_diagnosis_s. Returns the reason if a
+// prefix of the horizon is proven infeasible, empty otherwise.
+std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solver,
+                             const SolveScheduleOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ScheduleProblem& full = milp.problem();
+  const int n = full.num_intervals();
+  std::vector<int> lengths;
+  for (int divisor : {32, 8, 2}) {
+    const int k = std::max(2, n / divisor);
+    if (k < n && (lengths.empty() || k > lengths.back())) lengths.push_back(k);
+  }
+  for (size_t q = 0; q < lengths.size(); ++q) {
+    const double left = options.prefix_diagnosis_s - Seconds(t0);
+    if (left <= 0.0) break;
+    const int k = lengths[q];
+    ScheduleProblem p = full;
+    p.grid.assign(full.grid.begin(), full.grid.begin() + k + 1);
+    p.terminal = TerminalSpec{};
+    p.rules.allow_burn_across_end = true;
+    // A window that starts after the prefix constrains nothing in it.
+    if (p.window.enforce_from_s > p.grid.back()) continue;
+    std::vector<ForcedOff> forced;
+    for (const ForcedOff& f : full.forced_off) {
+      if (f.start_s < p.grid.back()) forced.push_back(f);
+    }
+    p.forced_off = forced;
+    milp::SolveOptions o = options.solve;
+    o.time_limit_s = left / static_cast<double>(lengths.size() - q);
+    o.progress = nullptr;
+    o.initial_solution.reset();
+    o.objective_step = 0.0;
+    try {
+      const ScheduleMilp prefix(p, milp.options());
+      const milp::SolveResult r = solver.Solve(prefix.lp(), o);
+      if (r.status == milp::SolveStatus::kInfeasible) {
+        const double hours = (p.grid.back() - p.grid.front()) / 3600.0;
+        char buf[256];
+        std::snprintf(buf, sizeof(buf),
+                      "the first %.4g h of the horizon (%d of %d intervals) are infeasible on "
+                      "their own (proven in %.3g s), so the whole problem is",
+                      hours, k, n, r.wall_seconds);
+        return buf;
+      }
+      if (r.has_solution()) continue;  // this prefix is feasible: try a longer one
+    } catch (const std::exception&) {
+      return "";
+    }
+    if (options.solve.interrupt != nullptr && options.solve.interrupt->load()) return "";
+  }
+  return "";
 }
 
 }  // namespace
@@ -69,6 +125,17 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
     solve_options.initial_solution = milp.StartFromBurns(options.warm_start);
   }
   r.solve = solver.Solve(milp.lp(), solve_options);
+  const bool interrupted = options.solve.interrupt != nullptr && options.solve.interrupt->load();
+  if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted &&
+      options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff &&
+      p.window.enabled() && !p.window.soft) {
+    const std::string reason = DiagnosePrefixes(milp, solver, options);
+    if (!reason.empty()) {
+      r.solve.status = milp::SolveStatus::kInfeasible;
+      r.solve.detail += "; " + reason + " infeasible";
+      r.infeasibility_reasons.push_back(reason + " infeasible");
+    }
+  }
   if (!r.solve.has_solution()) return r;
   r.schedule = milp.Decode(r.solve.x);
   if (!options.check_schedule) return r;

@@ -37,6 +37,15 @@ struct SolveScheduleOptions {
   /// Optional MIP start (on-off mode): a burn list, e.g. the previous cycle's
   /// schedule shifted, or a heuristic.
   std::vector<Burn> warm_start;
+  /// Infeasibility diagnosis, after a solve that stopped at its time limit
+  /// with no schedule and no proof (on-off mode, hard window): the first
+  /// 1/32, 1/8 and 1/2 of the horizon are solved alone, each with a burn
+  /// allowed to run past its end and no terminal constraint. Every schedule
+  /// of the whole problem restricted to such a prefix is feasible for it, so
+  /// an infeasible prefix proves the whole problem infeasible (status
+  /// kInfeasible, the reason in infeasibility_reasons). It spends at most
+  /// this many seconds beyond the time limit (0: off); not after an interrupt.
+  double prefix_diagnosis_s = 30.0;
 };
 
 /// Check of an impulsive schedule: impulses applied to the continuous model

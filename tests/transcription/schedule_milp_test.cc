@@ -198,6 +198,34 @@ TEST(ScheduleMilpTest, InfeasibleStartAndSoftWindow) {
   EXPECT_GT(soft.check.max_window_violation_at_nodes, 1.0);  // m: it does leave the box
 }
 
+// Thesis sec. 4.3.3: X0 = [10 km, 0, 0, ...] over 7 days cannot be held in
+// the window. CBC alone cannot decide the week (minutes in its root LP); a
+// solve stopped by its time limit is then diagnosed on prefixes of the
+// horizon, each a relaxation of the whole problem: an infeasible prefix proves
+// the week infeasible. A feasible problem stopped the same way is never
+// declared infeasible.
+TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
+  auto solver = milp::MakeCbcSolver();
+  ScheduleProblem p = Table41(7.0);
+  p.initial_state[0] = 10000.0;
+  SolveScheduleOptions o;
+  o.solve.time_limit_s = 0.5;  // stops CBC inside its root LP
+  o.prefix_diagnosis_s = 0.0;
+  const ScheduleResult undecided = SolveSchedule(p, *solver, o);
+  EXPECT_EQ(undecided.solve.status, milp::SolveStatus::kNoSolutionFound) << undecided.solve.detail;
+  o.prefix_diagnosis_s = 60.0;
+  const ScheduleResult r = SolveSchedule(p, *solver, o);
+  ASSERT_EQ(r.solve.status, milp::SolveStatus::kInfeasible) << r.solve.detail;
+  ASSERT_FALSE(r.infeasibility_reasons.empty());
+  EXPECT_NE(r.infeasibility_reasons.back().find("are infeasible on their own"), std::string::npos)
+      << r.infeasibility_reasons.back();
+  // Feasible (thesis Table 4.1, 2 days), stopped before any schedule: stays undecided.
+  const ScheduleProblem feasible = Table41(2.0);
+  o.solve.time_limit_s = 0.01;
+  const ScheduleResult f = SolveSchedule(feasible, *solver, o);
+  EXPECT_NE(f.solve.status, milp::SolveStatus::kInfeasible) << f.solve.detail;
+}
+
 TEST(ScheduleMilpTest, InvalidProblemThrowsNamingTheField) {
   ScheduleProblem p = Table41(1.0);
   p.window.half_widths = {36800.0, -1.0};
