@@ -379,10 +379,13 @@ std::string PlotHeader(const std::string& image, int w, int h, const std::string
   return os.str();
 }
 
+// Text for a single-quoted gnuplot string in enhanced mode: no quote, and
+// one backslash before the enhanced-text control characters (single quotes
+// keep backslashes as they are, so '\_' prints an underscore).
 std::string GnuplotText(const std::string& s) {
   std::string out;
   for (char c : s) {
-    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&') out += "\\\\";
+    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&') out += '\\';
     if (c == '\'') continue;
     out += c;
   }

@@ -13,6 +13,12 @@ PACKAGES=(
   coinor-cbc glpk-utils python3-scipy gnuplot-nox
 )
 
+# THRUSTSCHED_DEPS_PACKAGES (space-separated) replaces the list: used by the
+# test of this script (tests/install/install_deps_test.sh).
+if [ -n "${THRUSTSCHED_DEPS_PACKAGES:-}" ]; then
+  read -r -a PACKAGES <<< "$THRUSTSCHED_DEPS_PACKAGES"
+fi
+
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -15,6 +15,7 @@
 #define THRUSTSCHED_BENCHMARKS_BENCH_MATRIX_H_
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct CaseSpec {
   milp::LpAlgorithm lp_algorithm = milp::LpAlgorithm::kPrimal;
   bool use_objective_step = true;  // pass ScheduleMilp::objective_step() to the solver
   bool lp_relaxation = true;       // also solve the root LP alone (lp_bound, lp_s)
+  /// Algorithm of that separate LP solve if set (else lp_algorithm): the
+  /// encoding comparison wants the bound itself, with the fastest algorithm.
+  std::optional<milp::LpAlgorithm> lp_relaxation_algorithm;
+  double lp_relaxation_time_limit_s = 0.0;  // > 0: its own limit (else time_limit_s)
   bool error_metrics = true;       // max_rel_err_* against the reference discretisation
   bool external = false;           // cross-check the exported MPS with cbc / glpsol
   double external_time_limit_s = 60.0;

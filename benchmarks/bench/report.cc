@@ -699,7 +699,9 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
   md << "Sparse (states as columns, O(N) nonzeros) versus condensed (states eliminated, "
         "thesis (4.50), O(N^2) nonzeros), and the thesis's operational-rule rows (corrected) "
         "versus the tight unit-commitment polytope, on thesis Tables 4.1/4.2 and the GEO week. "
-        "All solves: primal root LP, objective step on (the defaults), relative gap 1e-4.\n\n";
+        "All solves: primal root LP, objective step on (the defaults), relative gap 1e-4. "
+        "LP bound and LP (s): the LP relaxation solved on its own by dual simplex (300 s "
+        "limit), the fastest algorithm for these models outside CBC (section 3.1).\n\n";
   const auto f = idx.Section(kSectionFormulation);
   if (f.empty()) {
     md << "Not run.\n\n";
@@ -1075,8 +1077,9 @@ void WriteMethod(std::ostream& md) {
      << "- **discretise_s**: `dynamics::Discretise` on the scenario's grid (wall clock). "
         "**build_s**: `ScheduleMilp` rows, columns and freezing into `LpData` from that "
         "discretisation (`BuildStats::build_seconds`).\n"
-     << "- **lp_bound, lp_s**: the continuous relaxation solved separately by CLP with the "
-        "case's LP algorithm and presolve (not CBC's root node, which adds cuts).\n"
+     << "- **lp_bound, lp_s**: the continuous relaxation solved separately by CLP with "
+        "presolve and the algorithm in `lp_relaxation_algorithm` (dual simplex in section 3, "
+        "the case's root-LP algorithm elsewhere), not CBC's root node, which adds cuts.\n"
      << "- **time_to_first_s**: first incumbent. **time_to_1pct_s**: first moment the proven "
         "gap (incumbent vs CBC's bound at that moment) is <= 1 %. **time_to_opt_s**: the "
         "solve time when CBC proved optimality to the 1e-4 relative gap (empty otherwise, and "
@@ -1126,9 +1129,9 @@ void WriteSkipped(std::ostream& md, const Index& idx, const ReportMeta& m) {
         "Table 4.2 week: 2 x 6 x 2016^2 / 2 = 2.4e7). Its build size and time are measured "
         "up to 7 days in section 4 instead.\n"
      << "- Thesis encoding: run on Table 4.1, Table 4.2 t1 = 2 d and the GEO week, not on "
-        "Table 4.2 t1 = 1 d / 7 d (tight only, as the cross-check cases).\n"
+        "the other Table 4.2 cases (tight only, with the external cross-check).\n"
      << "- One-year runs (thesis Table 5.2, 129.2 vs 130.0 m/s) are outside this benchmark: "
-        "they belong to the year simulation.\n";
+        "`thrustsched simulate`, results in docs/year_results.md.\n";
   for (const Group& g : idx.groups()) {
     for (const Row* r : g.rows) {
       const std::string st = r->Get("status");
@@ -1153,7 +1156,7 @@ void WriteColumns(std::ostream& md) {
           return s;
         }()
      << "`. Extensions: `section`, `case_id`, `repeat`, `variant` (what was changed), "
-        "`model`, `n_thrusters`, `threads`, `time_limit_s`, `relative_gap`, `lp_algorithm`, "
+        "`model`, `n_thrusters`, `threads`, `time_limit_s`, `relative_gap`, `lp_algorithm`, `lp_relaxation_algorithm`, "
         "`objective_step` (0 = off), `global_rel_err`, `observed_order_phi/gamma` (accuracy "
         "rows), `nodes`, `time_to_opt_s`, `time_within_1pct_of_opt_s`, `operational_ok`, "
         "`max_window_violation_nodes`, `window_unit`, `terminal_ok`, `terminal_error`, "

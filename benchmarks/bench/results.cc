@@ -31,7 +31,7 @@ const std::vector<std::string>& ResultColumns() {
     for (const std::string& name : ContractColumns()) c.push_back(name);
     for (const char* name :
          {"model", "n_thrusters", "threads", "time_limit_s", "relative_gap", "lp_algorithm",
-          "objective_step", "global_rel_err", "observed_order_phi", "observed_order_gamma",
+          "lp_relaxation_algorithm", "objective_step", "global_rel_err", "observed_order_phi", "observed_order_gamma",
           "nodes", "time_to_opt_s", "time_within_1pct_of_opt_s", "operational_ok",
           "max_window_violation_nodes", "window_unit", "terminal_ok", "terminal_error",
           "published", "published_source", "ratio", "ext_cbc_status", "ext_cbc_objective",

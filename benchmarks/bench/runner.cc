@@ -338,6 +338,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.lp_relaxation) {
     milp::SolveOptions lo = so;
     lo.objective_step = 0.0;
+    lo.lp_algorithm = spec.lp_relaxation_algorithm.value_or(spec.lp_algorithm);
+    if (spec.lp_relaxation_time_limit_s > 0.0) lo.time_limit_s = spec.lp_relaxation_time_limit_s;
+    r.Set("lp_relaxation_algorithm", std::string(milp::ToString(lo.lp_algorithm)));
     const milp::LpRelaxationResult lp = solver->SolveLpRelaxation(milp->lp(), lo);
     r.Set("lp_s", lp.wall_seconds);
     if (lp.status == milp::SolveStatus::kOptimal) {
