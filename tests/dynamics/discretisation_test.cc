@@ -324,11 +324,12 @@ TEST(DiscretiseDoubleIntegratorTest, Rk4HermiteSimpsonTrapezoidAreExact) {
   // A^2 = 0: Phi = [1 h; 0 1], Gamma = [h^2/2; h] U exactly.
   const DoubleIntegrator1d di(20.0, 5.0);
   const Eigen::MatrixXd u = (Eigen::MatrixXd(1, 2) << 0.01, -0.03).finished();
-  const std::vector<double> grid = {0.0, 7.0, 100.0, 1000.0, 1000.5};
+  // Steps from 0.5 s to 1 day (the 1 min .. 1 day range included).
+  const std::vector<double> grid = {0.0, 7.0, 100.0, 1000.0, 1000.5, 1060.5, 4660.5, 90460.5};
   for (Scheme s : {Scheme::kExactZoh, Scheme::kFrozenStart, Scheme::kFrozenMid, Scheme::kRk4,
                    Scheme::kHermiteSimpson, Scheme::kTrapezoid, Scheme::kReference}) {
     const DiscreteModel dm = Discretise(di, u, grid, Options(s));
-    for (int j = 0; j < 4; ++j) {
+    for (int j = 0; j + 1 < static_cast<int>(grid.size()); ++j) {
       const double h = grid[j + 1] - grid[j];
       const Eigen::Matrix2d phi = (Eigen::Matrix2d() << 1, h, 0, 1).finished();
       const Eigen::MatrixXd gamma = Eigen::Vector2d(0.5 * h * h, h) * u;
