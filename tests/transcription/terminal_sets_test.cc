@@ -75,6 +75,39 @@ TEST(TerminalSetsTest, DiskPolygonGeometry) {
 }
 
 // Our normalised rows and the thesis's printed facets (k = 0..K-1) agree.
+// Cone polygons, directly: in the plane (xi1, xi2) = (2 xdot / n, 6 x + 4 ydot / n)
+// the exact cones are disks of radius eps_y + D and eps_y - D, with
+// D = (6 n x + 3 ydot) t - y + 2 xdot / n. With one look-ahead t = 0, the states
+// zeta(u, v) = (v / 6, u - D, 0, u n / 2, 0, 0) have (xi1, xi2) = (u, v) and a
+// fixed D, so each cone polygon can be probed: its vertices lie on the circle of
+// the tighter cone (radius eps_y - |D|), and along a facet normal it reaches
+// exactly cos(pi / K) times that radius (the thesis's coverage ratio).
+TEST(TerminalSetsTest, ConePolygonGeometry) {
+  for (int k : {3, 4, 8, 16, 64}) {
+    for (double d : {0.0, 5000.0, -12000.0}) {
+      SCOPED_TRACE("K = " + std::to_string(k) + ", D = " + std::to_string(d));
+      SkSetOptions o = Nominal(k);
+      o.lookahead_s = {0.0};
+      const HalfSpaces h = StationKeepingSet(o);
+      const double r = o.eps_y - std::abs(d);  // the binding cone
+      auto state = [&](double rho, double angle) {
+        const double u = rho * std::cos(angle), v = rho * std::sin(angle);
+        Vec6 z;
+        z << v / 6.0, u - d, 0.0, u * kN / 2.0, 0.0, 0.0;
+        return z;
+      };
+      for (int q = 0; q < k; ++q) {
+        const double vertex = 2 * kPi * q / k, normal = (2 * q + 1) * kPi / k;
+        EXPECT_TRUE(InPolytope(h, state(r * (1 - 1e-9), vertex)));
+        EXPECT_FALSE(InPolytope(h, state(r * (1 + 1e-6), vertex)));
+        EXPECT_TRUE(InExactStationKeepingSet(o, state(r, vertex), 1e-6));
+        EXPECT_TRUE(InPolytope(h, state(r * std::cos(kPi / k) * (1 - 1e-9), normal)));
+        EXPECT_FALSE(InPolytope(h, state(r * std::cos(kPi / k) * (1 + 1e-6), normal)));
+      }
+    }
+  }
+}
+
 TEST(TerminalSetsTest, MatchesThesisFacetForms) {
   const int k = 16;
   SkSetOptions o = Nominal(k);
