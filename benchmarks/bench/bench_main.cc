@@ -3,7 +3,7 @@
 //
 //   thrustsched-bench [--quick] [--scenarios GLOB] [--out DIR] [--threads N]
 //                     [--time-limit S] [--repeats K] [--cases GLOB] [--merge]
-//                     [--report-only] [--list]
+//                     [--report-only] [--list] [--year-results DIR]
 //
 // Writes DIR/results.csv, DIR/report.md, DIR/*.svg, DIR/meta.json and
 // DIR/runs/ (one JSON result file and one solver trace per run). Each run is
@@ -67,6 +67,10 @@ int main(int argc, char** argv) {
   app.add_option("--repeats", repeats, "repeats of the timing-target cases")
       ->check(CLI::Range(1, 20));
   app.add_option("--data-dir", data_dir, "data directory (scenarios/ inside)");
+  std::string year_dir = THRUSTSCHED_SOURCE_DIR "/docs/year";
+  app.add_option("--year-results", year_dir,
+                 "directory of `thrustsched simulate` runs (one subdirectory with year.json "
+                 "each) for the report's section 6");
   app.add_flag("--report-only", report_only,
                "regenerate report.md and plots from DIR/results.csv and DIR/meta.json");
   app.add_flag("--list", list, "print the cases and exit");
@@ -84,6 +88,8 @@ int main(int argc, char** argv) {
     if (report_only) {
       const std::vector<bench::Row> rows = bench::ReadResultsCsv(out + "/results.csv");
       bench::ReportMeta meta = bench::ReadMetaJson(out + "/meta.json");
+      meta.year_results_dir = year_dir;
+      meta.year_reference_path = data_dir + "/reference/thesis_chapter5.json";
       bench::WriteReport(out, rows, meta);
       std::cout << "wrote " << out << "/report.md from " << rows.size() << " rows\n";
       return 0;
@@ -116,6 +122,8 @@ int main(int argc, char** argv) {
     meta.threads = threads;
     meta.time_limit_s = time_limit;
     meta.scenario_glob = glob;
+    meta.year_results_dir = year_dir;
+    meta.year_reference_path = data_dir + "/reference/thesis_chapter5.json";
     bench::RunContext ctx;
     ctx.runs_dir = out + "/runs";
     ctx.fork = !no_fork;

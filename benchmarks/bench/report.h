@@ -34,6 +34,11 @@ struct ReportMeta {
   double time_limit_s = 0.0;
   std::string scenario_glob;
   double total_wall_s = 0.0;
+  /// Section 6: one subdirectory per `thrustsched simulate` run, each with its
+  /// year.json (e.g. docs/year); empty or missing: the section says so.
+  std::string year_results_dir;
+  /// data/reference/thesis_chapter5.json (the published yearly figures).
+  std::string year_reference_path;
 };
 
 /// Machine, date, versions, command line.
