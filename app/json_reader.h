@@ -32,6 +32,19 @@ class ScenarioError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// Calls `f` and turns a library std::invalid_argument into a ScenarioError
+/// at `path` (a ScenarioError passes through unchanged).
+template <typename F>
+auto Wrap(const std::string& path, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const ScenarioError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw ScenarioError(path + ": " + e.what());
+  }
+}
+
 /// Range a number must satisfy (always finite).
 enum class Bound {
   kAny,          // any finite value

@@ -244,6 +244,10 @@ int Run(const std::string& dir, const std::string& program, const std::vector<st
 
 }  // namespace
 
+bool RunGnuplot(const std::string& dir, const std::string& script, const std::string& program) {
+  return Run(dir, program, {script}) == 0;
+}
+
 bool GnuplotAvailable(const std::string& program) {
   const pid_t pid = fork();
   if (pid < 0) return false;

@@ -45,6 +45,11 @@ PlotResult WritePlots(const std::string& dir, const Scenario& scenario, bool has
 /// True if `program` can be executed (it is run with --version).
 bool GnuplotAvailable(const std::string& program = "gnuplot");
 
+/// Runs `program script` with `dir` as the working directory, its output
+/// appended to dir/gnuplot.log. True if it exited with status 0.
+bool RunGnuplot(const std::string& dir, const std::string& script,
+                const std::string& program = "gnuplot");
+
 }  // namespace thrustsched::app
 
 #endif  // THRUSTSCHED_APP_PLOTS_H_

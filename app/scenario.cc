@@ -74,17 +74,6 @@ Eigen::VectorXd ReadState(JsonObject& o, ModelType type, int n) {
   return x;
 }
 
-// Calls `f` and turns a library std::invalid_argument into a ScenarioError at `path`.
-template <typename F>
-auto Wrap(const std::string& path, F&& f) -> decltype(f()) {
-  try {
-    return f();
-  } catch (const ScenarioError&) {
-    throw;
-  } catch (const std::invalid_argument& e) {
-    throw ScenarioError(path + ": " + e.what());
-  }
-}
 
 void ParseModel(JsonObject m, Scenario* s) {
   const std::string type =

@@ -1,7 +1,5 @@
 #include "app/simulate.h"
 
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -95,16 +93,6 @@ std::string CsvQuote(const std::string& s) {
   return out + "\"";
 }
 
-template <typename F>
-auto Wrap(const std::string& path, F&& f) -> decltype(f()) {
-  try {
-    return f();
-  } catch (const ScenarioError&) {
-    throw;
-  } catch (const std::invalid_argument& e) {
-    throw ScenarioError(path + ": " + e.what());
-  }
-}
 
 void MakeDirectory(const std::string& dir) {
   std::error_code ec;
@@ -340,30 +328,6 @@ std::string TrajectoryRows(const SimulationSetup& setup, const CycleRecord& c, b
        << G(x(5) * kRadToDeg, 10) << "\n";
   }
   return os.str();
-}
-
-// Runs `gnuplot script` in `dir` (output appended to dir/gnuplot.log).
-bool RunGnuplot(const std::string& dir, const std::string& script) {
-  const pid_t pid = fork();
-  if (pid < 0) return false;
-  if (pid == 0) {
-    if (chdir(dir.c_str()) != 0) _exit(126);
-    const int fd = open("gnuplot.log", O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (fd >= 0) {
-      dup2(fd, 1);
-      dup2(fd, 2);
-      close(fd);
-    }
-    const int null_in = open("/dev/null", O_RDONLY);
-    if (null_in >= 0) dup2(null_in, 0);
-    execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return false;
-  }
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 std::string PlotHeader(const std::string& image, int w, int h, const std::string& name) {

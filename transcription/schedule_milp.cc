@@ -261,6 +261,24 @@ std::vector<std::vector<Partial>> InterSampleMaps(const ScheduleProblem& p,
   return out;
 }
 
+// The end-of-horizon sets of p.terminal (kStationKeepingSets): the window's
+// along-track and normal half widths, shrunk by the window's planning margin
+// and the terminal margin; look-ahead {0, horizon} unless given.
+SkSetOptions SkOptionsOf(const ScheduleProblem& p) {
+  const TerminalSpec& term = p.terminal;
+  SkSetOptions o;
+  o.mean_motion = HcwMeanMotion(*p.model);
+  HcwWindowWidths(*p.model, p.window.outputs, p.window.half_widths, &o.eps_y, &o.eps_z);
+  o.eps_y *= (1.0 - p.window.margin) * (1.0 - term.margin);
+  o.eps_z *= (1.0 - p.window.margin) * (1.0 - term.margin);
+  o.facets_out_of_plane = term.facets_out_of_plane;
+  o.facets_cone_plus = term.facets_cone_plus;
+  o.facets_cone_minus = term.facets_cone_minus;
+  o.lookahead_s =
+      term.lookahead_s.empty() ? std::vector<double>{0.0, p.horizon_s()} : term.lookahead_s;
+  return o;
+}
+
 bool WindowActive(const ScheduleProblem& p, int node, double t) {
   return node >= 1 && t >= p.window.enforce_from_s - kTimeTolerance;
 }
@@ -404,17 +422,7 @@ void ScheduleMilp::BuildSparse() {
       model_.SetBounds(xf[c], (term.target[c] - tol) / S[c], (term.target[c] + tol) / S[c]);
     }
   } else if (term.kind == TerminalKind::kStationKeepingSets) {
-    SkSetOptions o;
-    o.mean_motion = HcwMeanMotion(model);
-    HcwWindowWidths(model, p.window.outputs, p.window.half_widths, &o.eps_y, &o.eps_z);
-    o.eps_y *= (1.0 - p.window.margin) * (1.0 - term.margin);
-    o.eps_z *= (1.0 - p.window.margin) * (1.0 - term.margin);
-    o.facets_out_of_plane = term.facets_out_of_plane;
-    o.facets_cone_plus = term.facets_cone_plus;
-    o.facets_cone_minus = term.facets_cone_minus;
-    o.lookahead_s = term.lookahead_s.empty() ? std::vector<double>{0.0, p.horizon_s()}
-                                             : term.lookahead_s;
-    const HalfSpaces h = StationKeepingSet(o);
+    const HalfSpaces h = StationKeepingSet(SkOptionsOf(p));
     const AffineMap map = HcwCoordinates(model, p.grid.back());
     const Eigen::MatrixXd coef = h.a * map.map;  // rows x n, in model state units
     const Eigen::VectorXd rhs = h.b - h.a * map.offset;
@@ -511,17 +519,7 @@ void ScheduleMilp::BuildCondensed() {
               (term.target[c] + tol) / s, "terminal_" + std::to_string(c), milp::Variable(), 0.0);
     }
   } else if (term.kind == TerminalKind::kStationKeepingSets) {
-    SkSetOptions o;
-    o.mean_motion = HcwMeanMotion(model);
-    HcwWindowWidths(model, p.window.outputs, p.window.half_widths, &o.eps_y, &o.eps_z);
-    o.eps_y *= (1.0 - p.window.margin) * (1.0 - term.margin);
-    o.eps_z *= (1.0 - p.window.margin) * (1.0 - term.margin);
-    o.facets_out_of_plane = term.facets_out_of_plane;
-    o.facets_cone_plus = term.facets_cone_plus;
-    o.facets_cone_minus = term.facets_cone_minus;
-    o.lookahead_s = term.lookahead_s.empty() ? std::vector<double>{0.0, p.horizon_s()}
-                                             : term.lookahead_s;
-    const HalfSpaces h = StationKeepingSet(o);
+    const HalfSpaces h = StationKeepingSet(SkOptionsOf(p));
     const AffineMap map = HcwCoordinates(model, p.grid.back());
     const Eigen::MatrixXd a = h.a * map.map;
     for (int r = 0; r < h.rows(); ++r) {
