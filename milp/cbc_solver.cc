@@ -485,6 +485,10 @@ bool Polish(const LpData& lp, const SolveOptions& options, Control* control, Eig
     const double sign = lp.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0;
     SolveOptions lp_options = options;
     lp_options.presolve = false;
+    // Dual simplex whatever the root LP algorithm: CLP's barrier aborts the
+    // process ("primal off to infinity") on some of these fixed-integer LPs
+    // (seen on a GEO week with six thrusters).
+    lp_options.lp_algorithm = LpAlgorithm::kDual;
     const LpOutcome r = SolveLpCore(fixed, MakeArrays(fixed, sign, false), lp_options, control);
     if (r.status == SolveStatus::kOptimal) {
       Eigen::VectorXd candidate = r.x;
@@ -500,6 +504,10 @@ bool Polish(const LpData& lp, const SolveOptions& options, Control* control, Eig
     }
   }
   return lp.MaxViolation(*x) <= kFeasibilityTolerance;
+}
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
 double RelativeGap(double objective, double bound) {
@@ -576,7 +584,13 @@ class CbcSolverImpl final : public Solver {
 
  private:
   SolveResult DoSolve(const LpData& problem, const SolveOptions& options) const override;
-  SolveResult SolveOnce(const LpData& problem, const SolveOptions& options) const;
+  /// One CBC run. *cbc_claim is set when the status rests on CBC's "proven
+  /// infeasible" (kInfeasible, or a MIP start declared optimal because
+  /// nothing better was found under its cutoff).
+  SolveResult SolveOnce(const LpData& problem, const SolveOptions& options,
+                        bool* cbc_claim = nullptr) const;
+  SolveResult VerifyInfeasibilityClaim(const LpData& problem, const SolveOptions& options,
+                                       SolveResult claimed) const;
   LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
                                          const SolveOptions& options) const override;
 };
@@ -643,7 +657,9 @@ SolveResult FromLpOutcome(const LpData& lp, const LpOutcome& o, Control* control
 }
 
 SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options) const {
-  SolveResult r = SolveOnce(lp, options);
+  const Clock::time_point start = Clock::now();
+  bool claim = false;
+  SolveResult r = SolveOnce(lp, options, &claim);
   // CLP's barrier misclassifies some unbounded problems (reported optimal or
   // infeasible); an infeasible/unbounded verdict reached through it is
   // confirmed with the dual simplex, which classifies them correctly.
@@ -651,14 +667,131 @@ SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options
       (r.status == SolveStatus::kInfeasible || r.status == SolveStatus::kUnbounded)) {
     SolveOptions dual = options;
     dual.lp_algorithm = LpAlgorithm::kDual;
-    SolveResult confirmed = SolveOnce(lp, dual);
+    if (std::isfinite(dual.time_limit_s)) {
+      dual.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
+    }
+    SolveResult confirmed = SolveOnce(lp, dual, &claim);
     confirmed.detail = "barrier verdict re-checked with dual simplex; " + confirmed.detail;
-    return confirmed;
+    confirmed.wall_seconds += r.wall_seconds;
+    r = std::move(confirmed);
+  }
+  if (claim && lp.is_mip()) {
+    SolveOptions rest = options;
+    if (std::isfinite(rest.time_limit_s)) {
+      rest.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
+    }
+    const double before = r.wall_seconds;
+    const Clock::time_point verify = Clock::now();
+    r = VerifyInfeasibilityClaim(lp, rest, std::move(r));
+    r.wall_seconds = before + Since(verify);
   }
   return r;
 }
 
-SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& options) const {
+// CBC 2.10 has been seen to "prove" feasible scheduling models infeasible
+// (a knapsack column cut, strong branching on an ill-conditioned root LP;
+// docs/bench/report.md and coin-or/Cbc#186 show the same kind), and to declare
+// a MIP start optimal that way. So a claim is not reported until it is
+// confirmed:
+//  1. by the LP relaxation, solved here by CLP without CBC's preprocessing:
+//     an infeasible relaxation proves infeasibility; a relaxation bound no
+//     better than the start (less one objective step) proves the start optimal;
+//  2. otherwise by a second CBC run with CBC's preprocessing and the knapsack
+//     cuts off, a different random seed and no cutoff: if it finds a better
+//     schedule that is the result; if it says infeasible again the claim
+//     stands (two different proofs agree); if it runs out of time the result
+//     is "no solution" (or the start, "feasible"), with the reason in detail.
+SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const SolveOptions& options,
+                                                    SolveResult claimed) const {
+  const Clock::time_point start = Clock::now();
+  const bool start_claim = claimed.status == SolveStatus::kOptimal;  // a start, kept by cutoff
+  const double sign = lp.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0;
+  // 1. The LP relaxation (at least 30 s, so that a claim made just before the
+  // deadline can still be confirmed).
+  SolveOptions lo = options;
+  lo.lp_algorithm = LpAlgorithm::kPrimal;
+  lo.progress = nullptr;
+  lo.time_limit_s = std::max(30.0, options.time_limit_s);
+  const LpRelaxationResult relaxed = DoSolveLpRelaxation(lp, lo);
+  if (relaxed.status == SolveStatus::kInfeasible && !start_claim) {
+    claimed.detail += "; infeasibility confirmed: the LP relaxation is infeasible";
+    return claimed;
+  }
+  if (start_claim && relaxed.status == SolveStatus::kOptimal) {
+    const double step = std::max(options.objective_step, 0.0);
+    const double tol = std::max({options.absolute_gap,
+                                 options.relative_gap * std::abs(claimed.objective), 1e-9}) + step;
+    if (sign * relaxed.objective >= sign * claimed.objective - tol) {
+      claimed.detail += "; optimality confirmed by the LP relaxation bound " +
+                        Num(relaxed.objective);
+      claimed.best_bound = relaxed.objective;
+      return claimed;
+    }
+  }
+  std::string why = "CBC reported " + std::string(start_claim ? "the start optimal" : "infeasible") +
+                    " but the LP relaxation is " +
+                    (relaxed.status == SolveStatus::kOptimal
+                         ? "feasible with bound " + Num(relaxed.objective)
+                         : std::string(ToString(relaxed.status)) + " (" + relaxed.detail + ")");
+  // 2. A second, differently configured CBC run (without the start: it must
+  // find its own solutions).
+  SolveOptions second = options;
+  second.presolve = false;
+  second.disable_knapsack_cuts = true;
+  second.random_seed = options.random_seed + 7919;
+  second.initial_solution.reset();
+  if (std::isfinite(second.time_limit_s)) {
+    second.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
+  }
+  bool claim_again = false;
+  SolveResult retry = SolveOnce(lp, second, &claim_again);
+  const std::string second_run = "a second CBC run (preprocessing and knapsack cuts off)";
+  if (!start_claim) {
+    if (claim_again) {
+      claimed.detail += "; " + why + "; " + second_run + " reached the same verdict: " +
+                        retry.detail;
+      return claimed;
+    }
+    if (retry.has_solution()) {
+      retry.detail = why + "; " + second_run + ": " + retry.detail;
+      return retry;
+    }
+  } else {
+    const double step = std::max(options.objective_step, 0.0);
+    const double tol = std::max({options.absolute_gap,
+                                 options.relative_gap * std::abs(claimed.objective), 1e-9}) + step;
+    if (retry.has_solution() && sign * retry.objective < sign * claimed.objective - tol) {
+      retry.detail = why + "; " + second_run + " found better: " + retry.detail;
+      return retry;
+    }
+    if (retry.status == SolveStatus::kOptimal && !claim_again) {
+      claimed.detail += "; " + why + "; " + second_run + " proved nothing better exists: " +
+                        retry.detail;
+      claimed.best_bound = retry.best_bound;
+      claimed.gap = RelativeGap(claimed.objective, claimed.best_bound);
+      return claimed;
+    }
+  }
+  SolveResult undecided;
+  undecided.status = SolveStatus::kNoSolutionFound;
+  if (start_claim) {
+    undecided = claimed;
+    undecided.status = SolveStatus::kFeasible;
+    undecided.best_bound = relaxed.status == SolveStatus::kOptimal ? relaxed.objective
+                                                                    : claimed.best_bound;
+    undecided.gap = RelativeGap(undecided.objective, undecided.best_bound);
+  }
+  undecided.nodes = claimed.nodes + retry.nodes;
+  undecided.incumbents = claimed.incumbents;
+  undecided.solver_version = claimed.solver_version;
+  undecided.detail = why + "; unconfirmed: " + second_run + " ended " +
+                     std::string(ToString(retry.status)) + " (" + retry.detail + ")";
+  return undecided;
+}
+
+SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& options,
+                                     bool* cbc_claim) const {
+  if (cbc_claim != nullptr) *cbc_claim = false;
   Control control;
   InitControl(&control, lp, options);
   const double sign = control.sign;
@@ -804,6 +937,7 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
     args.insert(args.end(), {"-increment", num(options.objective_step * (1.0 - 1e-4))});
   }
   if (!options.presolve) args.insert(args.end(), {"-preprocess", "off", "-presolve", "off"});
+  if (options.disable_knapsack_cuts) args.insert(args.end(), {"-knapsackCuts", "off"});
   if (options.max_nodes >= 0) {
     args.insert(args.end(), {"-maxNodes", std::to_string(options.max_nodes)});
   }
@@ -883,10 +1017,12 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
     // (With the start as cutoff, "infeasible" means nothing better than it.)
     r.status = SolveStatus::kOptimal;
     if (!has_x) r.status = SolveStatus::kInfeasible;
+    if (cbc_claim != nullptr && !model.isProvenOptimal()) *cbc_claim = true;
   } else if (model.isContinuousUnbounded()) {
     r.status = SolveStatus::kUnbounded;
   } else if (model.isProvenInfeasible()) {
     r.status = SolveStatus::kInfeasible;
+    if (cbc_claim != nullptr) *cbc_claim = true;
   } else if (stopped) {
     r.status = has_x ? SolveStatus::kFeasible : SolveStatus::kNoSolutionFound;
     detail += "; " + limit_status();

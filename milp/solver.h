@@ -100,6 +100,9 @@ struct SolveOptions {
   /// kNoSolutionFound, like a time limit). Unlike the wall-clock limit it
   /// gives the same result on every run (threads == 1). < 0: no limit.
   long long max_nodes = -1;
+  /// Switch CBC's knapsack cover cuts off (used by the second run that checks
+  /// an infeasibility claim; see cbc_solver.cc).
+  bool disable_knapsack_cuts = false;
 
   bool IsValid(std::string* error) const;
 };

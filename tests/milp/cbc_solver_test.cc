@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -212,6 +213,47 @@ TEST(CbcSolverTest, InterruptFlagStopsTheSearch) {
   const SolveResult again = MakeCbcSolver()->Solve(HardKnapsack(), o);
   EXPECT_THAT(again.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound));
   EXPECT_LT(again.wall_seconds, 2.0);
+}
+
+// CBC's "proven infeasible" is not reported on its word (cbc_solver.cc,
+// VerifyInfeasibilityClaim): an infeasible LP relaxation confirms it, and
+// otherwise a second, differently configured CBC run must agree.
+TEST(CbcSolverTest, InfeasibilityClaimsAreConfirmed) {
+  {
+    // LP-infeasible: two binaries cannot sum to 3.
+    Model m("lp_infeasible");
+    const Variable x = m.AddBinary("x"), y = m.AddBinary("y");
+    m.AddConstraint(LinearExpr(x) + y, 3.0, std::numeric_limits<double>::infinity(), "sum");
+    m.Minimize(LinearExpr(x));
+    const SolveResult r = MakeCbcSolver()->Solve(m.ToLpData());
+    EXPECT_EQ(r.status, SolveStatus::kInfeasible) << r.detail;
+    EXPECT_THAT(r.detail, HasSubstr("confirmed: the LP relaxation is infeasible"));
+  }
+  {
+    // Integer-infeasible, LP-feasible: 2 x = 1 with x integer.
+    Model m("parity");
+    const Variable x = m.AddInteger(0, 5, "x");
+    const Variable y = m.AddContinuous(0, 10, "y");
+    m.AddConstraint(2.0 * LinearExpr(x), 1.0, 1.0, "odd");
+    m.Minimize(LinearExpr(x) + y);
+    const SolveResult r = MakeCbcSolver()->Solve(m.ToLpData());
+    EXPECT_EQ(r.status, SolveStatus::kInfeasible) << r.detail;
+    EXPECT_THAT(r.detail, HasSubstr("LP relaxation is feasible with bound 0.5"));
+    EXPECT_THAT(r.detail, HasSubstr("reached the same verdict"));
+  }
+  {
+    // A MIP start that is optimal: CBC proves it through its cutoff; the
+    // claim is confirmed (LP bound or second run) and the status stays optimal.
+    const LpData lp = RandomKnapsack(30, 4, 1);
+    SolveOptions o;
+    o.time_limit_s = 60;
+    const SolveResult best = MakeCbcSolver()->Solve(lp, o);
+    ASSERT_EQ(best.status, SolveStatus::kOptimal) << best.detail;
+    o.initial_solution = best.x;
+    const SolveResult again = MakeCbcSolver()->Solve(lp, o);
+    EXPECT_EQ(again.status, SolveStatus::kOptimal) << again.detail;
+    EXPECT_NEAR(again.objective, best.objective, 1e-6 * std::abs(best.objective));
+  }
 }
 
 TEST(CbcSolverTest, MipStartIsTheFirstIncumbent) {

@@ -3,10 +3,12 @@
 // of the thesis Table 4.1 (exact multiples of one 5-min slot), agreement of
 // formulations and encodings, and internal consistency of decoding.
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include <gtest/gtest.h>
 
+#include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
 #include "transcription/schedule_milp.h"
@@ -16,6 +18,7 @@ namespace thrustsched::transcription {
 namespace {
 
 constexpr double kGeoN = 7.2921159e-5;  // rad/s, thesis HCW mean motion
+constexpr double kPi = 3.14159265358979323846;
 
 ScheduleProblem DoubleIntegratorRestToRest(int intervals, InputMode mode) {
   // Unit distance in unit time along x (R axis of an ideal thruster set).
@@ -224,6 +227,41 @@ TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
   o.solve.time_limit_s = 0.01;
   const ScheduleResult f = SolveSchedule(feasible, *solver, o);
   EXPECT_NE(f.solve.status, milp::SolveStatus::kInfeasible) << f.solve.detail;
+}
+
+// The GEO week's matrix is scaled (every row's largest coefficient is 1) and
+// cleaned: nothing below 1e-8 of its row's largest survives. With entries
+// down to 1e-14 (roundoff and negligible couplings of the transition
+// matrices), CBC 2.10 "proved" feasible GEO weeks infeasible.
+TEST(ScheduleMilpTest, GeoWeekMatrixIsScaledAndClean) {
+  ScheduleProblem p;
+  p.model = std::make_shared<dynamics::GeoLinearModel>(dynamics::GeoModelOptions{});
+  p.thrusters = dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005);
+  p.grid = dynamics::UniformGrid(0.0, 7 * 86400.0, 2016);
+  p.initial_state = Eigen::VectorXd::Zero(6);
+  p.window.outputs = {1, 2};
+  p.window.half_widths = {0.05 * kPi / 180, 0.05 * kPi / 180};
+  p.rules.min_burn_s = 300;
+  p.rules.min_off_same_s = 1200;
+  p.rules.min_gap_other_s = 300;
+  p.terminal.kind = TerminalKind::kStationKeepingSets;
+  BuildOptions b;
+  b.discretisation.scheme = dynamics::Scheme::kHermiteSimpson;
+  const ScheduleMilp m(p, b);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> a = m.lp().a_matrix;
+  double smallest_ratio = 1.0;
+  for (int r = 0; r < a.outerSize(); ++r) {
+    double big = 0.0, small = std::numeric_limits<double>::infinity();
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(a, r); it; ++it) {
+      big = std::max(big, std::abs(it.value()));
+      small = std::min(small, std::abs(it.value()));
+    }
+    if (big > 0.0) {
+      EXPECT_NEAR(big, 1.0, 1e-12) << m.lp().row_names[r];
+      smallest_ratio = std::min(smallest_ratio, small / big);
+    }
+  }
+  EXPECT_GE(smallest_ratio, 1e-8);
 }
 
 TEST(ScheduleMilpTest, InvalidProblemThrowsNamingTheField) {
