@@ -97,6 +97,39 @@ TEST_P(CatalogTest, SolvesToTheHandDerivedOptimum) {
   EXPECT_THAT(r.solver_version, HasSubstr("CBC 2.10"));
 }
 
+// The same hand-derived optima with every solver option that changes the
+// path CBC takes (but not the answer): presolve and preprocessing off, a
+// random seed, dual simplex and barrier root LPs, knapsack cuts off.
+TEST_P(CatalogTest, OptionsChangeThePathNotTheOptimum) {
+  const CatalogProblem& p = Find(GetParam());
+  const LpData lp = p.build();
+  std::vector<std::pair<std::string, SolveOptions>> variants;
+  SolveOptions o;
+  o.presolve = false;
+  variants.emplace_back("presolve off", o);
+  o = {};
+  o.random_seed = 12345;
+  variants.emplace_back("seed 12345", o);
+  o = {};
+  o.lp_algorithm = LpAlgorithm::kDual;
+  variants.emplace_back("dual", o);
+  o = {};
+  o.lp_algorithm = LpAlgorithm::kBarrier;
+  variants.emplace_back("barrier", o);
+  o = {};
+  o.disable_knapsack_cuts = true;
+  variants.emplace_back("no knapsack cuts", o);
+  for (const auto& [name, options] : variants) {
+    SCOPED_TRACE(name);
+    const SolveResult r = MakeCbcSolver()->Solve(lp, options);
+    ASSERT_EQ(r.status, p.status) << r.detail;
+    if (p.status == SolveStatus::kOptimal) {
+      EXPECT_NEAR(r.objective, p.objective, kTol);
+      EXPECT_LE(lp.MaxViolation(r.x), kTol);
+    }
+  }
+}
+
 TEST_P(CatalogTest, LpRelaxationMatchesTheHandDerivedValue) {
   const CatalogProblem& p = Find(GetParam());
   const LpData lp = p.build();
@@ -480,6 +513,54 @@ TEST(CbcSolverTest, PrintsNothingAtLogLevelZero) {
   solver->Solve(HardKnapsack(), o);
   const std::string printed = capture.Finish();
   EXPECT_EQ(printed, "");
+}
+
+// A seed makes CBC's randomised choices (and so its path) reproducible.
+TEST(CbcSolverTest, SameSeedSameSearch) {
+  SolveOptions o;
+  o.random_seed = 7;
+  o.max_nodes = 200;
+  const SolveResult a = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  const SolveResult b = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  ASSERT_TRUE(a.has_solution()) << a.detail;
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.nodes, b.nodes);
+}
+
+// An absolute gap stops the search as soon as incumbent and bound are that
+// close: with a huge one, the first incumbent is accepted as "optimal".
+TEST(CbcSolverTest, AbsoluteGapStopsTheSearch) {
+  SolveOptions o;
+  o.absolute_gap = 1e9;
+  o.relative_gap = 0.0;
+  o.time_limit_s = 60;
+  const SolveResult r = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_LE(std::abs(r.objective - r.best_bound), 1e9);
+  EXPECT_LT(r.wall_seconds, 30.0);  // HardKnapsack is not solved to 0 gap in minutes
+}
+
+// A node budget stops the search like a time limit, deterministically.
+TEST(CbcSolverTest, NodeLimitStopsTheSearch) {
+  SolveOptions o;
+  o.max_nodes = 10;
+  o.relative_gap = 0.0;
+  const SolveResult a = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  EXPECT_THAT(a.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound));
+  EXPECT_THAT(a.detail, HasSubstr("node limit"));
+  EXPECT_LE(a.nodes, 10 + 5);  // CBC checks the limit between nodes
+  const SolveResult b = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  EXPECT_EQ(a.x, b.x);
+}
+
+// log_level > 0 lets CBC print (the default 0 is silent: test above).
+TEST(CbcSolverTest, LogLevelOnePrintsTheSolverLog) {
+  SolveOptions o;
+  o.log_level = 1;
+  CaptureOutput capture;
+  MakeCbcSolver()->Solve(RandomKnapsack(30, 4, 1), o);
+  const std::string printed = capture.Finish();
+  EXPECT_THAT(printed, HasSubstr("Cbc"));
 }
 
 TEST(CbcSolverTest, InvalidInputThrows) {
