@@ -248,6 +248,11 @@ void ParseLongHorizon(SimulationSetup* setup) {
                                : lp == "primal" ? milp::LpAlgorithm::kPrimal
                                                 : milp::LpAlgorithm::kDual;
   o.soft_penalty = lh.OptionalNumber("soft_penalty", Bound::kPositive).value_or(o.soft_penalty);
+  o.improve_above_gap = lh.OptionalNumber("cycle_improve_above_gap", Bound::kNonNegative)
+                            .value_or(o.improve_above_gap);
+  if (auto nodes = lh.OptionalInteger("cycle_improve_max_nodes", 0, 2000000000)) {
+    o.improve_max_nodes = *nodes;
+  }
   o.replay_samples_per_step =
       lh.OptionalInteger("replay_samples_per_step", 1, 1000).value_or(o.replay_samples_per_step);
   setup->trajectory_sample_s =
@@ -872,6 +877,12 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
                                         {"margin", o.terminal.margin}}
                        : nlohmann::json{{"type", "free"}}},
       {"soft_penalty", o.soft_penalty},
+      {"cycle_improve_above_gap", o.improve_above_gap},
+      {"cycle_improve_max_nodes", o.improve_max_nodes >= 0
+                                      ? nlohmann::json(o.improve_max_nodes)
+                                      : (o.solve.solve.max_nodes >= 0
+                                             ? nlohmann::json(5 * std::max(o.solve.solve.max_nodes, 1LL))
+                                             : nlohmann::json(nullptr))},
       {"replay_samples_per_step", o.replay_samples_per_step}};
   return j;
 }

@@ -220,6 +220,10 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
   if (!std::isfinite(soft_penalty) || soft_penalty <= 0.0) {
     return Fail(error, "long_horizon.soft_penalty must be finite and > 0, got " + Num(soft_penalty));
   }
+  if (!std::isfinite(improve_above_gap)) {
+    return Fail(error, "long_horizon.improve_above_gap must be finite, got " +
+                           Num(improve_above_gap));
+  }
   if (replay_samples_per_step < 1 || replay_samples_per_step > 1000) {
     return Fail(error, "long_horizon.replay_samples_per_step must be in [1, 1000], got " +
                            std::to_string(replay_samples_per_step));
@@ -502,6 +506,64 @@ ScheduleProblem LongHorizonSimulation::CycleProblem(const LongHorizonState& stat
   return p;
 }
 
+ScheduleMilp LongHorizonSimulation::BuildCycleMilp(const ScheduleProblem& p,
+                                                   int control_node) const {
+  ScheduleMilp milp(p, options_.solve.build);
+  if (control_node > 0 && control_node < p.num_intervals()) {
+    // No burn across the control boundary: on[c-1] + on[c] <= 1.
+    const int m = p.thrusters.size();
+    milp.Modify([&](milp::Model& model) {
+      for (int i = 0; i < m; ++i) {
+        milp::LinearExpr e(milp.on(i, control_node - 1));
+        e.AddTerm(milp.on(i, control_node), 1.0);
+        model.AddConstraint(e, -kInf, 1.0, "control_boundary_" + std::to_string(i));
+      }
+    });
+  }
+  return milp;
+}
+
+void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int control_node,
+                                            ScheduleResult* accepted, CycleRecord* rec) const {
+  const milp::SolveOptions& so = options_.solve.solve;
+  long long nodes = options_.improve_max_nodes;
+  if (nodes < 0) nodes = so.max_nodes >= 0 ? 5 * std::max(so.max_nodes, 1LL) : 0;
+  if (options_.improve_above_gap <= 0.0 || nodes <= 0) return;
+  if (!(accepted->solve.gap > options_.improve_above_gap)) return;
+  CycleAttempt attempt;
+  attempt.level = rec->fallback;
+  ScheduleResult r;
+  try {
+    const Clock::time_point tb = Clock::now();
+    const ScheduleMilp milp = BuildCycleMilp(p, control_node);
+    rec->build_seconds += Since(tb);
+    SolveScheduleOptions opt = options_.solve;
+    opt.check.nonlinear.reset();
+    opt.check.nonlinear_default = false;
+    opt.warm_start = accepted->schedule.burns;
+    opt.solve.max_nodes = nodes;
+    r = SolveBuilt(milp, *solver_, opt);
+    attempt.status = r.solve.status;
+    attempt.solve_seconds = r.solve.wall_seconds;
+    attempt.detail = "improvement pass from the accepted schedule (gap " +
+                     Num(accepted->solve.gap) + ", " + std::to_string(nodes) + " nodes): " +
+                     r.solve.detail;
+    rec->check_seconds += r.check_seconds;
+  } catch (const std::exception& e) {
+    attempt.status = milp::SolveStatus::kError;
+    attempt.detail = std::string("improvement pass: ") + e.what();
+  }
+  rec->solve_seconds += attempt.solve_seconds;
+  rec->attempts.push_back(attempt);
+  if (r.has_schedule() && r.solve.objective < accepted->solve.objective - 1e-12) {
+    *accepted = std::move(r);
+  } else if (r.has_schedule() && r.solve.best_bound > accepted->solve.best_bound) {
+    // Same schedule, better proof.
+    accepted->solve.best_bound = r.solve.best_bound;
+    accepted->solve.gap = r.solve.gap;
+  }
+}
+
 CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   const Clock::time_point t_cycle = Clock::now();
   const std::clock_t cpu_cycle = std::clock();
@@ -540,7 +602,6 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   const int control_node = options_.mode == HorizonMode::kReceding
                                ? Steps(options_.step_s, t.applied_end_s - t.start_s)
                                : -1;
-  const int num_intervals = nominal.num_intervals();
 
   // Attempts in order of escalation. An uncontrollable cycle goes straight to
   // the best-effort problem (the nominal one is infeasible in general).
@@ -566,17 +627,7 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
     ScheduleResult r;
     try {
       const Clock::time_point tb = Clock::now();
-      ScheduleMilp milp(p, options_.solve.build);
-      if (control_node > 0 && control_node < num_intervals) {
-        // No burn across the control boundary: on[c-1] + on[c] <= 1.
-        milp.Modify([&](milp::Model& model) {
-          for (int i = 0; i < m; ++i) {
-            milp::LinearExpr e(milp.on(i, control_node - 1));
-            e.AddTerm(milp.on(i, control_node), 1.0);
-            model.AddConstraint(e, -kInf, 1.0, "control_boundary_" + std::to_string(i));
-          }
-        });
-      }
+      ScheduleMilp milp = BuildCycleMilp(p, control_node);
       rec.build_seconds += Since(tb);
       SolveScheduleOptions opt = options_.solve;
       opt.check.nonlinear.reset();
@@ -611,6 +662,13 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
       accepted = std::move(r);
       rec.fallback = level;
       have = true;
+      ImproveAccepted(p, control_node, &accepted, &rec);
+      if (Interrupted(so)) {
+        rec.interrupted = true;
+        rec.wall_seconds = Since(t_cycle);
+        rec.cpu_seconds = CpuSince(cpu_cycle);
+        return rec;
+      }
       break;
     }
   }

@@ -165,6 +165,15 @@ struct LongHorizonOptions {
   /// Nonlinear replay samples per grid step (>= 1): the time outside the
   /// window and the max |lat|, |lon| are measured on them.
   int replay_samples_per_step = 2;
+  /// Improvement pass: a schedule accepted with a relative gap above
+  /// improve_above_gap (typically after a node limit, with a poor first
+  /// incumbent) is improved by solving the same MILP again from it (MIP
+  /// start) with a budget of improve_max_nodes nodes; the better schedule is
+  /// kept. Node budgets keep it deterministic. Off if improve_above_gap <= 0
+  /// or improve_max_nodes <= 0; improve_max_nodes < 0 means 5 x the cycle's
+  /// max_nodes (off when that is unlimited).
+  double improve_above_gap = 0.1;
+  long long improve_max_nodes = -1;
 
   int num_cycles() const;  // 0 if the options are invalid
   /// Checks signs, finiteness and divisibility; fills *error naming the field.
@@ -335,6 +344,13 @@ class LongHorizonSimulation {
   CycleRecord RunCycle(LongHorizonState* state) const;
 
  private:
+  /// The cycle MILP of `p` (with the receding mode's control-boundary rows).
+  ScheduleMilp BuildCycleMilp(const ScheduleProblem& p, int control_node) const;
+  /// The improvement pass (LongHorizonOptions::improve_above_gap) on an
+  /// accepted schedule; records the attempt in *rec.
+  void ImproveAccepted(const ScheduleProblem& p, int control_node, ScheduleResult* accepted,
+                       CycleRecord* rec) const;
+
   ScheduleProblem base_;
   LongHorizonOptions options_;
   std::shared_ptr<const dynamics::GeoSimulator> simulator_;
