@@ -532,12 +532,14 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
   if (rec->fallback != Fallback::kNone || p.window.soft) return;  // fallbacks: as they are
   // Two passes, each only while the gap is still above the threshold:
   //  1. the same MILP from the accepted schedule (MIP start and cutoff);
-  //  2. its elastic (soft-window) version from the best schedule so far. The
-  //     elastic problem is a relaxation: a schedule of it without window
-  //     violation is a schedule of the cycle. CBC finds good schedules of it
-  //     far more easily on some weeks (six thrusters, 2034-01-15: 0.82 m/s in
-  //     100 nodes where the hard problem's first incumbent was 5.8 m/s and
-  //     500 more nodes from it found nothing better).
+  //  2. its elastic (soft-window) version, solved cold (no MIP start: with
+  //     the incumbent as start and cutoff CBC skips the heuristics that find
+  //     the good schedules) with the cycle's own node budget. The elastic
+  //     problem is a relaxation: a schedule of it without window violation is
+  //     a schedule of the cycle. CBC finds good schedules of it far more
+  //     easily on some weeks (six thrusters, 2034-01-15: 0.82 m/s in 100
+  //     nodes cold, where the hard problem's first incumbent was 5.8 m/s and
+  //     500 more nodes from it, hard or elastic, found nothing better).
   for (int pass = 0; pass < 2; ++pass) {
     if (!(accepted->solve.gap > options_.improve_above_gap)) return;
     const bool elastic = pass == 1;
@@ -556,14 +558,20 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
       SolveScheduleOptions opt = options_.solve;
       opt.check.nonlinear.reset();
       opt.check.nonlinear_default = false;
-      opt.warm_start = accepted->schedule.burns;
-      opt.solve.max_nodes = nodes;
+      if (elastic) {
+        opt.warm_start.clear();
+        opt.solve.max_nodes = so.max_nodes >= 0 ? so.max_nodes : nodes;
+      } else {
+        opt.warm_start = accepted->schedule.burns;
+        opt.solve.max_nodes = nodes;
+      }
       r = SolveBuilt(milp, *solver_, opt);
       attempt.status = r.solve.status;
       attempt.solve_seconds = r.solve.wall_seconds;
-      attempt.detail = std::string("improvement pass ") + (elastic ? "(elastic window) " : "") +
-                       "from the accepted schedule (gap " + Num(accepted->solve.gap) + ", " +
-                       std::to_string(nodes) + " nodes): " + r.solve.detail;
+      attempt.detail = std::string("improvement pass ") +
+                       (elastic ? "(elastic window, cold" : "(from the accepted schedule") +
+                       ", gap " + Num(accepted->solve.gap) + ", " +
+                       std::to_string(opt.solve.max_nodes) + " nodes): " + r.solve.detail;
       rec->check_seconds += r.check_seconds;
     } catch (const std::exception& e) {
       attempt.status = milp::SolveStatus::kError;

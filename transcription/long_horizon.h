@@ -165,14 +165,15 @@ struct LongHorizonOptions {
   /// Nonlinear replay samples per grid step (>= 1): the time outside the
   /// window and the max |lat|, |lon| are measured on them.
   int replay_samples_per_step = 2;
-  /// Improvement pass: a nominal schedule accepted with a relative gap above
-  /// improve_above_gap (typically after a node limit, with a poor first
-  /// incumbent) is improved by solving the elastic (soft-window) version of
-  /// the same MILP from it (MIP start) with a budget of improve_max_nodes
-  /// nodes. The elastic problem is a relaxation: a schedule of it with no
-  /// window violation is a schedule of the cycle, and is kept if cheaper (its
-  /// bound is valid too). Node budgets keep it deterministic. Off if
-  /// improve_above_gap <= 0 or improve_max_nodes <= 0; improve_max_nodes < 0
+  /// Improvement passes: a nominal schedule accepted with a relative gap
+  /// above improve_above_gap (typically after a node limit, with a poor first
+  /// incumbent) is improved (1) by the same MILP from it (MIP start) with a
+  /// budget of improve_max_nodes nodes, then, if the gap is still above, (2)
+  /// by the elastic (soft-window) version of the MILP solved cold with the
+  /// cycle's node budget. The elastic problem is a relaxation: a schedule of
+  /// it with no window violation is a schedule of the cycle, and is kept if
+  /// cheaper (its bound is valid too). Node budgets keep it deterministic. Off
+  /// if improve_above_gap <= 0 or improve_max_nodes <= 0; improve_max_nodes < 0
   /// means 5 x the cycle's max_nodes (off when that is unlimited).
   double improve_above_gap = 0.1;
   long long improve_max_nodes = -1;

@@ -429,8 +429,9 @@ TEST(LongHorizonRun, ImprovementPassAfterAPoorIncumbent) {
   ASSERT_GT(plain.gap, 1e-9);
   // The hard pass, then (the gap still above 1e-9) the elastic one.
   ASSERT_EQ(c.attempts.size(), 3u);
-  EXPECT_EQ(c.attempts[1].detail.rfind("improvement pass from", 0), 0u) << c.attempts[1].detail;
-  EXPECT_EQ(c.attempts[2].detail.rfind("improvement pass (elastic window)", 0), 0u)
+  EXPECT_EQ(c.attempts[1].detail.rfind("improvement pass (from the accepted schedule", 0), 0u)
+      << c.attempts[1].detail;
+  EXPECT_EQ(c.attempts[2].detail.rfind("improvement pass (elastic window, cold", 0), 0u)
       << c.attempts[2].detail;
   EXPECT_LT(c.objective, plain.objective - 1e-6) << c.attempts.back().detail;
   // Deterministic: the same cycle again gives the same schedule.
