@@ -85,12 +85,13 @@ for name in names:
         continue
     y = json.load(open(path))
     pub = published.get(name)
-    ratio = y["consumption_l1_m_s"] / pub if pub else float("nan")
+    # A ratio only for a whole year: a partial run's consumption is not comparable.
+    ratio = y["consumption_l1_m_s"] / pub if pub and y.get("complete") else None
     s, g = y["solve_seconds"], y["gap"]
     fmt = lambda v, f="{:.3g}": "n/a" if v is None else f.format(v)
     print(" | ".join([
-        name, f'{y["cycles"]}/{y["cycles_total"]}', f'{y["consumption_l1_m_s"]:.2f}',
-        fmt(pub), f"{ratio:.3f}", f'{y["normal_delta_v_m_s"]:.2f}',
+        name, f'{y["cycles"]}/{y["cycles_total"]}' + ("" if y.get("complete") else " (incomplete)"), f'{y["consumption_l1_m_s"]:.2f}',
+        fmt(pub, "{:.1f}"), fmt(ratio, "{:.3f}"), f'{y["normal_delta_v_m_s"]:.2f}',
         f'{y["thrust_days"]["total"]:.2f}', f'{y["time_outside_window_s"]:.0f}',
         f'{y["max_abs_lat_deg"]:.4f}', f'{y["max_abs_lon_deg"]:.4f}', str(y["fallbacks"]["total"]),
         f'{fmt(s["median"])}/{fmt(s["p90"])}/{fmt(s["max"])}',

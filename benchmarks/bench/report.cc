@@ -1135,7 +1135,11 @@ void WriteYear(std::ostream& md, const ReportMeta& m) {
        << (y.value("complete", false) ? "" : " (incomplete)") << " | " << G(l1, 5) << " | "
        << (pub == published.end() ? std::string("-") : G(pub->second.first, 4) + " (" +
                                                            pub->second.second + ")")
-       << " | " << (pub == published.end() ? std::string("-") : G(l1 / pub->second.first, 4))
+       // A ratio only for a whole year: a partial run's consumption is not comparable.
+       << " | "
+       << (pub == published.end() || !y.value("complete", false)
+               ? std::string("-")
+               : G(l1 / pub->second.first, 4))
        << " | " << G(num(y["normal_delta_v_m_s"]), 4) << " | " << G(num(td["total"]), 4) << " ("
        << G(num(td["north"]), 3) << " / " << G(num(td["south"]), 3) << " / "
        << G(num(td["east"]), 3) << " / " << G(num(td["west"]), 3) << ") | "

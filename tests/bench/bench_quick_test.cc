@@ -156,6 +156,42 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
             0)
       << ReadAll(log);
   EXPECT_EQ(ReadAll((dir / "report.md").string()), report);
+  // Section 6 reads year.json files: a whole nominal year gets a ratio to the
+  // published 129.2 m/s and the 30-min verdict; a partial run gets no ratio.
+  const fs::path years = dir / "years";
+  fs::create_directories(years / "year_anzel4_fixed");
+  fs::create_directories(years / "year_anzel4_failed_ne");
+  auto write_year = [](const fs::path& file, const std::string& name, bool complete,
+                       double l1, double wall_s) {
+    std::ofstream(file) << R"({"scenario": ")" << name << R"(", "complete": )"
+                        << (complete ? "true" : "false") << R"(, "cycles": )"
+                        << (complete ? 53 : 18) << R"(, "cycles_total": 53,
+      "consumption_l1_m_s": )" << l1 << R"(, "normal_delta_v_m_s": 40.0,
+      "thrust_days": {"total": 19.2, "north": 9.6, "south": 9.6, "east": 11.5, "west": 7.7},
+      "time_outside_window_s": 0, "max_window_violation_deg": 0, "max_abs_lat_deg": 0.0497,
+      "max_abs_lon_deg": 0.0497, "fallbacks": {"total": 0},
+      "solve_seconds": {"median": 20, "p90": 40, "max": 100},
+      "gap": {"median": 0.004, "max": 0.02}, "wall_seconds": )" << wall_s
+                        << R"(, "cpu_seconds": 900})";
+  };
+  write_year(years / "year_anzel4_fixed" / "year.json", "year_anzel4_fixed", true, 129.2 * 1.01,
+             1500.0);
+  write_year(years / "year_anzel4_failed_ne" / "year.json", "year_anzel4_failed_ne", false, 44.0,
+             1400.0);
+  ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --report-only --out '" +
+                dir.string() + "' --year-results '" + years.string() + "' > '" + log +
+                "' 2>&1"),
+            0)
+      << ReadAll(log);
+  const std::string with_years = ReadAll((dir / "report.md").string());
+  EXPECT_NE(with_years.find("| year_anzel4_fixed | 53/53 | 130.49 | 129.2 (L5127) | 1.01 | 40 | "
+                            "19.2 (9.6 / 9.6 / 11.5 / 7.7) | 0 s (box held) |"),
+            std::string::npos)
+      << with_years;
+  EXPECT_NE(with_years.find("| year_anzel4_failed_ne | 18/53 (incomplete) | 44 | 176 (Table 5.7, "
+                            "L5289-L5311) | - | 40 |"),
+            std::string::npos);
+  EXPECT_NE(with_years.find("Measured: 25 min, met (83.3 % of the limit)"), std::string::npos);
   // Bad input: exit code 2.
   EXPECT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --quick --threads 0 > /dev/null 2>&1"),
             2);
