@@ -131,7 +131,15 @@ int main(int argc, char** argv) {
 
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<bench::Row> rows;
+    meta.cases_glob = case_glob;
     if (merge && std::filesystem::exists(out + "/results.csv")) {
+      // The kept rows come from the earlier run(s): name them in the report.
+      if (std::filesystem::exists(out + "/meta.json")) {
+        const bench::ReportMeta before = bench::ReadMetaJson(out + "/meta.json");
+        meta.earlier = before.earlier;
+        meta.earlier.push_back({before.command, before.date_utc, before.git_revision,
+                                before.load_average, before.cases_glob, before.total_wall_s});
+      }
       std::set<std::string> rerun;
       for (const bench::CaseSpec& c : cases) rerun.insert(c.id);
       for (bench::Row& r : bench::ReadResultsCsv(out + "/results.csv")) {

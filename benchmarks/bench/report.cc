@@ -273,7 +273,17 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
   md << "- Source revision: " << m.git_revision << "; build type " << m.build_type << "\n";
   md << "- Solver linked: " << m.solver << "; external programs: " << m.external << "\n";
   md << "- Matrix solves: " << m.threads << " CBC thread(s), time limit " << G(m.time_limit_s)
-     << " s each, scenarios matching `" << m.scenario_glob << "`\n\n";
+     << " s each, scenarios matching `" << m.scenario_glob << "`\n";
+  if (!m.earlier.empty()) {
+    md << "- **Partial re-run** (`--merge`): this command re-ran the cases matching `"
+       << m.cases_glob << "`; every other row comes from an earlier run:\n";
+    for (const EarlierRun& e : m.earlier) {
+      md << "  - " << e.date_utc << ", revision " << e.git_revision << ", cases `"
+         << e.cases_glob << "`, load average at start " << e.load_average << ", "
+         << Sec(e.total_wall_s) << " s: `" << e.command << "`\n";
+    }
+  }
+  md << "\n";
   md << "Every run is a separate child process (fork), one after another, so that timings do "
         "not compete with each other and the peak memory is per configuration. The machine is "
         "shared with other jobs: wall-clock times vary by up to 2-3x between runs, which is why "
@@ -1333,8 +1343,20 @@ void WriteMetaJson(const std::string& path, const ReportMeta& m) {
                             {"quick", m.quick},           {"threads", m.threads},
                             {"time_limit_s", m.time_limit_s}, {"scenario_glob", m.scenario_glob},
                             {"total_wall_s", m.total_wall_s}};
+  nlohmann::json j2 = j;
+  j2["cases_glob"] = m.cases_glob;
+  nlohmann::json earlier = nlohmann::json::array();
+  for (const EarlierRun& e : m.earlier) {
+    earlier.push_back({{"command", e.command},
+                       {"date_utc", e.date_utc},
+                       {"git_revision", e.git_revision},
+                       {"load_average", e.load_average},
+                       {"cases_glob", e.cases_glob},
+                       {"total_wall_s", e.total_wall_s}});
+  }
+  if (!earlier.empty()) j2["earlier_runs"] = earlier;
   std::ofstream out(path);
-  out << j.dump(2) << "\n";
+  out << j2.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
@@ -1356,6 +1378,19 @@ ReportMeta ReadMetaJson(const std::string& path) {
   m.time_limit_s = j.value("time_limit_s", 0.0);
   m.scenario_glob = j.value("scenario_glob", "*");
   m.total_wall_s = j.value("total_wall_s", 0.0);
+  m.cases_glob = j.value("cases_glob", "*");
+  if (j.contains("earlier_runs")) {
+    for (const auto& e : j.at("earlier_runs")) {
+      EarlierRun r;
+      r.command = e.value("command", "");
+      r.date_utc = e.value("date_utc", "");
+      r.git_revision = e.value("git_revision", "");
+      r.load_average = e.value("load_average", "");
+      r.cases_glob = e.value("cases_glob", "*");
+      r.total_wall_s = e.value("total_wall_s", 0.0);
+      m.earlier.push_back(std::move(r));
+    }
+  }
   return m;
 }
 

@@ -20,6 +20,16 @@
 
 namespace thrustsched::bench {
 
+/// A run whose rows a partial re-run (`--merge`) kept.
+struct EarlierRun {
+  std::string command;
+  std::string date_utc;
+  std::string git_revision;
+  std::string load_average;
+  std::string cases_glob;  // the cases that run (re)ran
+  double total_wall_s = 0.0;
+};
+
 struct ReportMeta {
   std::string command;         // command line as run
   std::string date_utc;        // ISO 8601
@@ -33,7 +43,11 @@ struct ReportMeta {
   int threads = 0;
   double time_limit_s = 0.0;
   std::string scenario_glob;
+  std::string cases_glob = "*";  // --cases of this run
   double total_wall_s = 0.0;
+  /// Runs whose rows this one kept (--merge), oldest first: the report names
+  /// them so that no row is credited to the wrong revision or date.
+  std::vector<EarlierRun> earlier;
   /// Section 6: one subdirectory per `thrustsched simulate` run, each with its
   /// year.json (e.g. docs/year); empty or missing: the section says so.
   std::string year_results_dir;

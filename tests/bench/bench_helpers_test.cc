@@ -157,6 +157,28 @@ TEST(Results, CsvRoundTripKeepsValuesQuotesAndEmptyCells) {
   EXPECT_THROW(ReadResultsCsv("/nonexistent/results.csv"), std::runtime_error);
 }
 
+TEST(Meta, RoundTripKeepsTheEarlierRunsOfAPartialRerun) {
+  ReportMeta m;
+  m.command = "thrustsched-bench --cases 'formulation-*' --merge";
+  m.git_revision = "abc1234";
+  m.cases_glob = "formulation-*";
+  m.total_wall_s = 12.5;
+  m.earlier.push_back({"thrustsched-bench --out x", "2026-11-22T06:43:50Z", "db60e22",
+                       "5.30 6.33 6.02", "*", 4530.8});
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "bench_helpers_meta.json").string();
+  WriteMetaJson(path, m);
+  const ReportMeta back = ReadMetaJson(path);
+  std::remove(path.c_str());
+  EXPECT_EQ(back.command, m.command);
+  EXPECT_EQ(back.cases_glob, "formulation-*");
+  ASSERT_EQ(back.earlier.size(), 1u);
+  EXPECT_EQ(back.earlier[0].git_revision, "db60e22");
+  EXPECT_EQ(back.earlier[0].cases_glob, "*");
+  EXPECT_DOUBLE_EQ(back.earlier[0].total_wall_s, 4530.8);
+  EXPECT_EQ(back.earlier[0].load_average, "5.30 6.33 6.02");
+}
+
 TEST(Results, EveryContractColumnIsAResultColumn) {
   const auto& all = ResultColumns();
   const std::set<std::string> set(all.begin(), all.end());
