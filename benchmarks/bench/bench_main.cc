@@ -138,7 +138,8 @@ int main(int argc, char** argv) {
         const bench::ReportMeta before = bench::ReadMetaJson(out + "/meta.json");
         meta.earlier = before.earlier;
         meta.earlier.push_back({before.command, before.date_utc, before.git_revision,
-                                before.load_average, before.cases_glob, before.total_wall_s});
+                                before.load_average, before.machine, before.cases_glob,
+                                before.total_wall_s});
       }
       std::set<std::string> rerun;
       for (const bench::CaseSpec& c : cases) rerun.insert(c.id);

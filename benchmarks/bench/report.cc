@@ -279,7 +279,8 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
        << m.cases_glob << "`; every other row comes from an earlier run:\n";
     for (const EarlierRun& e : m.earlier) {
       md << "  - " << e.date_utc << ", revision " << e.git_revision << ", cases `"
-         << e.cases_glob << "`, load average at start " << e.load_average << ", "
+         << e.cases_glob << "`, machine " << e.machine << ", load average at start "
+         << e.load_average << ", "
          << Sec(e.total_wall_s) << " s: `" << e.command << "`\n";
     }
   }
@@ -887,6 +888,14 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
     md << x.Str() << "\n";
     md << "A time-limited external solve reports its best objective so far (status "
           "\"Stopped on time\" / \"INTEGER NON-OPTIMAL\" / \"UNDEFINED\" when it has none).\n\n";
+    md << "glpsol's \"INTEGER EMPTY\" (no integer feasible solution) on some of these models is "
+          "a wrong verdict of GLPK 5.0's branch and bound, not a difference in the exported "
+          "model: on hcw_table41_2d it reports \"tree is empty\" after 17 nodes, with or "
+          "without `--nopresol` and `--noscale`, while the same MPS file with the binaries "
+          "fixed (FX bounds) at the external cbc's solution is solved by glpsol itself to the "
+          "same objective (0.0819588 m/s, \"INTEGER OPTIMAL SOLUTION FOUND BY MIP "
+          "PREPROCESSOR\"), and that schedule passes our checker. (Measured 2026-11-25; "
+          "tests/app/cli_external_solvers_test.cc solves smaller models with glpsol.)\n\n";
   } else {
     md << "Not run (no case with the cross-check selected).\n\n";
   }
@@ -1351,6 +1360,7 @@ void WriteMetaJson(const std::string& path, const ReportMeta& m) {
                        {"date_utc", e.date_utc},
                        {"git_revision", e.git_revision},
                        {"load_average", e.load_average},
+                       {"machine", e.machine},
                        {"cases_glob", e.cases_glob},
                        {"total_wall_s", e.total_wall_s}});
   }
@@ -1386,6 +1396,7 @@ ReportMeta ReadMetaJson(const std::string& path) {
       r.date_utc = e.value("date_utc", "");
       r.git_revision = e.value("git_revision", "");
       r.load_average = e.value("load_average", "");
+      r.machine = e.value("machine", "");
       r.cases_glob = e.value("cases_glob", "*");
       r.total_wall_s = e.value("total_wall_s", 0.0);
       m.earlier.push_back(std::move(r));

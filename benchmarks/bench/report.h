@@ -26,6 +26,7 @@ struct EarlierRun {
   std::string date_utc;
   std::string git_revision;
   std::string load_average;
+  std::string machine;
   std::string cases_glob;  // the cases that run (re)ran
   double total_wall_s = 0.0;
 };

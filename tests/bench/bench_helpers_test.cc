@@ -164,7 +164,7 @@ TEST(Meta, RoundTripKeepsTheEarlierRunsOfAPartialRerun) {
   m.cases_glob = "formulation-*";
   m.total_wall_s = 12.5;
   m.earlier.push_back({"thrustsched-bench --out x", "2026-11-22T06:43:50Z", "db60e22",
-                       "5.30 6.33 6.02", "*", 4530.8});
+                       "5.30 6.33 6.02", "Intel(R) Xeon(R) Processor, 2 cores", "*", 4530.8});
   const std::string path =
       (std::filesystem::temp_directory_path() / "bench_helpers_meta.json").string();
   WriteMetaJson(path, m);
@@ -177,6 +177,7 @@ TEST(Meta, RoundTripKeepsTheEarlierRunsOfAPartialRerun) {
   EXPECT_EQ(back.earlier[0].cases_glob, "*");
   EXPECT_DOUBLE_EQ(back.earlier[0].total_wall_s, 4530.8);
   EXPECT_EQ(back.earlier[0].load_average, "5.30 6.33 6.02");
+  EXPECT_EQ(back.earlier[0].machine, "Intel(R) Xeon(R) Processor, 2 cores");
 }
 
 TEST(Results, EveryContractColumnIsAResultColumn) {
