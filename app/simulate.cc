@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "app/commands.h"
@@ -111,6 +112,61 @@ void WriteAtomically(const std::string& path, const std::string& text) {
   fs::rename(tmp, path, ec);
   if (ec) throw std::runtime_error(path + ": cannot replace the file (" + ec.message() + ")");
 }
+
+// ---- Crash guard.
+// A cycle's solve runs inside CBC; a defect there can kill the process
+// (CoinUtils 2.11 was seen to SIGSEGV in the postsolve of CBC's preprocessing
+// on a six-thruster week), which no exception handler can catch. Before each
+// cycle, `in_progress.json` names it; a normal end of the cycle (recorded,
+// interrupted or failed with an exception) removes the file. A file that
+// survives means the process died inside that cycle: `--resume` then solves
+// the cycle with CBC's preprocessing and presolve off (the configuration that
+// avoided the crash), and the cycle's note says so. A second death in the same
+// cycle stops with an error instead of looping.
+constexpr const char* kInProgressFile = "in_progress.json";
+
+struct InProgress {
+  int cycle = 0;          // 1-based
+  bool safe = false;      // that attempt already ran without preprocessing
+};
+
+std::optional<InProgress> ReadInProgress(const std::string& path, const std::string& fingerprint) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || j.value("fingerprint", "") != fingerprint ||
+      !j.contains("cycle") || !j.at("cycle").is_number_integer()) {
+    return std::nullopt;  // not ours or unreadable: ignore, it is rewritten below
+  }
+  InProgress p;
+  p.cycle = j.at("cycle").get<int>();
+  p.safe = j.value("solver_preprocessing_off", false);
+  return p;
+}
+
+// Removes the in-progress file when the cycle ends in any way the process
+// survives (the destructor does not run when the process is killed).
+class InProgressGuard {
+ public:
+  InProgressGuard(std::string path, const std::string& fingerprint, int cycle, bool safe)
+      : path_(std::move(path)) {
+    nlohmann::json j;
+    j["cycle"] = cycle;
+    j["fingerprint"] = fingerprint;
+    j["solver_preprocessing_off"] = safe;
+    j["meaning"] = "this cycle was running; if the process is gone it died inside the cycle";
+    WriteAtomically(path_, j.dump(1) + "\n");
+  }
+  ~InProgressGuard() {
+    std::error_code ec;
+    fs::remove(path_, ec);
+  }
+  InProgressGuard(const InProgressGuard&) = delete;
+  InProgressGuard& operator=(const InProgressGuard&) = delete;
+
+ private:
+  std::string path_;
+};
 
 milp::SolveStatus ParseStatus(const std::string& name, const std::string& path) {
   for (milp::SolveStatus s :
@@ -906,6 +962,11 @@ int RunSimulate(const SimulateArgs& a) {
   auto simulator = std::make_shared<const dynamics::GeoSimulator>(*s.geo);
   const std::shared_ptr<const milp::Solver> solver(milp::MakeCbcSolver().release());
   const transcription::LongHorizonSimulation run(s.problem, setup.options, simulator, solver);
+  // The same run with CBC's preprocessing and presolve off, for a cycle that
+  // killed an earlier process (crash guard above).
+  transcription::LongHorizonOptions safe_options = setup.options;
+  safe_options.solve.solve.presolve = false;
+  const transcription::LongHorizonSimulation safe_run(s.problem, safe_options, simulator, solver);
   const int total = run.num_cycles();
   const int target = a.cycles > 0 ? std::min(a.cycles, total) : total;
 
@@ -956,7 +1017,35 @@ int RunSimulate(const SimulateArgs& a) {
         err << "cycle " << k + 1 << "/" << total << " " << Utc(epoch, run.Times(k).start_s)
             << ": solving...\n";
       }
-      CycleRecord rec = run.RunCycle(&state);
+      const std::string in_progress = dir + "/" + kInProgressFile;
+      const std::optional<InProgress> died = ReadInProgress(in_progress, setup.fingerprint);
+      const bool retry = died.has_value() && died->cycle == k + 1;
+      if (retry && died->safe) {
+        throw std::runtime_error(
+            "cycle " + std::to_string(k + 1) + " ended the process twice (the second time with "
+            "CBC preprocessing off): the solver crashes on this cycle's MILP; " + in_progress +
+            " records it (remove that file to try again)");
+      }
+      if (retry && !a.quiet) {
+        err << "note: an earlier run died while solving cycle " << k + 1
+            << " (a crash inside the solver); solving it with CBC preprocessing off\n";
+      }
+      CycleRecord rec;
+      {
+        InProgressGuard guard(in_progress, setup.fingerprint, k + 1, retry);
+        // Test hook: the process dies inside cycle N, as in a solver crash
+        // (tests/app/simulate_test.cc, SimulateCli.SolverCrashIsRetriedOnResume).
+        if (const char* die = std::getenv("THRUSTSCHED_TEST_DIE_IN_CYCLE")) {
+          if (std::atoi(die) == k + 1) std::abort();
+        }
+        rec = (retry ? safe_run : run).RunCycle(&state);
+      }
+      if (retry) {
+        const std::string why =
+            "an earlier run died inside this cycle's solve (solver crash); solved with CBC "
+            "preprocessing and presolve off";
+        rec.note = rec.note.empty() ? why : rec.note + "; " + why;
+      }
       // Ctrl-C during the solve: the cycle is incomplete and not recorded.
       // Ctrl-C after it (replay): the cycle is complete and recorded.
       interrupted = rec.interrupted || InterruptWatcher::interrupted();

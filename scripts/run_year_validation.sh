@@ -50,9 +50,19 @@ if [[ $summary_only -eq 0 ]]; then
     scenario="$root/data/scenarios/year/$name.json"
     [[ -f "$scenario" ]] || { echo "no scenario $scenario" >&2; exit 2; }
     echo "[$(date +%T)] start $name -> $out/$name (log $out/$name.log)"
+    # A run killed by a signal other than Ctrl-C/TERM (a solver crash) is
+    # resumed: `simulate --resume` re-solves the cycle that died with CBC's
+    # preprocessing off (its crash guard), at most 3 times per name.
     # shellcheck disable=SC2086
-    ( "$cli" simulate "$scenario" --out "$out/$name" $resume > "$out/$name.log" 2>&1;
-      echo "[$(date +%T)] $name finished, exit $?" ) &
+    ( "$cli" simulate "$scenario" --out "$out/$name" $resume > "$out/$name.log" 2>&1
+      rc=$?
+      for _ in 1 2 3; do
+        if [[ $rc -le 128 || $rc -eq 130 || $rc -eq 143 ]]; then break; fi
+        echo "[$(date +%T)] $name died (exit $rc, signal $((rc - 128))); resuming"
+        "$cli" simulate "$scenario" --out "$out/$name" --resume >> "$out/$name.log" 2>&1
+        rc=$?
+      done
+      echo "[$(date +%T)] $name finished, exit $rc" ) &
     running=$((running + 1))
     if [[ $running -ge $jobs ]]; then
       wait -n || true

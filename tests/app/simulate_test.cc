@@ -417,5 +417,67 @@ TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
   fs::remove_all(dir);
 }
 
+// A process killed inside a cycle (a solver crash: CoinUtils was seen to
+// SIGSEGV in CBC's postprocessing) leaves in_progress.json; --resume solves
+// that cycle with CBC preprocessing off and says so; a second death in the
+// same cycle stops with an error instead of looping.
+TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
+  const std::string dir = TempDir("sim_crash");
+  // Cycle 2 dies (test hook THRUSTSCHED_TEST_DIE_IN_CYCLE: std::abort inside the cycle).
+  const auto r = thrustsched::testing::RunProgram(
+      "env", {"THRUSTSCHED_TEST_DIE_IN_CYCLE=2", THRUSTSCHED_CLI, "simulate", kScenario, "--out",
+              dir, "--no-plots", "--cycles", "2"},
+      300);
+  ASSERT_FALSE(r.exited && r.exit_code == 0) << r.Describe();
+  ASSERT_TRUE(fs::exists(dir + "/in_progress.json")) << r.Describe();
+  const nlohmann::json mark = ReadJson(dir + "/in_progress.json");
+  EXPECT_EQ(mark["cycle"], 2);
+  EXPECT_EQ(mark["solver_preprocessing_off"], false);
+  EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 2u);  // header + cycle 1
+
+  // The same death again, now in the preprocessing-off attempt...
+  const auto r2 = thrustsched::testing::RunProgram(
+      "env", {"THRUSTSCHED_TEST_DIE_IN_CYCLE=2", THRUSTSCHED_CLI, "simulate", kScenario, "--out",
+              dir, "--no-plots", "--cycles", "2", "--resume"},
+      300);
+  ASSERT_FALSE(r2.exited && r2.exit_code == 0) << r2.Describe();
+  EXPECT_NE(r2.err.find("preprocessing off"), std::string::npos) << r2.err;
+  EXPECT_EQ(ReadJson(dir + "/in_progress.json")["solver_preprocessing_off"], true);
+  // ...is refused on the next resume, naming the cycle (exit 1, no loop).
+  const auto r3 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
+                          "--cycles", "2"},
+                         300);
+  ASSERT_TRUE(r3.exited) << r3.Describe();
+  EXPECT_EQ(r3.exit_code, 1) << r3.Describe();
+  EXPECT_NE(r3.err.find("cycle 2 ended the process twice"), std::string::npos) << r3.err;
+
+  // The first case once more, resumed without the hook: cycle 2 is solved
+  // with preprocessing off, noted, and the marker is gone.
+  nlohmann::json first = ReadJson(dir + "/in_progress.json");
+  first["solver_preprocessing_off"] = false;
+  thrustsched::testing::WriteFile(dir + "/in_progress.json", first.dump());
+  const auto r4 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
+                          "--cycles", "2"},
+                         300);
+  ASSERT_EQ(r4.exit_code, 0) << r4.Describe();
+  EXPECT_NE(r4.err.find("an earlier run died while solving cycle 2"), std::string::npos) << r4.err;
+  EXPECT_FALSE(fs::exists(dir + "/in_progress.json"));
+  const auto rows = ReadCsvRows(dir + "/cycles.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const int note = Column(rows[0], "note");
+  ASSERT_GE(note, 0);
+  EXPECT_EQ(rows[1][note], "");
+  EXPECT_NE(rows[2][note].find("solver crash"), std::string::npos) << rows[2][note];
+  EXPECT_EQ(rows[2][Column(rows[0], "rules_ok")], "true");
+  // A normal cycle leaves no marker behind either.
+  const auto r5 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
+                          "--cycles", "3"},
+                         300);
+  ASSERT_EQ(r5.exit_code, 0) << r5.Describe();
+  EXPECT_FALSE(fs::exists(dir + "/in_progress.json"));
+  EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 4u);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace thrustsched::app
