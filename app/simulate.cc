@@ -1028,7 +1028,9 @@ int RunSimulate(const SimulateArgs& a) {
       }
       if (retry && !a.quiet) {
         err << "note: an earlier run died while solving cycle " << k + 1
-            << " (a crash inside the solver); solving it with CBC preprocessing off\n";
+            << " (a crash inside the solver); solving it with CBC preprocessing off (if that run "
+               "was killed from outside instead, stop, remove "
+            << in_progress << " and resume to solve it as configured)\n";
       }
       CycleRecord rec;
       {
