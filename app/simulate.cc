@@ -962,11 +962,6 @@ int RunSimulate(const SimulateArgs& a) {
   auto simulator = std::make_shared<const dynamics::GeoSimulator>(*s.geo);
   const std::shared_ptr<const milp::Solver> solver(milp::MakeCbcSolver().release());
   const transcription::LongHorizonSimulation run(s.problem, setup.options, simulator, solver);
-  // The same run with CBC's preprocessing and presolve off, for a cycle that
-  // killed an earlier process (crash guard above).
-  transcription::LongHorizonOptions safe_options = setup.options;
-  safe_options.solve.solve.presolve = false;
-  const transcription::LongHorizonSimulation safe_run(s.problem, safe_options, simulator, solver);
   const int total = run.num_cycles();
   const int target = a.cycles > 0 ? std::min(a.cycles, total) : total;
 
@@ -1004,6 +999,12 @@ int RunSimulate(const SimulateArgs& a) {
         << "continue with --resume)\n";
   }
 
+  // Crash guard: only an earlier process can have left a marker, and only for
+  // the first cycle this run solves (each cycle's guard removes its own).
+  const std::string in_progress = dir + "/" + kInProgressFile;
+  const std::optional<InProgress> died = ReadInProgress(in_progress, setup.fingerprint);
+  const int first_cycle = state.next_cycle;
+
   bool interrupted = false;
   double consumed = 0;
   for (const CycleRecord& c : cycles) consumed += c.consumption_l1_m_s;
@@ -1017,9 +1018,7 @@ int RunSimulate(const SimulateArgs& a) {
         err << "cycle " << k + 1 << "/" << total << " " << Utc(epoch, run.Times(k).start_s)
             << ": solving...\n";
       }
-      const std::string in_progress = dir + "/" + kInProgressFile;
-      const std::optional<InProgress> died = ReadInProgress(in_progress, setup.fingerprint);
-      const bool retry = died.has_value() && died->cycle == k + 1;
+      const bool retry = k == first_cycle && died.has_value() && died->cycle == k + 1;
       if (retry && died->safe) {
         throw std::runtime_error(
             "cycle " + std::to_string(k + 1) + " ended the process twice (the second time with "
@@ -1040,13 +1039,18 @@ int RunSimulate(const SimulateArgs& a) {
         if (const char* die = std::getenv("THRUSTSCHED_TEST_DIE_IN_CYCLE")) {
           if (std::atoi(die) == k + 1) std::abort();
         }
-        rec = (retry ? safe_run : run).RunCycle(&state);
-      }
-      if (retry) {
-        const std::string why =
-            "an earlier run died inside this cycle's solve (solver crash); solved with CBC "
-            "preprocessing and presolve off";
-        rec.note = rec.note.empty() ? why : rec.note + "; " + why;
+        if (retry) {
+          // The same cycle with CBC's preprocessing and presolve off.
+          transcription::LongHorizonOptions safe = setup.options;
+          safe.solve.solve.presolve = false;
+          rec = transcription::LongHorizonSimulation(s.problem, safe, simulator, solver)
+                    .RunCycle(&state);
+          rec.note += std::string(rec.note.empty() ? "" : "; ") +
+                      "an earlier run died inside this cycle's solve (solver crash); solved with "
+                      "CBC preprocessing and presolve off";
+        } else {
+          rec = run.RunCycle(&state);
+        }
       }
       // Ctrl-C during the solve: the cycle is incomplete and not recorded.
       // Ctrl-C after it (replay): the cycle is complete and recorded.
