@@ -16,8 +16,15 @@ if [ $rc -ne 0 ] || ! grep -q "nothing to install" <<< "$out"; then
 fi
 
 if [ "$(id -u)" -eq 0 ] && command -v setpriv > /dev/null; then
+  # The unprivileged user may not be able to read the checkout (a clone in a
+  # mode-700 directory such as `mktemp -d`): it runs a readable copy.
+  copy_dir=$(mktemp -d)
+  trap 'rm -rf "$copy_dir"' EXIT
+  chmod 755 "$copy_dir"
+  install -m 644 "$script" "$copy_dir/install-deps.sh"
   out=$(THRUSTSCHED_DEPS_PACKAGES="thrustsched-no-such-package" \
-        setpriv --reuid=65534 --regid=65534 --clear-groups bash "$script" < /dev/null 2>&1); rc=$?
+        setpriv --reuid=65534 --regid=65534 --clear-groups bash "$copy_dir/install-deps.sh" \
+        < /dev/null 2>&1); rc=$?
   echo "$out"
   if [ $rc -ne 1 ] || ! grep -q "install these packages by hand: thrustsched-no-such-package" <<< "$out" \
      || ! grep -q "error: not root" <<< "$out"; then
