@@ -309,6 +309,8 @@ void ParseLongHorizon(SimulationSetup* setup) {
   if (auto nodes = lh.OptionalInteger("cycle_improve_max_nodes", 0, 2000000000)) {
     o.improve_max_nodes = *nodes;
   }
+  o.retry_without_preprocessing =
+      lh.OptionalBool("cycle_retry_without_preprocessing").value_or(o.retry_without_preprocessing);
   o.replay_samples_per_step =
       lh.OptionalInteger("replay_samples_per_step", 1, 1000).value_or(o.replay_samples_per_step);
   setup->trajectory_sample_s =
@@ -939,6 +941,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
                                       : (o.solve.solve.max_nodes >= 0
                                              ? nlohmann::json(5 * std::max(o.solve.solve.max_nodes, 1LL))
                                              : nlohmann::json(nullptr))},
+      {"cycle_retry_without_preprocessing", o.retry_without_preprocessing},
       {"replay_samples_per_step", o.replay_samples_per_step}};
   return j;
 }

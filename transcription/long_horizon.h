@@ -177,6 +177,17 @@ struct LongHorizonOptions {
   /// means 5 x the cycle's max_nodes (off when that is unlimited).
   double improve_above_gap = 0.1;
   long long improve_max_nodes = -1;
+  /// Second CBC configuration for the hard weeks: with solve.presolve on, (a)
+  /// a nominal attempt stopped by a limit without a schedule is solved again
+  /// with CBC's preprocessing and presolve off (same limits) before the
+  /// soft-window fallback, and (b) after the improvement passes a schedule
+  /// still above improve_above_gap gets a third pass: the nominal MILP with
+  /// preprocessing and presolve off, cold, with the cycle's node budget; kept if
+  /// cheaper. Measured on the six-thruster year (2034, one thruster per face,
+  /// 100 nodes per cycle): weeks that ended at 3.25 m/s (soft-window fallback)
+  /// and 5.49 m/s (gap 94 %) cost 0.36 and 0.38 m/s this way. Off by default:
+  /// the published year results (docs/year_results.md) were run without it.
+  bool retry_without_preprocessing = false;
 
   int num_cycles() const;  // 0 if the options are invalid
   /// Checks signs, finiteness and divisibility; fills *error naming the field.
@@ -351,8 +362,9 @@ class LongHorizonSimulation {
   ScheduleMilp BuildCycleMilp(const ScheduleProblem& p, int control_node) const;
   /// The improvement pass (LongHorizonOptions::improve_above_gap) on an
   /// accepted schedule; records the attempt in *rec.
-  void ImproveAccepted(const ScheduleProblem& p, int control_node, ScheduleResult* accepted,
-                       CycleRecord* rec) const;
+  /// accepted_raw: the schedule comes from the preprocessing-off retry.
+  void ImproveAccepted(const ScheduleProblem& p, int control_node, bool accepted_raw,
+                       ScheduleResult* accepted, CycleRecord* rec) const;
 
   ScheduleProblem base_;
   LongHorizonOptions options_;

@@ -124,6 +124,11 @@ TEST(SimulateSection, DefaultsAndFields) {
   EXPECT_DOUBLE_EQ(r.options.solve.solve.time_limit_s, 5);
   EXPECT_EQ(r.options.solve.solve.lp_algorithm, milp::LpAlgorithm::kPrimal);
   EXPECT_EQ(r.timeline_cycle, 1);
+  EXPECT_FALSE(s.options.retry_without_preprocessing);  // default: off
+  const SimulationSetup retry = ParseSimulationText(
+      ScenarioText(R"({"duration_s": 259200, "cycle_retry_without_preprocessing": true})"),
+      "x.json");
+  EXPECT_TRUE(retry.options.retry_without_preprocessing);
   // Different inputs, different fingerprints (a checkpoint cannot be resumed
   // with another scenario).
   EXPECT_NE(s.fingerprint, r.fingerprint);
@@ -157,6 +162,9 @@ TEST(SimulateSection, ErrorsNameTheField) {
                 .find("until_s"),
             std::string::npos);
   EXPECT_NE(ParseError(R"({"duration_s": 86400, "cycle_limit": 3})").find("unknown field"),
+            std::string::npos);
+  EXPECT_NE(ParseError(R"({"duration_s": 86400, "cycle_retry_without_preprocessing": 1})")
+                .find("long_horizon.cycle_retry_without_preprocessing"),
             std::string::npos);
   EXPECT_NE(ParseError(R"({"duration_s": 86400})", R"(
   "terminal": {"type": "free"},)")

@@ -6,10 +6,12 @@
 // thruster geometry, and a second run (resume = uninterrupted).
 #include "transcription/long_horizon.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -439,6 +441,121 @@ TEST(LongHorizonRun, ImprovementPassAfterAPoorIncumbent) {
   const CycleRecord d = run.RunCycle(&again);
   EXPECT_EQ(d.objective, c.objective);
   EXPECT_EQ(d.burns.size(), c.burns.size());
+}
+
+// CBC with a switch: with preprocessing/presolve on it stops "at a limit"
+// without a schedule (as CBC did on six-thruster weeks) when starve_presolved
+// is set; it always records the presolve flag of each call.
+class PresolveSpySolver final : public milp::Solver {
+ public:
+  explicit PresolveSpySolver(bool starve_presolved) : starve_presolved_(starve_presolved) {}
+  std::string_view name() const override { return "presolve-spy"; }
+  std::string version() const override { return "0"; }
+  mutable std::vector<bool> presolve_calls;
+
+ private:
+  milp::SolveResult DoSolve(const milp::LpData& lp, const milp::SolveOptions& o) const override {
+    presolve_calls.push_back(o.presolve);
+    if (starve_presolved_ && o.presolve) {
+      milp::SolveResult r;
+      r.status = milp::SolveStatus::kNoSolutionFound;
+      r.detail = "spy: node limit without a schedule";
+      return r;
+    }
+    return transcription::Solver()->Solve(lp, o);
+  }
+  milp::LpRelaxationResult DoSolveLpRelaxation(const milp::LpData& lp,
+                                               const milp::SolveOptions& o) const override {
+    return transcription::Solver()->SolveLpRelaxation(lp, o);
+  }
+  bool starve_presolved_;
+};
+
+// retry_without_preprocessing, first half: a nominal attempt stopped without a
+// schedule is solved again with preprocessing and presolve off before any
+// fallback; the schedule is the nominal problem's optimum (the same as CBC's
+// with presolve on), not a soft-window one.
+TEST(LongHorizonRun, RetryWithoutPreprocessingBeforeTheSoftWindow) {
+  const ScheduleProblem base = Base();
+  LongHorizonOptions o = DailyCycles(1);
+  o.retry_without_preprocessing = true;
+  const auto spy = std::make_shared<PresolveSpySolver>(true);
+  const LongHorizonSimulation run(base, o, Simulator(), spy);
+  LongHorizonState state = run.InitialState();
+  const CycleRecord c = run.RunCycle(&state);
+  ASSERT_EQ(c.attempts.size(), 2u);
+  EXPECT_EQ(c.attempts[0].status, milp::SolveStatus::kNoSolutionFound);
+  EXPECT_EQ(c.attempts[1].level, Fallback::kNone);
+  EXPECT_EQ(c.attempts[1].detail.rfind("retry with CBC preprocessing and presolve off: ", 0), 0u)
+      << c.attempts[1].detail;
+  // The nominal solve and its prefix diagnosis (SolveScheduleOptions::
+  // prefix_diagnosis_s) with presolve on, then the one retry with it off.
+  ASSERT_GE(spy->presolve_calls.size(), 2u);
+  EXPECT_EQ(std::count(spy->presolve_calls.begin(), spy->presolve_calls.end(), false), 1);
+  EXPECT_FALSE(spy->presolve_calls.back());
+  EXPECT_EQ(c.fallback, Fallback::kNone);
+  EXPECT_EQ(c.status, milp::SolveStatus::kOptimal);
+  EXPECT_TRUE(c.rules_ok);
+  // The reference: plain CBC, presolve on, no retry.
+  LongHorizonOptions plain = DailyCycles(1);
+  const LongHorizonSimulation ref_run(base, plain, Simulator(), Solver());
+  LongHorizonState ref_state = ref_run.InitialState();
+  const CycleRecord ref = ref_run.RunCycle(&ref_state);
+  ASSERT_EQ(ref.fallback, Fallback::kNone);
+  EXPECT_NEAR(c.objective, ref.objective, 3e-6 * ref.objective);  // both within 1e-6 of it
+  EXPECT_GT(c.objective, 0.1);  // the start needs North/South firing
+
+  // Without the option the same solver drives the cycle to the fallbacks.
+  o.retry_without_preprocessing = false;
+  const auto spy_off = std::make_shared<PresolveSpySolver>(true);
+  const LongHorizonSimulation off_run(base, o, Simulator(), spy_off);
+  LongHorizonState off_state = off_run.InitialState();
+  const CycleRecord off = off_run.RunCycle(&off_state);
+  EXPECT_NE(off.fallback, Fallback::kNone);
+  for (bool presolve : spy_off->presolve_calls) EXPECT_TRUE(presolve);
+  // With presolve already off (the crash guard's retry), no second attempt.
+  o.retry_without_preprocessing = true;
+  o.solve.solve.presolve = false;
+  const auto spy_raw = std::make_shared<PresolveSpySolver>(true);
+  const LongHorizonSimulation raw_run(base, o, Simulator(), spy_raw);
+  LongHorizonState raw_state = raw_run.InitialState();
+  const CycleRecord raw = raw_run.RunCycle(&raw_state);
+  for (bool presolve : spy_raw->presolve_calls) EXPECT_FALSE(presolve);
+  ASSERT_EQ(raw.attempts.size(), 1u);  // CBC (presolve off) solves it at once
+  EXPECT_EQ(raw.attempts[0].detail.find("retry"), std::string::npos);
+}
+
+// Second half: after the two improvement passes a gap still above the
+// threshold gets a third, cold with preprocessing and presolve off; the kept
+// schedule is never worse than the two-pass one.
+TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
+  const ScheduleProblem base = Base();
+  LongHorizonOptions o = DailyCycles(1);
+  o.solve.solve.relative_gap = 0.0;
+  o.solve.solve.max_nodes = 0;  // the root's incumbent only (gap 4.4 %, see above)
+  o.improve_above_gap = 1e-9;
+  o.improve_max_nodes = 200;
+  const LongHorizonSimulation two(base, o, Simulator(), Solver());
+  LongHorizonState two_state = two.InitialState();
+  const CycleRecord c2 = two.RunCycle(&two_state);
+  ASSERT_EQ(c2.attempts.size(), 3u);
+  ASSERT_GT(c2.gap, 1e-9);  // still above after two passes, so a third would run
+
+  o.retry_without_preprocessing = true;
+  const auto spy = std::make_shared<PresolveSpySolver>(false);
+  const LongHorizonSimulation three(base, o, Simulator(), spy);
+  LongHorizonState state = three.InitialState();
+  const CycleRecord c3 = three.RunCycle(&state);
+  ASSERT_EQ(c3.attempts.size(), 4u);
+  EXPECT_EQ(spy->presolve_calls, (std::vector<bool>{true, true, true, false}));
+  EXPECT_EQ(c3.attempts[3].detail.rfind("improvement pass (CBC preprocessing and presolve off, cold",
+                                        0),
+            0u)
+      << c3.attempts[3].detail;
+  EXPECT_LE(c3.objective, c2.objective + 1e-9);
+  EXPECT_GE(c3.best_bound, c2.best_bound - 1e-9);
+  EXPECT_EQ(c3.fallback, Fallback::kNone);
+  EXPECT_TRUE(c3.rules_ok);
 }
 
 TEST(LongHorizonRun, HistoryCarriedAcrossTheBoundary) {
