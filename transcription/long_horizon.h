@@ -183,10 +183,12 @@ struct LongHorizonOptions {
   /// soft-window fallback, and (b) after the improvement passes a schedule
   /// still above improve_above_gap gets a third pass: the nominal MILP with
   /// preprocessing and presolve off, cold, with the cycle's node budget; kept if
-  /// cheaper. Measured on the six-thruster year (2034, one thruster per face,
-  /// 100 nodes per cycle): weeks that ended at 3.25 m/s (soft-window fallback)
-  /// and 5.49 m/s (gap 94 %) cost 0.36 and 0.38 m/s this way. Off by default:
-  /// the published year results (docs/year_results.md) were run without it.
+  /// cheaper. A schedule accepted from (a) gets its improvement passes with
+  /// preprocessing and presolve off too. Measured on the six-thruster year
+  /// (2034, one thruster per face, 100 nodes per cycle): weeks that ended at
+  /// 3.25 m/s (soft-window fallback) and 5.49 m/s (gap 94 %) cost 0.36 and
+  /// 0.38 m/s this way. Off by default: the published year results
+  /// (docs/year_results.md) were run without it.
   bool retry_without_preprocessing = false;
 
   int num_cycles() const;  // 0 if the options are invalid

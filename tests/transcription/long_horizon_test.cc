@@ -443,12 +443,15 @@ TEST(LongHorizonRun, ImprovementPassAfterAPoorIncumbent) {
   EXPECT_EQ(d.burns.size(), c.burns.size());
 }
 
-// CBC with a switch: with preprocessing/presolve on it stops "at a limit"
+// CBC with switches: with preprocessing/presolve on it stops "at a limit"
 // without a schedule (as CBC did on six-thruster weeks) when starve_presolved
-// is set; it always records the presolve flag of each call.
+// is set; with weaken_first_raw its first solve with presolve off reports a
+// node-limit stop with the valid bound 0 (as if CBC had not closed the gap);
+// it always records the presolve flag of each call.
 class PresolveSpySolver final : public milp::Solver {
  public:
-  explicit PresolveSpySolver(bool starve_presolved) : starve_presolved_(starve_presolved) {}
+  explicit PresolveSpySolver(bool starve_presolved, bool weaken_first_raw = false)
+      : starve_presolved_(starve_presolved), weaken_first_raw_(weaken_first_raw) {}
   std::string_view name() const override { return "presolve-spy"; }
   std::string version() const override { return "0"; }
   mutable std::vector<bool> presolve_calls;
@@ -462,13 +465,21 @@ class PresolveSpySolver final : public milp::Solver {
       r.detail = "spy: node limit without a schedule";
       return r;
     }
-    return transcription::Solver()->Solve(lp, o);
+    milp::SolveResult r = transcription::Solver()->Solve(lp, o);
+    if (weaken_first_raw_ && !o.presolve &&
+        std::count(presolve_calls.begin(), presolve_calls.end(), false) == 1 && r.has_solution()) {
+      r.status = milp::SolveStatus::kFeasible;
+      r.best_bound = 0.0;  // L1 consumption >= 0: still a valid bound
+      r.gap = 1.0;
+    }
+    return r;
   }
   milp::LpRelaxationResult DoSolveLpRelaxation(const milp::LpData& lp,
                                                const milp::SolveOptions& o) const override {
     return transcription::Solver()->SolveLpRelaxation(lp, o);
   }
   bool starve_presolved_;
+  bool weaken_first_raw_;
 };
 
 // retry_without_preprocessing, first half: a nominal attempt stopped without a
@@ -556,6 +567,30 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
   EXPECT_GE(c3.best_bound, c2.best_bound - 1e-9);
   EXPECT_EQ(c3.fallback, Fallback::kNone);
   EXPECT_TRUE(c3.rules_ok);
+
+  // A schedule accepted from the retry keeps preprocessing off in its
+  // improvement passes (and gets no third pass).
+  // (CBC without preprocessing solves this cycle at its root; the spy
+  // reports that first solve with a gap, so that the passes run.)
+  const auto starved = std::make_shared<PresolveSpySolver>(true, true);
+  const LongHorizonSimulation retried(base, o, Simulator(), starved);
+  LongHorizonState retried_state = retried.InitialState();
+  const CycleRecord r = retried.RunCycle(&retried_state);
+  ASSERT_GE(r.attempts.size(), 3u) << r.attempts.back().detail;
+  ASSERT_LE(r.attempts.size(), 4u) << r.attempts.back().detail;  // two passes at most
+  EXPECT_EQ(r.attempts[1].detail.rfind("retry with CBC preprocessing and presolve off", 0), 0u)
+      << r.attempts[1].detail;
+  for (size_t i = 2; i < r.attempts.size(); ++i) {
+    EXPECT_NE(r.attempts[i].detail.find(", CBC preprocessing and presolve off, gap"),
+              std::string::npos)
+        << r.attempts[i].detail;
+  }
+  const auto first_off =
+      std::find(starved->presolve_calls.begin(), starved->presolve_calls.end(), false);
+  ASSERT_NE(first_off, starved->presolve_calls.end());
+  EXPECT_EQ(std::count(first_off, starved->presolve_calls.end(), true), 0);
+  EXPECT_EQ(r.fallback, Fallback::kNone);
+  EXPECT_TRUE(r.rules_ok);
 }
 
 TEST(LongHorizonRun, HistoryCarriedAcrossTheBoundary) {
