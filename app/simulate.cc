@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -1136,7 +1137,11 @@ int RunSimulate(const SimulateArgs& a) {
       << "consumption   " << G(sum.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
       << G(sum.delta_v_m_s, 6) << " m/s, normal delta-v " << G(sum.normal_delta_v_m_s, 5)
       << " m/s, propellant " << G(sum.propellant_kg, 5) << " kg, " << sum.burns << " burns\n"
-      << "thrust days   total " << G(sum.north_days + sum.south_days, 5) << "; N "
+      // The total is over the thrusters (as year.json's thrust_days.total):
+      // N + S covers every thruster only in the thesis's four-thruster layout
+      // (one per face gives ±R thrusters on neither face).
+      << "thrust days   total "
+      << G(std::accumulate(sum.thrust_days.begin(), sum.thrust_days.end(), 0.0), 5) << "; N "
       << G(sum.north_days, 4) << ", S " << G(sum.south_days, 4) << ", E " << G(sum.east_days, 4)
       << ", W " << G(sum.west_days, 4) << "\n"
       << "window        max |lat| " << G(sum.max_abs_lat_deg, 4) << " deg, max |lon| "

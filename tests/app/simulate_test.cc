@@ -298,6 +298,13 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   EXPECT_NEAR(sum, td["total"].get<double>(), 1e-12);
   EXPECT_NEAR(td["north"].get<double>() + td["south"].get<double>(), sum, 1e-12);
   EXPECT_NEAR(td["east"].get<double>() + td["west"].get<double>(), sum, 1e-12);
+  // The summary on stdout prints the same total (5 significant digits).
+  {
+    const size_t at = r.out.find("thrust days   total ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const double printed = std::stod(r.out.substr(at + 20, 24));
+    EXPECT_NEAR(printed, sum, 1e-4 * sum + 1e-12) << r.out.substr(at, 80);
+  }
   EXPECT_NEAR(sum * 86400.0 * 0.265 / 4850.0, dv, 1e-9);
   EXPECT_TRUE(year["box_held"].get<bool>());
   EXPECT_EQ(year["fallbacks"]["total"], 0);
