@@ -569,11 +569,10 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
       SolveScheduleOptions opt = options_.solve;
       opt.check.nonlinear.reset();
       opt.check.nonlinear_default = false;
-      if (accepted_raw) opt.solve.presolve = false;
+      if (accepted_raw || raw) opt.solve.presolve = false;
       if (elastic || raw) {
         opt.warm_start.clear();
         opt.solve.max_nodes = so.max_nodes >= 0 ? so.max_nodes : nodes;
-        if (raw) opt.solve.presolve = false;
       } else {
         opt.warm_start = accepted->schedule.burns;
         opt.solve.max_nodes = nodes;

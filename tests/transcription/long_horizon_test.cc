@@ -482,6 +482,14 @@ class PresolveSpySolver final : public milp::Solver {
   bool weaken_first_raw_;
 };
 
+// The first cycle of a fresh run of (base, o) with this solver.
+CycleRecord FirstCycle(const ScheduleProblem& base, const LongHorizonOptions& o,
+                       std::shared_ptr<const milp::Solver> solver) {
+  const LongHorizonSimulation run(base, o, Simulator(), std::move(solver));
+  LongHorizonState state = run.InitialState();
+  return run.RunCycle(&state);
+}
+
 // retry_without_preprocessing, first half: a nominal attempt stopped without a
 // schedule is solved again with preprocessing and presolve off before any
 // fallback; the schedule is the nominal problem's optimum (the same as CBC's
@@ -491,9 +499,7 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingBeforeTheSoftWindow) {
   LongHorizonOptions o = DailyCycles(1);
   o.retry_without_preprocessing = true;
   const auto spy = std::make_shared<PresolveSpySolver>(true);
-  const LongHorizonSimulation run(base, o, Simulator(), spy);
-  LongHorizonState state = run.InitialState();
-  const CycleRecord c = run.RunCycle(&state);
+  const CycleRecord c = FirstCycle(base, o, spy);
   ASSERT_EQ(c.attempts.size(), 2u);
   EXPECT_EQ(c.attempts[0].status, milp::SolveStatus::kNoSolutionFound);
   EXPECT_EQ(c.attempts[1].level, Fallback::kNone);
@@ -508,10 +514,7 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingBeforeTheSoftWindow) {
   EXPECT_EQ(c.status, milp::SolveStatus::kOptimal);
   EXPECT_TRUE(c.rules_ok);
   // The reference: plain CBC, presolve on, no retry.
-  LongHorizonOptions plain = DailyCycles(1);
-  const LongHorizonSimulation ref_run(base, plain, Simulator(), Solver());
-  LongHorizonState ref_state = ref_run.InitialState();
-  const CycleRecord ref = ref_run.RunCycle(&ref_state);
+  const CycleRecord ref = FirstCycle(base, DailyCycles(1), Solver());
   ASSERT_EQ(ref.fallback, Fallback::kNone);
   EXPECT_NEAR(c.objective, ref.objective, 3e-6 * ref.objective);  // both within 1e-6 of it
   EXPECT_GT(c.objective, 0.1);  // the start needs North/South firing
@@ -519,18 +522,14 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingBeforeTheSoftWindow) {
   // Without the option the same solver drives the cycle to the fallbacks.
   o.retry_without_preprocessing = false;
   const auto spy_off = std::make_shared<PresolveSpySolver>(true);
-  const LongHorizonSimulation off_run(base, o, Simulator(), spy_off);
-  LongHorizonState off_state = off_run.InitialState();
-  const CycleRecord off = off_run.RunCycle(&off_state);
+  const CycleRecord off = FirstCycle(base, o, spy_off);
   EXPECT_NE(off.fallback, Fallback::kNone);
   for (bool presolve : spy_off->presolve_calls) EXPECT_TRUE(presolve);
   // With presolve already off (the crash guard's retry), no second attempt.
   o.retry_without_preprocessing = true;
   o.solve.solve.presolve = false;
   const auto spy_raw = std::make_shared<PresolveSpySolver>(true);
-  const LongHorizonSimulation raw_run(base, o, Simulator(), spy_raw);
-  LongHorizonState raw_state = raw_run.InitialState();
-  const CycleRecord raw = raw_run.RunCycle(&raw_state);
+  const CycleRecord raw = FirstCycle(base, o, spy_raw);
   for (bool presolve : spy_raw->presolve_calls) EXPECT_FALSE(presolve);
   ASSERT_EQ(raw.attempts.size(), 1u);  // CBC (presolve off) solves it at once
   EXPECT_EQ(raw.attempts[0].detail.find("retry"), std::string::npos);
@@ -546,17 +545,13 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
   o.solve.solve.max_nodes = 0;  // the root's incumbent only (gap 4.4 %, see above)
   o.improve_above_gap = 1e-9;
   o.improve_max_nodes = 200;
-  const LongHorizonSimulation two(base, o, Simulator(), Solver());
-  LongHorizonState two_state = two.InitialState();
-  const CycleRecord c2 = two.RunCycle(&two_state);
+  const CycleRecord c2 = FirstCycle(base, o, Solver());
   ASSERT_EQ(c2.attempts.size(), 3u);
   ASSERT_GT(c2.gap, 1e-9);  // still above after two passes, so a third would run
 
   o.retry_without_preprocessing = true;
   const auto spy = std::make_shared<PresolveSpySolver>(false);
-  const LongHorizonSimulation three(base, o, Simulator(), spy);
-  LongHorizonState state = three.InitialState();
-  const CycleRecord c3 = three.RunCycle(&state);
+  const CycleRecord c3 = FirstCycle(base, o, spy);
   ASSERT_EQ(c3.attempts.size(), 4u);
   EXPECT_EQ(spy->presolve_calls, (std::vector<bool>{true, true, true, false}));
   EXPECT_EQ(c3.attempts[3].detail.rfind("improvement pass (CBC preprocessing and presolve off, cold",
@@ -573,9 +568,7 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
   // (CBC without preprocessing solves this cycle at its root; the spy
   // reports that first solve with a gap, so that the passes run.)
   const auto starved = std::make_shared<PresolveSpySolver>(true, true);
-  const LongHorizonSimulation retried(base, o, Simulator(), starved);
-  LongHorizonState retried_state = retried.InitialState();
-  const CycleRecord r = retried.RunCycle(&retried_state);
+  const CycleRecord r = FirstCycle(base, o, starved);
   ASSERT_GE(r.attempts.size(), 3u) << r.attempts.back().detail;
   ASSERT_LE(r.attempts.size(), 4u) << r.attempts.back().detail;  // two passes at most
   EXPECT_EQ(r.attempts[1].detail.rfind("retry with CBC preprocessing and presolve off", 0), 0u)
