@@ -25,6 +25,16 @@ def fail(msg):
     sys.exit(f"rerun_year_cycle: {msg}")
 
 
+def read_json(path, what):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except OSError as e:
+        fail(f"{what} {path}: {e.strerror}")
+    except json.JSONDecodeError as e:
+        fail(f"{what} {path}: not JSON ({e})")
+
+
 def set_field(scenario, assignment):
     if "=" not in assignment:
         fail(f"--set {assignment!r}: expected path.to.field=JSON_VALUE")
@@ -69,17 +79,19 @@ def main():
                                                   "thrustsched"))
     a = ap.parse_args()
 
-    with open(a.checkpoint) as f:
-        checkpoint = json.load(f)
-    if checkpoint.get("format") != "thrustsched-year-checkpoint-1":
+    checkpoint = read_json(a.checkpoint, "--checkpoint")
+    if not isinstance(checkpoint, dict) or checkpoint.get("format") != "thrustsched-year-checkpoint-1":
         fail(f"{a.checkpoint}: not a thrustsched year checkpoint")
     if not 1 <= a.cycle <= len(checkpoint["cycles"]):
         fail(f"--cycle {a.cycle}: the checkpoint has cycles 1..{len(checkpoint['cycles'])}")
     recorded = checkpoint["cycles"][a.cycle - 1]
-    with open(a.scenario) as f:
-        scenario = json.load(f)
+    scenario = read_json(a.scenario, "--scenario")
+    if not isinstance(scenario, dict):
+        fail(f"--scenario {a.scenario}: not a JSON object")
     for s in a.set:
         set_field(scenario, s)
+    if not os.access(a.cli, os.X_OK):
+        fail(f"--cli {a.cli}: not an executable (build first: make demo, or pass --cli)")
 
     os.makedirs(a.out, exist_ok=True)
     for name in ("checkpoint.json", "in_progress.json"):
