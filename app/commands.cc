@@ -12,11 +12,13 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
+#include "app/run_folder.h"
 #include "app/solution_import.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
@@ -57,14 +59,6 @@ std::string JoinNames(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
   return s;
-}
-
-void MakeDirectory(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) {
-    throw ScenarioError(dir + ": cannot create the output directory (" + ec.message() + ")");
-  }
 }
 
 Scenario LoadWithOverrides(const std::string& path, const ScenarioOverrides& ov) {
@@ -116,7 +110,11 @@ std::string ModelFileExtension(const std::string& path, const std::string& optio
   return ext;
 }
 
-void WriteModelFile(const std::string& path, const milp::LpData& lp, bool obfuscate) {
+// The model file of a scenario: its NAME is the scenario's name.
+void WriteModelFile(const std::string& path, const milp::LpData& model, const std::string& name,
+                    bool obfuscate) {
+  milp::LpData lp = model;
+  lp.name = name;
   const std::string ext = ModelFileExtension(path);
   try {
     if (ext == ".mps") {
@@ -195,13 +193,43 @@ std::string BurnCounts(const Scenario& s, const transcription::Schedule& sch) {
   return out;
 }
 
-void WritePlotsReport(const std::string& dir, const Scenario& s, bool nonlinear, bool no_plots,
+// Plots of a run written into `folder` (messages name its final place).
+void WritePlotsReport(const RunFolder& folder, const Scenario& s, bool nonlinear, bool no_plots,
                       std::vector<std::string>* files, std::ostream& err) {
   PlotOptions po;
   po.run_gnuplot = !no_plots;
-  const PlotResult p = WritePlots(dir, s, nonlinear, po);
+  const PlotResult p = WritePlots(folder.path(), s, nonlinear, po);
   for (const auto& f : p.images) files->push_back(f);
-  if (!p.ok && !p.message.empty()) err << "note: " << p.message << "\n";
+  if (!p.ok && !p.message.empty()) {
+    std::string message = p.message;
+    for (size_t at; (at = message.find(folder.path())) != std::string::npos;) {
+      message.replace(at, folder.path().size(), folder.target());
+    }
+    err << "note: " << message << "\n";
+  }
+}
+
+// One progress line: the phase, then what is known (root LP iterate, or
+// incumbent, bound, gap and nodes). `best` is the best incumbent seen so far.
+std::string ProgressLine(const milp::SolveProgress& p, double best) {
+  std::ostringstream os;
+  if (p.phase == milp::SolvePhase::kRootLp && !p.new_incumbent) {
+    os << "root LP relaxation";
+    if (p.lp_iterations >= 0) {
+      os << ": " << p.lp_iterations << " iterations, objective " << F(p.lp_objective)
+         << ", primal infeasibility " << F(p.lp_primal_infeasibility, 3);
+    }
+    return os.str();
+  }
+  const double inc = std::isfinite(p.objective) ? p.objective : best;
+  double gap = p.gap;
+  if (std::isnan(gap) && std::isfinite(inc) && std::isfinite(p.best_bound)) {
+    gap = milp::RelativeGap(inc, p.best_bound);
+  }
+  os << milp::ToString(p.phase) << ": incumbent " << F(inc) << ", bound " << F(p.best_bound)
+     << ", gap " << Percent(gap) << ", " << p.nodes << " nodes"
+     << (p.new_incumbent ? " (new incumbent)" : "");
+  return os.str();
 }
 
 }  // namespace
@@ -211,9 +239,10 @@ int RunSolve(const SolveArgs& a) {
   Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
   if (!a.export_lp.empty()) ModelFileExtension(a.export_lp, "--export-lp");
-  const std::string dir =
+  const std::string target =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
-  MakeDirectory(dir);
+  RunFolder folder(target, a.force, a.command_line);
+  const std::string& dir = folder.path();
   std::ostream& err = std::cerr;
   if (!a.quiet) err << "building the model: " << ModelLine(s) << "\n";
 
@@ -226,8 +255,8 @@ int RunSolve(const SolveArgs& a) {
   for (const std::string& reason : milp.infeasibility_reasons()) {
     err << "note: infeasible by construction: " << reason << "\n";
   }
-  if (!a.export_mps.empty()) WriteModelFile(a.export_mps, milp.lp(), false);
-  if (!a.export_lp.empty()) WriteModelFile(a.export_lp, milp.lp(), false);
+  if (!a.export_mps.empty()) WriteModelFile(a.export_mps, milp.lp(), s.name, false);
+  if (!a.export_lp.empty()) WriteModelFile(a.export_lp, milp.lp(), s.name, false);
 
   // Solve (progress on stderr once the solve has run for a few seconds).
   transcription::SolveScheduleOptions opt;
@@ -242,20 +271,13 @@ int RunSolve(const SolveArgs& a) {
     InterruptForTestAtIncumbent(p);
     if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
     if (quiet || p.wall_seconds < 3.0) return;
-    if (p.in_root_lp) {
-      err << "  [" << Secs(p.wall_seconds) << "] solving the root LP relaxation\n";
-      return;
-    }
-    const double inc = std::isfinite(p.objective) ? p.objective : *best;
-    double gap = p.gap;
-    if (std::isnan(gap) && std::isfinite(inc) && std::isfinite(p.best_bound)) {
-      gap = std::abs(inc - p.best_bound) / std::max(1e-10, std::abs(inc));
-    }
-    err << "  [" << Secs(p.wall_seconds) << "] incumbent " << F(inc) << ", bound "
-        << F(p.best_bound) << ", gap " << Percent(gap) << ", " << p.nodes << " nodes"
-        << (p.new_incumbent ? " (new incumbent)" : "") << "\n";
+    err << "  [" << Secs(p.wall_seconds) << "] " << ProgressLine(p, *best) << "\n";
   };
   opt.solve.interrupt = InterruptWatcher::flag();
+  opt.prefix_diagnosis_s = s.diagnosis_time_limit_s;
+  opt.announce = [quiet, &err](const std::string& what) {
+    if (!quiet) err << what << " (--no-diagnose skips this)\n";
+  };
   if (!a.quiet) {
     err << "solving with " << milp::CbcVersion() << " (time limit " << F(s.solve.time_limit_s)
         << " s, relative gap " << F(s.solve.relative_gap) << ", " << s.solve.threads
@@ -269,7 +291,13 @@ int RunSolve(const SolveArgs& a) {
     r = transcription::SolveBuilt(milp, *solver, opt);
   }
   interrupted = InterruptWatcher::interrupted();
-  if (interrupted) err << "interrupted: keeping the best schedule found so far\n";
+  if (interrupted) {
+    err << "interrupted (" << InterruptWatcher::signal_name() << ") after "
+        << Secs(Since(t_start)) << ": "
+        << (r.has_schedule() ? "checking and writing the best schedule found"
+                             : "no schedule was found; writing the summary")
+        << "\n";
+  }
 
   // Check.
   std::string nonlinear_error;
@@ -301,7 +329,7 @@ int RunSolve(const SolveArgs& a) {
       WriteTrajectoryCsv(dir + "/trajectory.csv", s, r.check, r.schedule.burns);
       files.insert(files.end(), {"schedule.csv", "trajectory.csv"});
     }
-    WritePlotsReport(dir, s, r.check.nonlinear_checked, a.no_plots, &files, err);
+    WritePlotsReport(folder, s, r.check.nonlinear_checked, a.no_plots, &files, err);
   }
   RunFacts facts;
   facts.interrupted = interrupted;
@@ -312,6 +340,8 @@ int RunSolve(const SolveArgs& a) {
     summary["check"]["nonlinear_error"] = nonlinear_error;
   }
   WriteJsonFile(dir + "/summary.json", summary);
+  const std::string replaced = folder.Commit();
+  if (!replaced.empty()) err << "note: " << replaced << "\n";
 
   // Human summary.
   std::ostream& out = std::cout;
@@ -343,6 +373,7 @@ int RunSolve(const SolveArgs& a) {
   out << "times         discretise " << Secs(r.stats.discretise_seconds) << ", build "
       << Secs(r.stats.build_seconds) << ", solve " << Secs(sr.wall_seconds);
   if (!sr.incumbents.empty()) out << " (first solution " << Secs(sr.incumbents.front().wall_seconds) << ")";
+  if (r.diagnosis_seconds > 0.0) out << ", diagnose " << Secs(r.diagnosis_seconds);
   if (r.checked) out << ", check " << Secs(r.check_seconds);
   out << ", total " << Secs(facts.total_seconds) << "\n";
   if (r.checked) {
@@ -353,7 +384,7 @@ int RunSolve(const SolveArgs& a) {
     }
     if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
   }
-  out << "output        " << dir << " (" << JoinNames(files) << ")\n";
+  out << "output        " << target << " (" << JoinNames(files) << ")\n";
   out.flush();
 
   switch (sr.status) {
@@ -374,7 +405,7 @@ int RunSolve(const SolveArgs& a) {
 int RunExport(const ExportArgs& a) {
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   const transcription::ScheduleMilp milp(s.problem, s.build);
-  WriteModelFile(a.file, milp.lp(), a.obfuscate_names);
+  WriteModelFile(a.file, milp.lp(), s.name, a.obfuscate_names);
   std::cout << "wrote " << a.file << ": " << MilpLine(milp, s) << "\n"
             << "objective: " << ToString(s.problem.objective.kind)
             << (s.problem.objective.kind == transcription::ObjectiveKind::kPropellant ? " (kg)"
@@ -389,7 +420,9 @@ int RunCheck(const CheckArgs& a) {
   std::ostream& out = std::cout;
   std::vector<std::string> files;
   bool passed = false;
-  if (!a.out_dir.empty()) MakeDirectory(a.out_dir);
+  std::optional<RunFolder> folder;
+  if (!a.out_dir.empty()) folder.emplace(a.out_dir, a.force, a.command_line);
+  const std::string dir = folder ? folder->path() : "";
   const Clock::time_point tc = Clock::now();
   if (s.impulsive()) {
     const std::vector<transcription::Impulse> imp = ReadImpulsesCsv(a.schedule, s);
@@ -403,13 +436,13 @@ int RunCheck(const CheckArgs& a) {
         << F(dv, 8) << " m/s\n";
     PrintImpulsiveCheck(out, s, c, v);
     passed = v.passed;
-    if (!a.out_dir.empty()) {
-      WriteJsonFile(a.out_dir + "/check.json", ImpulsiveCheckJson(s, c, v, Since(tc)));
-      WriteImpulsesCsv(a.out_dir + "/impulses.csv", s, imp);
-      WriteScheduleCsv(a.out_dir + "/schedule.csv", s, {});
-      WriteImpulsiveTrajectoryCsv(a.out_dir + "/trajectory.csv", s, imp);
+    if (folder) {
+      WriteJsonFile(dir + "/check.json", ImpulsiveCheckJson(s, c, v, Since(tc)));
+      WriteImpulsesCsv(dir + "/impulses.csv", s, imp);
+      WriteScheduleCsv(dir + "/schedule.csv", s, {});
+      WriteImpulsiveTrajectoryCsv(dir + "/trajectory.csv", s, imp);
       files = {"check.json", "impulses.csv", "trajectory.csv"};
-      WritePlotsReport(a.out_dir, s, false, a.no_plots, &files, std::cerr);
+      WritePlotsReport(*folder, s, false, a.no_plots, &files, std::cerr);
     }
   } else {
     const std::vector<transcription::Burn> burns = ReadScheduleCsv(a.schedule, s);
@@ -426,21 +459,25 @@ int RunCheck(const CheckArgs& a) {
     PrintCheck(out, s, r, v);
     if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
     passed = v.passed;
-    if (!a.out_dir.empty()) {
+    if (folder) {
       nlohmann::json j = CheckJson(s, r, v, Since(tc));
       j["consumption_l1_m_s"] = sch.consumption_l1_m_s;
       j["delta_v_m_s"] = sch.delta_v_m_s;
       j["propellant_kg"] = sch.propellant_kg;
       j["n_burns"] = burns.size();
       if (!nonlinear_error.empty()) j["nonlinear_error"] = nonlinear_error;
-      WriteJsonFile(a.out_dir + "/check.json", j);
-      WriteScheduleCsv(a.out_dir + "/schedule.csv", s, burns);
-      WriteTrajectoryCsv(a.out_dir + "/trajectory.csv", s, r, burns);
+      WriteJsonFile(dir + "/check.json", j);
+      WriteScheduleCsv(dir + "/schedule.csv", s, burns);
+      WriteTrajectoryCsv(dir + "/trajectory.csv", s, r, burns);
       files = {"check.json", "schedule.csv", "trajectory.csv"};
-      WritePlotsReport(a.out_dir, s, r.nonlinear_checked, a.no_plots, &files, std::cerr);
+      WritePlotsReport(*folder, s, r.nonlinear_checked, a.no_plots, &files, std::cerr);
     }
   }
-  if (!a.out_dir.empty()) out << "output        " << a.out_dir << " (" << JoinNames(files) << ")\n";
+  if (folder) {
+    const std::string replaced = folder->Commit();
+    if (!replaced.empty()) std::cerr << "note: " << replaced << "\n";
+    out << "output        " << a.out_dir << " (" << JoinNames(files) << ")\n";
+  }
   return passed ? kExitOk : kExitCheckFailed;
 }
 

@@ -27,6 +27,7 @@ struct SolveArgs {
   std::string export_mps, export_lp;
   bool quiet = false;
   bool no_plots = false;
+  bool force = false;  // replace an earlier run's files in out_dir
   std::string command_line;
 };
 int RunSolve(const SolveArgs& args);
@@ -44,6 +45,8 @@ struct CheckArgs {
   std::string schedule;  // schedule.csv (on-off) or impulses.csv (impulsive)
   std::string out_dir;   // optional: check.json, trajectory.csv, plots
   bool no_plots = false;
+  bool force = false;  // replace an earlier run's files in out_dir
+  std::string command_line;
 };
 int RunCheck(const CheckArgs& args);
 

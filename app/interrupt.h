@@ -1,21 +1,22 @@
-// Ctrl-C for long runs (`solve`, `simulate`): the first SIGINT raises a flag
-// that the solver polls (the solve stops as at a time limit and keeps its best
-// schedule), a second one ends the program at once (exit 130).
+// Stop requests for long runs (`solve`, `simulate`): the first SIGINT
+// (Ctrl-C), SIGTERM (what `timeout`, systemd and batch schedulers send) or
+// SIGHUP (the terminal closed) raises a flag that the solver polls (the solve
+// stops as at a time limit and keeps its best schedule, which is checked and
+// written); a second one ends the program at once (exit 128 + signal).
 //
 //   {
-//     InterruptWatcher watcher;                  // SIGINT now goes to the flag
+//     InterruptWatcher watcher;                  // the signals now go to the flag
 //     options.interrupt = watcher.flag();
-//     options.progress = [](const milp::SolveProgress& p) { InterruptForTestAtIncumbent(p); };
 //     result = solver.Solve(lp, options);
-//     if (watcher.interrupted()) ...
-//   }                                            // SIGINT handling restored
+//     if (watcher.interrupted()) ...             // watcher.signal_name(): "SIGTERM"
+//   }                                            // signal handling restored
 //
 // Why not a plain signal handler: CBC's driver installs its own SIGINT handler
-// while it runs (and swallows the signal in some phases). Instead SIGINT is
-// blocked in every thread (the solver's threads inherit the mask) and a
-// watcher thread takes it with sigtimedwait. A Ctrl-C still pending when the
-// watcher ends is consumed (it counts as an interrupt) instead of killing the
-// program while it writes its results.
+// while it runs (and swallows the signal in some phases). Instead the signals
+// are blocked in every thread (the solver's threads inherit the mask) and a
+// watcher thread takes them with sigtimedwait. A signal still pending when
+// the watcher ends is consumed (it counts as a stop request) instead of
+// killing the program while it writes its results.
 #ifndef THRUSTSCHED_APP_INTERRUPT_H_
 #define THRUSTSCHED_APP_INTERRUPT_H_
 
@@ -39,8 +40,10 @@ class InterruptWatcher {
 
   /// The flag to hand to milp::SolveOptions::interrupt; it outlives the watcher.
   static const std::atomic<bool>* flag();
-  /// A SIGINT was received since this watcher started.
+  /// A stop signal was received since this watcher started.
   static bool interrupted();
+  /// "SIGINT", "SIGTERM" or "SIGHUP": the first stop signal received ("" if none).
+  static const char* signal_name();
 
  private:
   void Watch();

@@ -1,5 +1,7 @@
 #include "app/json_reader.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -157,6 +159,50 @@ std::string JsonObject::FieldPath(std::string_view key) const {
   return path_ + "." + std::string(key);
 }
 
+namespace {
+
+std::string Lower(std::string t) {
+  for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return t;
+}
+
+// Levenshtein distance.
+size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// Same but for case, or one letter wrong, missing or extra.
+bool IsNearMiss(const std::string& word, const std::string& name) {
+  return EditDistance(Lower(word), Lower(name)) <= 1;
+}
+
+}  // namespace
+
+std::string ClosestName(const std::string& word, const std::vector<std::string>& names) {
+  const std::string w = Lower(word);
+  std::string best;
+  size_t best_distance = std::max<size_t>(2, w.size() / 3) + 1;
+  for (const std::string& n : names) {
+    const size_t d = EditDistance(w, Lower(n));
+    if (d < best_distance) {
+      best_distance = d;
+      best = n;
+    }
+  }
+  return best;
+}
+
 void JsonObject::Fail(std::string_view key, const std::string& message) const {
   throw ScenarioError(FieldPath(key) + ": " + message);
 }
@@ -170,7 +216,18 @@ const nlohmann::json* JsonObject::Find(std::string_view key) {
 
 const nlohmann::json& JsonObject::Require(std::string_view key) {
   const nlohmann::json* v = Find(key);
-  if (v == nullptr) Fail(key, "required field is missing");
+  if (v == nullptr) {
+    // A present key that is not read here and looks like this one is a
+    // misspelling of it, not an absence.
+    for (auto it = value_.begin(); it != value_.end(); ++it) {
+      // Only a near miss (one letter or case): other keys may be read later.
+      if (known_.count(it.key()) == 0 && IsNearMiss(it.key(), std::string(key))) {
+        throw ScenarioError(FieldPath(it.key()) + ": unknown field '" + it.key() +
+                            "'; did you mean '" + std::string(key) + "'?");
+      }
+    }
+    Fail(key, "required field is missing");
+  }
   return *v;
 }
 
@@ -299,7 +356,11 @@ void JsonObject::Finish() const {
     if (known_.count(it.key()) == 0) {
       std::string list;
       for (const std::string& k : known_) list += (list.empty() ? "" : ", ") + k;
-      throw ScenarioError(FieldPath(it.key()) + ": unknown field (accepted here: " + list + ")");
+      const std::string near =
+          ClosestName(it.key(), std::vector<std::string>(known_.begin(), known_.end()));
+      throw ScenarioError(FieldPath(it.key()) + ": unknown field '" + it.key() + "'" +
+                          (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                          " (accepted here: " + list + ")");
     }
   }
 }

@@ -46,6 +46,10 @@ auto Wrap(const std::string& path, F&& f) -> decltype(f()) {
 }
 
 /// Range a number must satisfy (always finite).
+/// The name in `names` closest to `word` (case-insensitive edit distance at
+/// most max(2, |word| / 3)), for "did you mean" messages; "" if none is close.
+std::string ClosestName(const std::string& word, const std::vector<std::string>& names);
+
 enum class Bound {
   kAny,          // any finite value
   kPositive,     // > 0

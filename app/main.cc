@@ -9,13 +9,16 @@
 // Exit codes: 0 solved (optimal or feasible) / check passed, 1 internal
 // error, 2 bad input, 3 infeasible, 4 no solution within the time limit,
 // 5 the checked schedule fails.
+#include <algorithm>
 #include <iostream>
+#include <vector>
 #include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/json_reader.h"
 #include "app/simulate.h"
 #include "milp/cbc_solver.h"
 
@@ -79,7 +82,7 @@ int main(int argc, char** argv) {
       "Scenario files are JSON, documented in data/scenarios/README.md.\n"
       "Exit codes: 0 solved (optimal or feasible) or check passed, 1 internal error, 2 bad input, "
       "3 infeasible, 4 no solution within the time limit, 5 check failed."};
-  cli.set_version_flag("--version",
+  cli.set_version_flag("-V,--version",
                        std::string("thrustsched ") + THRUSTSCHED_VERSION + " (" +
                            thrustsched::milp::CbcVersion() + ")");
   cli.require_subcommand(1);
@@ -87,6 +90,7 @@ int main(int argc, char** argv) {
   // solve
   app::SolveArgs solve;
   OverrideFlags solve_flags;
+  bool solve_no_diagnose = false;
   CLI::App* c_solve = cli.add_subcommand(
       "solve",
       "Build, solve, check and write results (summary.json, schedule.csv, trajectory.csv, SVG "
@@ -99,6 +103,12 @@ int main(int argc, char** argv) {
   c_solve->add_option("--export-lp", solve.export_lp, "also write the model as CPLEX LP");
   c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
   c_solve->add_flag("--no-plots", solve.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  c_solve->add_flag("--force", solve.force,
+                    "replace the files of an earlier run in the --out folder (without it, such a "
+                    "folder is refused with exit 2)");
+  c_solve->add_flag("--no-diagnose", solve_no_diagnose,
+                    "after a solve that stops with no schedule, do not look for a proof of "
+                    "infeasibility (scenario field solver.diagnosis_time_limit_s, default 30 s)");
 
   // export
   app::ExportArgs exp;
@@ -122,6 +132,8 @@ int main(int argc, char** argv) {
   c_check->add_option("--out", check.out_dir,
                       "also write check.json, trajectory.csv and plots to this directory");
   c_check->add_flag("--no-plots", check.no_plots, "with --out: do not run gnuplot");
+  c_check->add_flag("--force", check.force,
+                    "with --out: replace the files of an earlier run in that folder");
 
   // import-solution
   app::ImportArgs imp;
@@ -167,8 +179,39 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   c_simulate->add_flag("--resume", sim.resume,
                        "continue from the checkpoint in the output directory");
+  c_simulate->add_flag("--force", sim.force,
+                       "start over in an output directory that holds an earlier run (its files "
+                       "are removed; without --resume or --force such a directory is refused "
+                       "with exit 2)");
   c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
   c_simulate->add_flag("--no-plots", sim.no_plots, "write the gnuplot scripts but do not run gnuplot");
+
+  // `thrustsched help [command]`, and a misspelt command named as such.
+  if (argc >= 2 && std::string(argv[1]) == "help") {
+    if (argc >= 3) {
+      for (CLI::App* sub : cli.get_subcommands({})) {
+        if (sub->get_name() == argv[2]) {
+          std::cout << sub->help();
+          return app::kExitOk;
+        }
+      }
+    }
+    std::cout << cli.help();
+    return app::kExitOk;
+  }
+  if (argc >= 2 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (CLI::App* sub : cli.get_subcommands({})) names.push_back(sub->get_name());
+    const std::string word = argv[1];
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+      const std::string near = app::ClosestName(word, names);
+      std::cerr << "error: unknown subcommand '" << word << "'"
+                << (near.empty() ? "" : "; did you mean '" + near + "'?") << " (commands: ";
+      for (size_t i = 0; i < names.size(); ++i) std::cerr << (i ? ", " : "") << names[i];
+      std::cerr << "; thrustsched --help)\n";
+      return app::kExitBadInput;
+    }
+  }
 
   try {
     cli.parse(argc, argv);
@@ -186,6 +229,7 @@ int main(int argc, char** argv) {
   try {
     if (c_solve->parsed()) {
       solve.overrides = solve_flags.Get();
+      solve.overrides.no_diagnose = solve_no_diagnose;
       solve.command_line = CommandLine(argc, argv);
       return app::RunSolve(solve);
     }
@@ -193,7 +237,10 @@ int main(int argc, char** argv) {
       exp.overrides = export_flags.Get();
       return app::RunExport(exp);
     }
-    if (c_check->parsed()) return app::RunCheck(check);
+    if (c_check->parsed()) {
+      check.command_line = CommandLine(argc, argv);
+      return app::RunCheck(check);
+    }
     if (c_import->parsed()) {
       imp.overrides = import_flags.Get();
       return app::RunImportSolution(imp);

@@ -1,6 +1,7 @@
 #include "app/scenario.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -397,6 +398,9 @@ void ParseSolver(JsonObject o, Scenario* s) {
   so.log_level = o.OptionalInteger("log_level", 0, 3).value_or(so.log_level);
   so.presolve = o.OptionalBool("presolve").value_or(so.presolve);
   if (auto p = o.OptionalNumber("progress_interval_s", Bound::kPositive)) so.progress_interval_s = *p;
+  if (auto d = o.OptionalNumber("diagnosis_time_limit_s", Bound::kNonNegative)) {
+    s->diagnosis_time_limit_s = *d;
+  }
   o.Finish();
   std::string err;
   if (!so.IsValid(&err)) throw ScenarioError(o.path() + ": " + err);
@@ -600,6 +604,11 @@ Scenario ParseScenarioText(std::string_view text, const ScenarioParseOptions& op
 }
 
 Scenario LoadScenario(const std::string& path, const ScenarioParseOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw ScenarioError(path + ": is a folder, not a scenario file (give a .json file, e.g. " +
+                        (std::filesystem::path(path) / "geo_week_anzel4.json").string() + ")");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScenarioError(path + ": cannot open the scenario file");
   std::ostringstream ss;
@@ -613,6 +622,7 @@ Scenario LoadScenario(const std::string& path, const ScenarioParseOptions& optio
 }
 
 void ApplyOverrides(const ScenarioOverrides& ov, Scenario* s) {
+  if (ov.no_diagnose) s->diagnosis_time_limit_s = 0.0;
   if (ov.time_limit_s) {
     if (!(*ov.time_limit_s > 0.0) || std::isnan(*ov.time_limit_s)) {
       throw ScenarioError("--time-limit: must be > 0, got " + FormatNumber(*ov.time_limit_s));

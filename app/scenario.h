@@ -72,6 +72,11 @@ struct Scenario {
   transcription::BuildOptions build;
   milp::SolveOptions solve;             // no callbacks set
   transcription::CheckOptions check;    // .nonlinear set for GEO unless disabled
+  /// solver.diagnosis_time_limit_s: after a solve that a limit stopped with
+  /// no schedule, at most this long is spent looking for a proof of
+  /// infeasibility (transcription::SolveScheduleOptions::prefix_diagnosis_s);
+  /// 0 switches it off (as does --no-diagnose).
+  double diagnosis_time_limit_s = 30.0;
   VerdictOptions verdict;
 
   /// GEO model options (set iff model_type == kGeo).
@@ -109,6 +114,7 @@ struct ScenarioOverrides {
   std::optional<std::string> scheme;
   std::optional<std::string> formulation;
   std::optional<std::string> encoding;
+  bool no_diagnose = false;  // --no-diagnose
 };
 /// Applies the overrides. @throws ScenarioError naming the option ("--gap: ...").
 void ApplyOverrides(const ScenarioOverrides& overrides, Scenario* scenario);

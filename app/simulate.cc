@@ -19,6 +19,7 @@
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
+#include "app/run_folder.h"
 #include "dynamics/time.h"
 #include "milp/cbc_solver.h"
 
@@ -947,14 +948,44 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   return j;
 }
 
+// A folder holding an earlier run is continued (--resume) or started over
+// (--force: the earlier run's files are removed first), never silently
+// overwritten: hours of cycles would be lost.
+void PrepareFolder(const std::string& dir, const SimulateArgs& a, std::ostream& err) {
+  if (a.resume && a.force) {
+    throw ScenarioError("--resume and --force: choose one (continue the run in " + dir +
+                        ", or start it over)");
+  }
+  const FolderContents before = InspectFolder(dir);
+  if (!before.holds_run() || a.resume) return;
+  if (!a.force) {
+    throw ScenarioError(dir + " holds an earlier run (" +
+                        (fs::exists(dir + "/checkpoint.json") ? std::string("checkpoint.json, ")
+                                                              : std::string()) +
+                        std::to_string(before.run_files.size()) +
+                        " file(s)): use --resume to continue it, or --force to start over");
+  }
+  RemoveEarlierRun(dir, before);
+  if (!a.quiet) {
+    err << "note: --force: removed the earlier run's " << before.run_files.size()
+        << " file(s) in " << dir << "\n";
+  }
+}
+
 int RunSimulate(const SimulateArgs& a) {
   const Clock::time_point t_run = Clock::now();
   SimulationSetup setup = LoadSimulation(a.scenario);
   const std::string dir =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
+  std::ostream& err = std::cerr;
+  PrepareFolder(dir, a, err);
   MakeDirectory(dir);
   MakeDirectory(dir + "/cycles");
-  std::ostream& err = std::cerr;
+  WriteManifest(dir, {"checkpoint.json", kInProgressFile, "cycles.csv", "cycles", "year.json",
+                      "trajectory.csv", "gnuplot.log", "consumption.gp", "consumption.svg",
+                      "vectors.gp", "vectors.svg", "latlon.gp", "latlon.svg", "timeline.gp",
+                      "timeline.svg"},
+                a.command_line);
   const Scenario& s = setup.scenario;
   const std::string epoch = s.geo->epoch;
 

@@ -33,13 +33,15 @@ struct SimulateArgs {
   std::string out_dir;   // empty: out/<scenario file stem>
   int cycles = -1;       // > 0: stop once this many cycles (in total) are done
   bool resume = false;   // continue from out_dir/checkpoint.json
+  bool force = false;    // start over in a folder holding an earlier run (its files removed)
   bool quiet = false;    // no progress on stderr
   bool no_plots = false; // write the gnuplot scripts but do not run gnuplot
   std::string command_line;
 };
 
 /// Exit codes: 0 every requested cycle ran (fallbacks included: see year.json),
-/// 2 bad input (scenario, section, checkpoint of another scenario),
+/// 2 bad input (scenario, section, checkpoint of another scenario, a folder
+///   holding an earlier run without --resume or --force),
 /// 4 interrupted (resume with --resume), 1 internal error.
 int RunSimulate(const SimulateArgs& args);
 

@@ -1,332 +1,48 @@
-// CBC/CLP backend. The only translation unit (with mps_reader.cc) that sees
-// COIN-OR headers.
+// CBC/CLP backend. With mps_reader.cc and milp/internal/*.cc, the only code
+// that sees COIN-OR headers.
 //
-// Design (guarantees in cbc_solver.h). MILPs go through the cbc driver
-// (CbcMain0/CbcMain1 with "-solve"): its preprocessing, cut and heuristic
-// settings are what make CBC strong, and with the default seeds
-// (random_seed 0) a solve is the same run as the `cbc` program's on the
-// exported MPS file. (A hand-assembled CbcModel::branchAndBound with the
-// driver's generators and heuristics was tried first; matching the driver's
-// many internal settings by hand proved fragile, so it was dropped.) The
-// driver is not reentrant in the Debian build: it parses its arguments
-// through process-wide globals (CbcOrClpRead_mode, CoinReadGetCommand:
-// CbcSolver.o references them undefined, so the CBC_THREAD_SAFE copies are
-// not compiled in), installs a process-wide SIGINT handler around the search,
-// and CglZeroHalf's Cgl012cut keeps its tabu search in file-static arrays.
-// Two unlocked concurrent driver calls were measured to corrupt each other
-// (2 of 20 paired runs returned status -1). So driver calls are serialised by
-// a process-wide mutex. Everything else (model building, LP relaxations and
-// pure LPs through ClpSimplex/ClpPresolve, MIP-start polishing) runs
-// concurrently.
+// A MILP solve (guarantees in cbc_solver.h):
+//  1. a MIP start, if any, is polished (integers rounded, continuous columns
+//     re-optimised) and kept as the first incumbent;
+//  2. CBC's driver runs (internal/cbc_driver.cc), by default in a child
+//     process (internal/cbc_child.cc) that streams every incumbent here;
+//  3. the answer is the best of: the driver's final solution, the best
+//     incumbent it reported on the way (completed in the original column
+//     space), and the start; each is verified against the model
+//     (LpData::MaxViolation) before it counts;
+//  4. an infeasibility or "the start is optimal" claim of CBC is confirmed
+//     before it is reported (VerifyInfeasibilityClaim).
+// LP relaxations and models without integer columns are solved by CLP here.
 #include "milp/cbc_solver.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <exception>
 #include <limits>
 #include <mutex>
 #include <sstream>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
-// COIN-OR.
+// COIN-OR (version strings only).
 #include "CbcConfig.h"
-#include "CbcEventHandler.hpp"
-#include "CbcModel.hpp"
-#include "CbcSolver.hpp"
 #include "ClpConfig.h"
-#include "ClpEventHandler.hpp"
-#include "ClpPresolve.hpp"
-#include "ClpSimplex.hpp"
-#include "ClpSolve.hpp"
-#include "CoinMessageHandler.hpp"
-#include "CoinTypes.hpp"
-#include "OsiClpSolverInterface.hpp"
+#include "milp/internal/cbc_child.h"
+#include "milp/internal/cbc_driver.h"
+#include "milp/internal/clp_lp.h"
+#include "milp/internal/solve_clock.h"
 
 namespace thrustsched::milp {
 namespace {
 
-static_assert(std::is_same<CoinBigIndex, int>::value,
-              "CoinBigIndex must match Eigen's StorageIndex (int) of LpData::a_matrix");
-
+using internal::CoinArrays;
+using internal::DriverListener;
+using internal::DriverOutcome;
+using internal::DriverRequest;
+using internal::SolveClock;
 using Clock = std::chrono::steady_clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// Feasibility tolerance for accepting a point (MIP start, final solution).
-constexpr double kFeasibilityTolerance = 1e-6;
-
-// ----------------------------------------------------------------- logging
-
-// Drops every message: nothing is printed at log_level 0.
-class SilentHandler : public CoinMessageHandler {
- public:
-  SilentHandler() { setLogLevel(0); }
-  int print() override { return 0; }
-  CoinMessageHandler* clone() const override { return new SilentHandler(*this); }
-};
-
-// ----------------------------------------------------------- stop control
-
-// Shared by the event handlers of one solve (and their clones).
-struct Control {
-  Clock::time_point start;
-  Clock::time_point deadline;
-  bool has_deadline = false;
-  const std::atomic<bool>* interrupt = nullptr;
-  std::function<void(const SolveProgress&)> progress;
-  double progress_interval_s = 5.0;
-  double sign = 1.0;    // model objective = sign * (CBC objective) + offset
-  double offset = 0.0;
-  bool driver = false;  // the cbc driver is running
-  CbcModel* main = nullptr;  // the driver's branch-and-cut model, once seen
-  std::mutex mu;  // guards everything below
-  double last_bound = -kInf;  // best CBC (minimisation) bound seen
-  double last_recorded = kInf;  // best CBC (minimisation) objective recorded
-  double last_progress = -kInf;
-  std::vector<Incumbent> incumbents;
-  std::exception_ptr callback_error;
-  bool stopped_by_interrupt = false;
-  // Set by the first CBC event of the driver's search (from then on CBC's
-  // own time checks run); until then the root LP is stopped by
-  // RootLpEventHandler, which records it in root_lp_stopped.
-  std::atomic<bool> search_started{false};
-  std::atomic<bool> root_lp_stopped{false};
-
-  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
-  double Remaining() const {
-    if (!has_deadline) return kInf;
-    return std::chrono::duration<double>(deadline - Clock::now()).count();
-  }
-  bool Interrupted() const {
-    return interrupt != nullptr && interrupt->load(std::memory_order_relaxed);
-  }
-  bool ShouldStop() {
-    if (Interrupted()) {
-      stopped_by_interrupt = true;
-      return true;
-    }
-    return callback_error != nullptr || (has_deadline && Clock::now() >= deadline);
-  }
-  double ToModel(double cbc_objective) const { return sign * cbc_objective + offset; }
-
-  // Caller holds mu.
-  void Report(double wall, double objective, double bound, long long nodes, bool incumbent) {
-    if (!progress || callback_error != nullptr) return;
-    SolveProgress p;
-    p.wall_seconds = wall;
-    p.objective = objective;
-    p.best_bound = bound;
-    if (std::isfinite(objective) && std::isfinite(bound)) {
-      p.gap = std::abs(objective - bound) / std::max(1e-10, std::abs(objective));
-    }
-    p.nodes = nodes;
-    p.new_incumbent = incumbent;
-    last_progress = wall;
-    try {
-      progress(p);
-    } catch (...) {
-      callback_error = std::current_exception();
-    }
-  }
-
-  // Progress while the driver is still in its root LP (no CBC event yet).
-  void RootHeartbeat() {
-    if (!progress) return;
-    std::lock_guard<std::mutex> lock(mu);
-    const double wall = Elapsed();
-    if (callback_error != nullptr || wall - last_progress < progress_interval_s) return;
-    last_progress = wall;
-    SolveProgress p;
-    p.wall_seconds = wall;
-    p.in_root_lp = true;
-    try {
-      progress(p);
-    } catch (...) {
-      callback_error = std::current_exception();
-    }
-  }
-
-  // Records an incumbent found by our own code (MIP start, polishing).
-  void RecordOwn(double cbc_objective, double bound_model) {
-    std::lock_guard<std::mutex> lock(mu);
-    last_recorded = cbc_objective;
-    const double wall = Elapsed();
-    const double obj = ToModel(cbc_objective);
-    incumbents.push_back({wall, obj, bound_model});
-    Report(wall, obj, bound_model, 0, true);
-  }
-
-  // Looks at the model that raised an event: the driver's main branch-and-cut
-  // model (no parent; sub-searches of heuristics have one) gives incumbents,
-  // bounds and progress.
-  void Observe(CbcModel* model, bool final_event) {
-    search_started.store(true);
-    std::lock_guard<std::mutex> lock(mu);
-    if (!driver || model == nullptr || model->parentModel() != nullptr) return;
-    main = model;
-    const double best = model->getMinimizationObjValue();
-    const double wall = Elapsed();
-    const bool improved =
-        best < 1e50 && best < last_recorded - 1e-12 * std::max(1.0, std::abs(best));
-    // The bound walks the whole tree: only on news, on the progress clock and
-    // at the end of the search.
-    if (!improved && !final_event && wall - last_progress < progress_interval_s) return;
-    const double bound = model->getBestPossibleObjValue();
-    if (std::abs(bound) < 1e50 && bound > last_bound) last_bound = bound;
-    const double bound_model =
-        std::isfinite(last_bound) ? ToModel(last_bound) : (sign > 0 ? -kInf : kInf);
-    double obj_model = kNaN;
-    if (best < 1e50) obj_model = ToModel(best);
-    if (improved) {
-      last_recorded = best;
-      incumbents.push_back({wall, obj_model, bound_model});
-    }
-    if (improved || wall - last_progress >= progress_interval_s) {
-      Report(wall, obj_model, bound_model, model->getNodeCount(), improved);
-    }
-  }
-};
-
-class EventHandler : public CbcEventHandler {
- public:
-  explicit EventHandler(Control* control) : control_(control) {}
-  CbcAction event(CbcEvent which) override { return Handle(which); }
-  CbcAction event(CbcEvent which, void* /*data*/) override { return Handle(which); }
-  CbcEventHandler* clone() const override { return new EventHandler(*this); }
-
- private:
-  CbcAction Handle(CbcEvent which) {
-    // beforeSolution1/2 ask whether to accept a solution: never interfere.
-    if (which == beforeSolution1 || which == beforeSolution2) return noAction;
-    control_->Observe(model_, which == endSearch);
-    if (control_->ShouldStop()) return stop;
-    return noAction;
-  }
-  Control* control_;
-};
-
-// Stops CLP (root LP, LP relaxations) at the deadline or on interrupt.
-class LpEventHandler : public ClpEventHandler {
- public:
-  explicit LpEventHandler(Control* control) : control_(control) {}
-  int event(Event which) override {
-    if (which != endOfIteration) return -1;
-    if ((++count_ & 15) != 0) return -1;
-    return control_->ShouldStop() ? 0 : -1;
-  }
-  ClpEventHandler* clone() const override { return new LpEventHandler(*this); }
-
- private:
-  Control* control_;
-  unsigned count_ = 0;
-};
-
-// The cbc driver solves the root LP (and CglPreProcess's LPs) before its
-// search starts, without looking at its time limit or at our interrupt flag
-// (coin-or/Cbc#231, #514): on the larger scheduling models that is minutes.
-// This handler, on the driver's CLP model (its clones inherit it), stops
-// those LPs at the deadline or on interrupt; once the search has started
-// (first CBC event) it never interferes, since stopping a node LP could make
-// CBC prune that node as if it were infeasible. A stopped root LP proves
-// nothing, so the result is then "no solution" (see root_lp_stopped).
-class RootLpEventHandler : public ClpEventHandler {
- public:
-  explicit RootLpEventHandler(Control* control) : control_(control) {}
-  int event(Event which) override {
-    if (which != endOfIteration) return -1;
-    if ((++count_ & 15) != 0) return -1;
-    if (control_->search_started.load()) return -1;
-    control_->RootHeartbeat();
-    if (!control_->ShouldStop()) return -1;
-    control_->root_lp_stopped.store(true);
-    return 0;
-  }
-  ClpEventHandler* clone() const override { return new RootLpEventHandler(*this); }
-
- private:
-  Control* control_;
-  unsigned count_ = 0;
-};
-
-// The cbc driver (CbcMain0/CbcMain1) keeps state in process-wide globals:
-// one call at a time.
-std::timed_mutex& DriverMutex() {
-  static std::timed_mutex mutex;
-  return mutex;
-}
-
-// ------------------------------------------------------------- problem data
-
-double IntegerLower(double lo) {
-  if (!std::isfinite(lo)) return lo;
-  return std::ceil(lo - 1e-9 * std::max(1.0, std::abs(lo))) + 0.0;  // + 0.0: no -0
-}
-double IntegerUpper(double up) {
-  if (!std::isfinite(up)) return up;
-  return std::floor(up + 1e-9 * std::max(1.0, std::abs(up))) + 0.0;
-}
-bool IsInteger(const LpData& lp, int j) {
-  return lp.col_type[static_cast<size_t>(j)] != VarType::kContinuous;
-}
-
-// Dense arrays in CBC's minimisation form: cost = sign * c, integer bounds
-// rounded inward, infinities as COIN_DBL_MAX.
-struct CoinArrays {
-  Eigen::SparseMatrix<double, Eigen::ColMajor, int> a;
-  std::vector<double> col_lower, col_upper, cost, row_lower, row_upper;
-};
-
-CoinArrays MakeArrays(const LpData& lp, double sign, bool round_integer_bounds) {
-  CoinArrays c;
-  c.a = lp.a_matrix;
-  c.a.makeCompressed();
-  const int n = lp.num_cols(), m = lp.num_rows();
-  auto coin = [](double v) {
-    if (v == kInf) return COIN_DBL_MAX;
-    if (v == -kInf) return -COIN_DBL_MAX;
-    return v;
-  };
-  c.col_lower.resize(static_cast<size_t>(n));
-  c.col_upper.resize(static_cast<size_t>(n));
-  c.cost.resize(static_cast<size_t>(n));
-  for (int j = 0; j < n; ++j) {
-    double lo = lp.col_lower[j], up = lp.col_upper[j];
-    if (round_integer_bounds && IsInteger(lp, j)) {
-      lo = IntegerLower(lo);
-      up = IntegerUpper(up);
-    }
-    c.col_lower[static_cast<size_t>(j)] = coin(lo);
-    c.col_upper[static_cast<size_t>(j)] = coin(up);
-    c.cost[static_cast<size_t>(j)] = sign * lp.col_cost[j];
-  }
-  c.row_lower.resize(static_cast<size_t>(m));
-  c.row_upper.resize(static_cast<size_t>(m));
-  for (int i = 0; i < m; ++i) {
-    c.row_lower[static_cast<size_t>(i)] = coin(lp.row_lower[i]);
-    c.row_upper[static_cast<size_t>(i)] = coin(lp.row_upper[i]);
-  }
-  return c;
-}
-
-void LoadClp(ClpSimplex* clp, const CoinArrays& c) {
-  clp->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()),
-                   c.a.outerIndexPtr(), c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(),
-                   c.col_upper.data(), c.cost.data(), c.row_lower.data(), c.row_upper.data());
-}
-
-void LoadOsi(OsiClpSolverInterface* si, const CoinArrays& c, const LpData& lp) {
-  si->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()),
-                  c.a.outerIndexPtr(), c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(),
-                  c.col_upper.data(), c.cost.data(), c.row_lower.data(), c.row_upper.data());
-  for (int j = 0; j < lp.num_cols(); ++j) {
-    if (IsInteger(lp, j)) si->setInteger(j);
-  }
-}
 
 std::string Num(double v) {
   std::ostringstream os;
@@ -335,247 +51,86 @@ std::string Num(double v) {
   return os.str();
 }
 
-// ------------------------------------------------------------------ LP core
-
-struct LpOutcome {
-  SolveStatus status = SolveStatus::kError;
-  std::string detail;
-  double min_objective = kNaN;  // CLP objective (minimisation form)
-  Eigen::VectorXd x;
-  Eigen::VectorXd duals;  // CLP row duals (minimisation form)
-};
-
-void Silence(ClpSimplex* clp, SilentHandler* handler, int log_level) {
-  if (log_level <= 0) {
-    clp->passInMessageHandler(handler);
-    clp->setLogLevel(0);
-  } else {
-    clp->setLogLevel(std::min(log_level - 1, 4));
-  }
-}
-
-// CbcMain1 calls this at fixed points of its actions; some actions (e.g.
-// -primalS) call it without checking for null.
-int DriverCallback(CbcModel* /*model*/, int /*where_from*/) { return 0; }
-
-void RunLp(ClpSimplex* model, LpAlgorithm algorithm) {
-  switch (algorithm) {
-    case LpAlgorithm::kPrimal:
-      model->primal();
-      break;
-    case LpAlgorithm::kDual:
-      model->dual();
-      break;
-    case LpAlgorithm::kBarrier: {
-      ClpSolve how;
-      how.setSolveType(ClpSolve::useBarrier);
-      model->initialSolve(how);
-      // Clean-up from the barrier's basis (usually no iterations); it also
-      // classifies problems the barrier misjudges (it can call an unbounded
-      // LP optimal).
-      model->dual();
-      break;
-    }
-  }
-}
-
-// Solves min cost'x over the continuous relaxation with CLP. Primal and dual
-// infeasibility are told apart by a zero-objective feasibility solve.
-LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOptions& options,
-                      Control* control) {
-  LpOutcome out;
-  SilentHandler silent;
-  LpEventHandler events(control);
-  ClpSimplex model;
-  Silence(&model, &silent, options.log_level);
-  LoadClp(&model, arrays);
-  if (options.random_seed > 0) model.setRandomSeed(options.random_seed);
-  model.passInEventHandler(&events);
-  auto set_time = [&](ClpSimplex* m) {
-    const double remaining = control->Remaining();
-    if (std::isfinite(remaining)) m->setMaximumWallSeconds(std::max(remaining, 1e-3));
-  };
-  set_time(&model);
-  bool solved = false;
-  if (options.presolve && lp.num_rows() > 0) {
-    ClpPresolve presolve;
-    ClpSimplex* reduced = presolve.presolvedModel(model, 1e-8, false, 5);
-    if (reduced != nullptr) {
-      Silence(reduced, &silent, options.log_level);
-      reduced->passInEventHandler(&events);
-      set_time(reduced);
-      RunLp(reduced, options.lp_algorithm);
-      if (reduced->status() == 0) {
-        presolve.postsolve(true);
-        delete reduced;
-        model.checkSolution();
-        set_time(&model);
-        if (model.numberPrimalInfeasibilities() > 0 || model.numberDualInfeasibilities() > 0) {
-          model.primal(1);
-        }
-        solved = true;
-      } else {
-        delete reduced;
-      }
-    }
-  }
-  if (!solved) {
-    set_time(&model);
-    RunLp(&model, options.lp_algorithm);
-  }
-  const int status = model.status();
-  if (status == 0) {
-    out.status = SolveStatus::kOptimal;
-    out.min_objective = model.objectiveValue();
-    out.x = Eigen::Map<const Eigen::VectorXd>(model.primalColumnSolution(), lp.num_cols());
-    out.duals = Eigen::Map<const Eigen::VectorXd>(model.dualRowSolution(), lp.num_rows());
-  } else if (status == 1) {
-    out.status = SolveStatus::kInfeasible;
-  } else if (status == 2) {
-    // Dual infeasible: unbounded if the primal is feasible.
-    ClpSimplex feas(model);
-    Silence(&feas, &silent, options.log_level);
-    feas.passInEventHandler(&events);
-    std::vector<double> zero(static_cast<size_t>(lp.num_cols()), 0.0);
-    feas.chgObjCoefficients(zero.data());
-    set_time(&feas);
-    feas.primal();
-    if (feas.status() == 0) {
-      out.status = SolveStatus::kUnbounded;
-    } else if (feas.status() == 1) {
-      out.status = SolveStatus::kInfeasible;
-    } else {
-      out.status = SolveStatus::kUnbounded;
-      out.detail = "clp: dual infeasible; primal feasibility not established";
-    }
-  } else if (status == 3 || status == 5) {
-    out.status = SolveStatus::kNoSolutionFound;
-    out.detail = control->stopped_by_interrupt ? "interrupted" : "time limit";
-  } else {
-    out.status = SolveStatus::kError;
-    out.detail = "clp status " + std::to_string(status) + " secondary " +
-                 std::to_string(model.secondaryStatus());
-  }
-  return out;
-}
-
-// ------------------------------------------------------------ small helpers
-
-// Rounds the integer entries of x and, if there are continuous columns,
-// re-optimises them with the integers fixed. Returns false if the result is
-// not feasible within kFeasibilityTolerance.
-bool Polish(const LpData& lp, const SolveOptions& options, Control* control, Eigen::VectorXd* x) {
-  bool any_continuous = false;
-  for (int j = 0; j < lp.num_cols(); ++j) {
-    if (IsInteger(lp, j)) {
-      (*x)[j] = std::round((*x)[j]);
-    } else {
-      any_continuous = true;
-    }
-  }
-  if (any_continuous && lp.num_rows() > 0) {
-    LpData fixed = lp;
-    for (int j = 0; j < lp.num_cols(); ++j) {
-      if (IsInteger(lp, j)) {
-        fixed.col_lower[j] = (*x)[j];
-        fixed.col_upper[j] = (*x)[j];
-        fixed.col_type[static_cast<size_t>(j)] = VarType::kContinuous;
-      }
-    }
-    const double sign = lp.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0;
-    SolveOptions lp_options = options;
-    lp_options.presolve = false;
-    // Dual simplex whatever the root LP algorithm: CLP's barrier aborts the
-    // process ("primal off to infinity") on some of these fixed-integer LPs
-    // (seen on a GEO week with six thrusters).
-    lp_options.lp_algorithm = LpAlgorithm::kDual;
-    const LpOutcome r = SolveLpCore(fixed, MakeArrays(fixed, sign, false), lp_options, control);
-    if (r.status == SolveStatus::kOptimal) {
-      Eigen::VectorXd candidate = r.x;
-      for (int j = 0; j < lp.num_cols(); ++j) {
-        if (IsInteger(lp, j)) candidate[j] = (*x)[j];
-      }
-      // Keep the re-optimised point only if it is feasible and no worse.
-      if (lp.MaxViolation(candidate) <= kFeasibilityTolerance &&
-          (lp.MaxViolation(*x) > kFeasibilityTolerance ||
-           sign * lp.Objective(candidate) <= sign * lp.Objective(*x) + 1e-9)) {
-        *x = candidate;
-      }
-    }
-  }
-  return lp.MaxViolation(*x) <= kFeasibilityTolerance;
-}
-
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-double RelativeGap(double objective, double bound) {
-  if (!std::isfinite(objective) || !std::isfinite(bound)) return kInf;
-  return std::abs(objective - bound) / std::max(1e-10, std::abs(objective));
+// The driver of the Debian build keeps state in process-wide globals: in
+// this process, one call at a time (a child process has its own).
+std::timed_mutex& DriverMutex() {
+  static std::timed_mutex mutex;
+  return mutex;
 }
 
-// Handles models without rows or without columns (CBC cannot).
-SolveResult SolveTrivial(const LpData& lp) {
-  SolveResult r;
-  const int n = lp.num_cols(), m = lp.num_rows();
-  const double sign = lp.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0;
-  if (n == 0) {
-    for (int i = 0; i < m; ++i) {
-      if (lp.row_lower[i] > kFeasibilityTolerance || lp.row_upper[i] < -kFeasibilityTolerance) {
-        r.status = SolveStatus::kInfeasible;
-        r.detail = "empty model: row " + std::to_string(i) + " cannot hold with no columns";
-        return r;
-      }
-    }
-    r.status = SolveStatus::kOptimal;
-    r.x = Eigen::VectorXd(0);
-    r.objective = r.best_bound = lp.objective_offset;
-    r.gap = 0.0;
-    r.detail = "empty model (no columns)";
-    r.incumbents.push_back({0.0, r.objective, r.best_bound});
-    return r;
-  }
-  // No rows: each column on its own.
-  Eigen::VectorXd x(n);
-  bool unbounded = false;
-  for (int j = 0; j < n; ++j) {
-    double lo = lp.col_lower[j], up = lp.col_upper[j];
-    if (IsInteger(lp, j)) {
-      lo = IntegerLower(lo);
-      up = IntegerUpper(up);
-    }
-    if (lo > up) {
-      r.status = SolveStatus::kInfeasible;
-      r.detail = "no rows: integer column " + std::to_string(j) + " has no integer value in [" +
-                 Num(lp.col_lower[j]) + ", " + Num(lp.col_upper[j]) + "]";
-      return r;
-    }
-    const double c = sign * lp.col_cost[j];
-    if (c > 0.0) {
-      x[j] = lo;
-    } else if (c < 0.0) {
-      x[j] = up;
-    } else {
-      x[j] = std::min(std::max(0.0, lo), up);
-    }
-    if (!std::isfinite(x[j])) unbounded = true;
-  }
-  if (unbounded) {
-    r.status = SolveStatus::kUnbounded;
-    r.detail = "no rows: a column with nonzero cost is unbounded in its improving direction";
-    return r;
-  }
-  r.status = SolveStatus::kOptimal;
-  r.x = x;
-  r.objective = r.best_bound = lp.Objective(x);
-  r.gap = 0.0;
-  r.detail = "no rows: solved column by column";
-  r.incumbents.push_back({0.0, r.objective, r.best_bound});
-  return r;
-}
+// This process's side of a run: records incumbents (with their column values,
+// original space), forwards progress to the caller's callback, and turns the
+// interrupt flag and a throwing callback into a stop request.
+class Recorder : public DriverListener {
+ public:
+  Recorder(const LpData& lp, const SolveOptions& options, SolveClock* clock)
+      : options_(options), clock_(clock), sign_(internal::ObjectiveSign(lp)) {}
 
-// ------------------------------------------------------------ the backend
+  void OnProgress(const SolveProgress& progress) override {
+    if (progress.new_incumbent && std::isfinite(progress.objective)) {
+      last_reported_objective_ = progress.objective;
+    }
+    Report(progress);
+  }
+  void OnIncumbent(const Incumbent& incumbent, const Eigen::VectorXd& x_partial) override {
+    incumbents_.push_back(incumbent);
+    if (best_x_.size() == 0 || sign_ * incumbent.objective < sign_ * best_objective_) {
+      best_x_ = x_partial;
+      best_objective_ = incumbent.objective;
+      best_wall_ = incumbent.wall_seconds;
+    }
+  }
+  bool StopRequested() override {
+    clock_->ShouldStop();  // remembers an interrupt
+    return clock_->stopped_by_interrupt() || callback_error_ != nullptr;
+  }
+
+  // An incumbent of our own (the MIP start).
+  void RecordOwn(double objective) {
+    const double wall = clock_->Elapsed();
+    incumbents_.push_back({wall, objective, sign_ > 0 ? -kInf : kInf});
+    SolveProgress p;
+    p.wall_seconds = wall;
+    p.objective = objective;
+    p.best_bound = sign_ > 0 ? -kInf : kInf;
+    p.new_incumbent = true;
+    p.phase = SolvePhase::kRootLp;
+    p.in_root_lp = true;
+    Report(p);
+  }
+  void RethrowCallbackError() const {
+    if (callback_error_) std::rethrow_exception(callback_error_);
+  }
+  bool callback_failed() const { return callback_error_ != nullptr; }
+  const std::vector<Incumbent>& incumbents() const { return incumbents_; }
+  void AddIncumbent(const Incumbent& inc) { incumbents_.push_back(inc); }
+  const Eigen::VectorXd& best_x() const { return best_x_; }
+  double best_objective() const { return best_objective_; }
+  double best_wall() const { return best_wall_; }
+
+ private:
+  void Report(const SolveProgress& p) {
+    if (!options_.progress || callback_error_) return;
+    try {
+      options_.progress(p);
+    } catch (...) {
+      callback_error_ = std::current_exception();
+    }
+  }
+  const SolveOptions& options_;
+  SolveClock* clock_;
+  double sign_;
+  std::exception_ptr callback_error_;
+  std::vector<Incumbent> incumbents_;
+  Eigen::VectorXd best_x_;
+  double best_objective_ = std::numeric_limits<double>::quiet_NaN();
+  double best_wall_ = 0.0;
+  double last_reported_objective_ = std::numeric_limits<double>::quiet_NaN();
+};
 
 class CbcSolverImpl final : public Solver {
  public:
@@ -595,40 +150,25 @@ class CbcSolverImpl final : public Solver {
                                          const SolveOptions& options) const override;
 };
 
-void InitControl(Control* control, const LpData& lp, const SolveOptions& options) {
-  control->start = Clock::now();
-  control->has_deadline = std::isfinite(options.time_limit_s);
-  if (control->has_deadline) {
-    control->deadline =
-        control->start + std::chrono::duration_cast<Clock::duration>(
-                             std::chrono::duration<double>(options.time_limit_s));
-  }
-  control->interrupt = options.interrupt;
-  control->progress = options.progress;
-  control->progress_interval_s = options.progress_interval_s;
-  control->sign = lp.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0;
-  control->offset = lp.objective_offset;
-}
-
 LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
                                                       const SolveOptions& options) const {
-  Control control;
-  InitControl(&control, lp, options);
+  SolveClock clock(options.time_limit_s, options.interrupt);
   LpRelaxationResult r;
   LpData relaxed = lp;
   std::fill(relaxed.col_type.begin(), relaxed.col_type.end(), VarType::kContinuous);
   if (lp.num_cols() == 0 || lp.num_rows() == 0) {
-    const SolveResult t = SolveTrivial(relaxed);
+    const SolveResult t = internal::SolveTrivial(relaxed);
     r.status = t.status;
     r.detail = t.detail;
     r.objective = t.objective;
     r.x = t.x;
     if (t.status == SolveStatus::kOptimal) r.row_duals = Eigen::VectorXd::Zero(lp.num_rows());
-    r.wall_seconds = control.Elapsed();
+    r.wall_seconds = clock.Elapsed();
     return r;
   }
-  const LpOutcome o = SolveLpCore(relaxed, MakeArrays(relaxed, control.sign, false), options,
-                                  &control);
+  const double sign = internal::ObjectiveSign(lp);
+  const internal::LpOutcome o =
+      internal::SolveLpCore(relaxed, internal::MakeArrays(relaxed, sign, false), options, &clock);
   r.status = o.status;
   r.detail = o.detail.empty() ? "clp" : "clp: " + o.detail;
   if (o.status == SolveStatus::kOptimal) {
@@ -636,13 +176,16 @@ LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
     r.objective = lp.Objective(o.x);
     // CLP's duals are d(min objective)/d(rhs); the model's objective is
     // sign * (min objective) + offset.
-    r.row_duals = control.sign * o.duals;
+    r.row_duals = sign * o.duals;
   }
-  r.wall_seconds = control.Elapsed();
+  r.wall_seconds = clock.Elapsed();
   return r;
 }
 
-SolveResult FromLpOutcome(const LpData& lp, const LpOutcome& o, Control* control) {
+// A model without integer columns: CLP alone.
+SolveResult SolveContinuous(const LpData& lp, const SolveOptions& options, SolveClock* clock) {
+  const internal::LpOutcome o = internal::SolveLpCore(
+      lp, internal::MakeArrays(lp, internal::ObjectiveSign(lp), true), options, clock);
   SolveResult r;
   r.status = o.status;
   r.detail = o.detail.empty() ? "clp (no integer columns)" : "clp: " + o.detail;
@@ -651,7 +194,7 @@ SolveResult FromLpOutcome(const LpData& lp, const LpOutcome& o, Control* control
     r.objective = lp.Objective(o.x);
     r.best_bound = r.objective;
     r.gap = 0.0;
-    r.incumbents.push_back({control->Elapsed(), r.objective, r.best_bound});
+    r.incumbents.push_back({clock->Elapsed(), r.objective, r.best_bound});
   }
   return r;
 }
@@ -789,296 +332,210 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
   return undecided;
 }
 
-SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& options,
-                                     bool* cbc_claim) const {
-  if (cbc_claim != nullptr) *cbc_claim = false;
-  Control control;
-  InitControl(&control, lp, options);
-  const double sign = control.sign;
-  auto finish = [&](SolveResult r) {
-    r.solver_version = CbcVersion();
-    r.wall_seconds = control.Elapsed();
-    if (control.callback_error) std::rethrow_exception(control.callback_error);
-    return r;
-  };
-  if (lp.num_cols() == 0 || lp.num_rows() == 0) {
-    SolveResult r = SolveTrivial(lp);
-    if (r.has_solution() && options.progress) {
-      std::lock_guard<std::mutex> lock(control.mu);
-      control.Report(0.0, r.objective, r.best_bound, 0, true);
-    }
-    return finish(r);
+// The MIP start, polished; empty if none, or rejected (detail says why).
+Eigen::VectorXd PrepareStart(const LpData& lp, const SolveOptions& options, std::string* detail) {
+  if (!options.initial_solution.has_value()) return {};
+  Eigen::VectorXd x0 = *options.initial_solution;
+  if (internal::Polish(lp, options, &x0)) {
+    *detail += "initial solution accepted; ";
+    return x0;
   }
-  const CoinArrays arrays = MakeArrays(lp, sign, true);
-  if (!lp.is_mip()) {
-    return finish(FromLpOutcome(lp, SolveLpCore(lp, arrays, options, &control), &control));
-  }
+  *detail += "initial solution rejected (violation " + Num(lp.MaxViolation(x0)) + "); ";
+  return {};
+}
 
-  std::string detail;
-  SilentHandler silent;
-  const bool quiet = options.log_level <= 0;
+// Runs the driver in a child process, or here (one at a time per process:
+// the wait is not charged to this solve, so its result does not depend on
+// other threads; the interrupt flag is honoured while waiting).
+DriverOutcome RunDriver(DriverRequest* request, Recorder* recorder, std::string* detail) {
+  const SolveOptions& options = request->options;
+  if (options.cbc.separate_process) {
+    return internal::RunDriverInChild(*request, recorder, options.cbc.stop_grace_s);
+  }
+  std::unique_lock<std::timed_mutex> lock(DriverMutex(), std::defer_lock);
+  const Clock::time_point wait_start = Clock::now();
+  while (!lock.try_lock_for(std::chrono::milliseconds(50))) {
+    if (recorder->StopRequested()) break;
+  }
+  const Clock::duration waited = Clock::now() - wait_start;
+  if (waited > std::chrono::milliseconds(10)) {
+    request->clock.Shift(waited);
+    *detail += "waited " + Num(SolveClock::Seconds(waited)) +
+               " s for the CBC driver (another solve held it; not counted); ";
+  }
+  if (!lock.owns_lock()) {
+    DriverOutcome out;
+    out.stopped = out.stopped_by_request = out.root_lp_stopped = true;
+    out.detail = "stopped before the solve started";
+    return out;
+  }
+  return internal::RunDriverHere(*request, recorder);
+}
 
-  // ---- MIP start: round, re-optimise continuous part, check.
-  Eigen::VectorXd start_x;
-  double start_min = kInf;  // CBC objective of the start (minimisation form)
-  if (options.initial_solution.has_value()) {
-    Eigen::VectorXd x0 = *options.initial_solution;
-    if (Polish(lp, options, &control, &x0)) {
-      start_x = x0;
-      start_min = sign * lp.col_cost.dot(x0);
-      control.RecordOwn(start_min, sign > 0 ? -kInf : kInf);
-      detail += "initial solution accepted; ";
-    } else {
-      detail += "initial solution rejected (violation " + Num(lp.MaxViolation(x0)) + "); ";
-    }
-  }
-  const bool have_start = start_x.size() > 0;
-  auto start_result = [&](SolveStatus status, const std::string& why) {
-    SolveResult r;
-    r.status = status;
-    r.x = start_x;
-    r.objective = lp.Objective(start_x);
-    r.best_bound = status == SolveStatus::kOptimal ? r.objective : (sign > 0 ? -kInf : kInf);
-    r.gap = RelativeGap(r.objective, r.best_bound);
-    r.detail = detail + why;
-    {
-      std::lock_guard<std::mutex> lock(control.mu);
-      r.incumbents = control.incumbents;
-    }
-    return r;
+// The best verified point among the driver's final solution, the best
+// incumbent it reported on the way and the start. The driver drops its
+// incumbent when a limit falls in its root heuristics or before its
+// post-processing; the reported one is then completed in the original
+// column space (CBC's preprocessing removed some columns).
+Eigen::VectorXd ChooseSolution(const LpData& lp, const SolveOptions& options,
+                               const DriverOutcome& out, const Recorder& recorder,
+                               const Eigen::VectorXd& start_x, std::string* detail) {
+  const double sign = internal::ObjectiveSign(lp);
+  auto better = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return b.size() == 0 || sign * lp.Objective(a) < sign * lp.Objective(b) - 1e-9;
   };
-  auto limit_status = [&]() {
-    if (control.stopped_by_interrupt) return std::string("interrupted");
-    return options.max_nodes >= 0 && !control.ShouldStop() ? std::string("node limit")
-                                                           : std::string("time limit");
-  };
-
-  // ---- The cbc driver, one call at a time in this process. The time spent
-  // waiting for it is not charged to this solve (the clock and the deadline
-  // move by the wait), so a solve's result does not depend on what other
-  // threads are doing; the interrupt flag is still honoured while waiting.
-  std::unique_lock<std::timed_mutex> driver_lock(DriverMutex(), std::defer_lock);
-  {
-    const Clock::time_point wait_start = Clock::now();
-    while (!driver_lock.try_lock_for(std::chrono::milliseconds(50))) {
-      if (control.Interrupted()) break;
-    }
-    const Clock::duration waited = Clock::now() - wait_start;
-    if (waited > std::chrono::milliseconds(10)) {
-      std::lock_guard<std::mutex> lock(control.mu);
-      control.start += waited;
-      control.deadline += waited;
-      detail += "waited " + Num(std::chrono::duration<double>(waited).count()) +
-                " s for the CBC driver (another solve held it; not counted); ";
-    }
-  }
-  if (!driver_lock.owns_lock() || control.ShouldStop()) {
-    if (have_start) return finish(start_result(SolveStatus::kFeasible, limit_status()));
-    SolveResult r;
-    r.status = SolveStatus::kNoSolutionFound;
-    r.detail = detail + limit_status() + " before the solve started";
-    return finish(r);
-  }
-  OsiClpSolverInterface base;
-  LoadOsi(&base, arrays, lp);
-  if (control.has_deadline || control.interrupt != nullptr || control.progress) {
-    RootLpEventHandler root_lp_events(&control);
-    base.getModelPtr()->passInEventHandler(&root_lp_events);  // cloned
-  }
-  if (quiet) {
-    base.passInMessageHandler(&silent);
-    base.getModelPtr()->passInMessageHandler(&silent);
-    base.messageHandler()->setLogLevel(0);
-    base.getModelPtr()->setLogLevel(0);
-  }
-  base.setHintParam(OsiDoReducePrint, quiet, OsiHintTry);
-  CbcModel model(base);
-  if (quiet) {
-    model.passInMessageHandler(&silent);
-    model.setLogLevel(0);
-  }
-  EventHandler events(&control);
-  model.passInEventHandler(&events);
-  if (have_start) {
-    std::vector<std::pair<std::string, double>> mip_start;
-    mip_start.reserve(static_cast<size_t>(lp.num_cols()));
-    for (int j = 0; j < lp.num_cols(); ++j) {
-      mip_start.emplace_back(model.solver()->getColName(j), start_x[j]);
-    }
-    model.setMIPStart(mip_start);
-  }
-  // Arguments of the driver. Numbers with 17 digits.
-  auto num = [](double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof(buf), "%.17g", v);
-    return std::string(buf);
-  };
-  std::vector<std::string> args = {"thrustsched", "-log", std::to_string(quiet ? 0 : options.log_level)};
-  if (control.has_deadline) {
-    args.insert(args.end(), {"-seconds", num(std::max(control.Remaining(), 1e-3)), "-timeMode",
-                             "elapsed"});
-  }
-  args.insert(args.end(), {"-ratioGap", num(options.relative_gap), "-allowableGap",
-                           num(options.absolute_gap)});
-  if (options.random_seed > 0) {
-    // 0 keeps CBC's own default seeds (then results equal the cbc program's).
-    args.insert(args.end(), {"-randomCbcSeed", std::to_string(options.random_seed),
-                             "-randomSeed", std::to_string(options.random_seed)});
-  }
-  if (have_start) {
-    // Everything not better than the start is pruned; a completed search that
-    // finds nothing proves the start optimal.
-    args.insert(args.end(),
-                {"-cutoff", num(start_min + 1e-9 * std::max(1.0, std::abs(start_min)))});
-  }
-  if (options.objective_step > 0.0) {
-    // CBC prunes nodes whose bound exceeds incumbent - increment: stay just
-    // below the step so a solution exactly one step better is never cut off.
-    args.insert(args.end(), {"-increment", num(options.objective_step * (1.0 - 1e-4))});
-  }
-  if (!options.presolve) args.insert(args.end(), {"-preprocess", "off", "-presolve", "off"});
-  if (options.disable_knapsack_cuts) args.insert(args.end(), {"-knapsackCuts", "off"});
-  if (options.max_nodes >= 0) {
-    args.insert(args.end(), {"-maxNodes", std::to_string(options.max_nodes)});
-  }
-  if (options.threads > 1) {
-    if (CbcModel::haveMultiThreadSupport()) {
-      args.insert(args.end(), {"-threads", std::to_string(options.threads)});
-      detail += "threads=" + std::to_string(options.threads) +
-                " (CBC parallel mode, not deterministic); ";
-    } else {
-      detail += "threads>1 ignored (CBC built without thread support); ";
-    }
-  }
-  // The root LP is solved first as a separate driver action; the search then
-  // starts from its basis.
-  switch (options.lp_algorithm) {
-    case LpAlgorithm::kPrimal:
-      args.push_back("-primalS");
-      break;
-    case LpAlgorithm::kDual:
-      break;  // the driver's default
-    case LpAlgorithm::kBarrier:
-      args.push_back("-barrier");
-      break;
-  }
-  args.insert(args.end(), {"-solve", "-quit"});
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  {
-    std::lock_guard<std::mutex> lock(control.mu);
-    control.driver = true;
-  }
-  CbcSolverUsefulData driver_data;
-  CbcMain0(model, driver_data);
-  if (quiet) {
-    model.passInMessageHandler(&silent);
-    model.setLogLevel(0);
-  }
-  CbcMain1(static_cast<int>(argv.size()), argv.data(), model, DriverCallback, driver_data);
-  {
-    std::lock_guard<std::mutex> lock(control.mu);
-    control.main = nullptr;
-    control.driver = false;
-  }
-  driver_lock.unlock();
-
-  // ---- Map the result back (the driver has undone its preprocessing).
-  const int status = model.status();
-  const int secondary = model.secondaryStatus();
-  detail += "cbc status " + std::to_string(status) + " secondary " + std::to_string(secondary) +
-            ", nodes " + std::to_string(model.getNodeCount());
   Eigen::VectorXd x;
-  if (model.bestSolution() != nullptr && model.getMinimizationObjValue() < 1e50) {
-    x = Eigen::Map<const Eigen::VectorXd>(model.bestSolution(), lp.num_cols());
-    if (!Polish(lp, options, &control, &x)) {
-      detail += "; CBC solution violates the model by " + Num(lp.MaxViolation(x));
+  if (out.x.size() > 0) {
+    x = out.x;
+    if (!internal::CompletePartial(lp, options, &x)) {
+      *detail += "; CBC solution violates the model by " + Num(lp.MaxViolation(x));
       x.resize(0);
     }
   }
-  // Prefer whichever of CBC's solution and the start is better.
-  if (have_start && (x.size() == 0 || sign * lp.Objective(start_x) < sign * lp.Objective(x))) {
-    x = start_x;
+  const Eigen::VectorXd& reported = recorder.best_x();
+  const bool reported_better =
+      reported.size() > 0 &&
+      (x.size() == 0 || sign * recorder.best_objective() < sign * lp.Objective(x) - 1e-9);
+  if (reported_better) {
+    Eigen::VectorXd y = reported;
+    if (internal::CompletePartial(lp, options, &y) && better(y, x)) {
+      x = y;
+      *detail += "; kept the incumbent CBC reported at " + Num(recorder.best_wall()) +
+                 " s (its driver " + (out.x.size() > 0 ? "ended with a worse one)" : "lost it)");
+    } else {
+      *detail += "; the incumbent CBC reported at " + Num(recorder.best_wall()) +
+                 " s could not be completed into a feasible point";
+    }
   }
-  double bound_min;
-  {
-    std::lock_guard<std::mutex> lock(control.mu);
-    bound_min = control.last_bound;
+  if (start_x.size() > 0 && better(start_x, x)) x = start_x;
+  return x;
+}
+
+// An unbounded relaxation: the MILP is unbounded if it has an integer point
+// (rational data). Looks for one with a zero objective.
+SolveStatus ClassifyUnbounded(const Solver& solver, const LpData& lp, const SolveOptions& options,
+                              const SolveClock& clock, std::string* detail) {
+  LpData feasibility = lp;
+  feasibility.col_cost.setZero();
+  feasibility.objective_offset = 0.0;
+  feasibility.sense = ObjectiveSense::kMinimize;
+  SolveOptions o = options;
+  o.progress = nullptr;
+  o.initial_solution.reset();
+  o.time_limit_s = std::max(0.0, clock.Remaining());
+  const SolveResult f = solver.Solve(feasibility, o);
+  if (f.status == SolveStatus::kInfeasible) {
+    *detail += "; LP relaxation unbounded but no integer point";
+    return SolveStatus::kInfeasible;
   }
-  SolveResult r;
-  r.nodes = model.getNodeCount();
+  *detail += f.has_solution() ? "; LP relaxation unbounded and an integer point exists"
+                              : "; LP relaxation unbounded, integer feasibility not established";
+  return SolveStatus::kUnbounded;
+}
+
+// The bound to report with a solution of objective `objective`: CBC's best
+// bound, kept on the right side of the objective. When CBC ends its search
+// "optimal", its last reported bound may predate the end; the claim itself
+// says the gap is within the tolerances, so the bound is at least the
+// objective less the allowed gap (and the objective itself when the search
+// was exhausted under a cutoff at the start).
+double FinalBound(const LpData& lp, const SolveOptions& options, const DriverOutcome& out,
+                  SolveStatus status, double objective) {
+  const double sign = internal::ObjectiveSign(lp);
+  double bound = std::abs(out.bound_min) < 1e50 ? sign * out.bound_min + lp.objective_offset
+                                                : (sign > 0 ? -kInf : kInf);
+  if (status == SolveStatus::kOptimal) {
+    const double allowed = out.proven_optimal
+                               ? std::max(options.absolute_gap,
+                                          options.relative_gap * std::max(1e-10, std::abs(objective)))
+                               : 0.0;
+    const double claimed = objective - sign * allowed;
+    if (!std::isfinite(bound) || sign * bound < sign * claimed) bound = claimed;
+  }
+  if (std::isfinite(bound) && sign * bound > sign * objective) bound = objective;
+  return bound;
+}
+
+SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& options,
+                                     bool* cbc_claim) const {
+  if (cbc_claim != nullptr) *cbc_claim = false;
+  SolveClock clock(options.time_limit_s, options.interrupt);
+  Recorder recorder(lp, options, &clock);
+  auto finish = [&](SolveResult r) {
+    r.solver_version = CbcVersion();
+    r.wall_seconds = clock.Elapsed();
+    recorder.RethrowCallbackError();
+    return r;
+  };
+  if (lp.num_cols() == 0 || lp.num_rows() == 0) {
+    SolveResult r = internal::SolveTrivial(lp);
+    if (r.has_solution()) recorder.RecordOwn(r.objective);
+    return finish(r);
+  }
+  if (!lp.is_mip()) return finish(SolveContinuous(lp, options, &clock));
+
+  std::string detail;
+  const Eigen::VectorXd start_x = PrepareStart(lp, options, &detail);
+  const bool have_start = start_x.size() > 0;
+  const double sign = internal::ObjectiveSign(lp);
+  if (have_start) recorder.RecordOwn(lp.Objective(start_x));
+
+  DriverRequest request{lp, options, clock, start_x,
+                        have_start ? sign * lp.col_cost.dot(start_x) : kInf};
+  DriverOutcome out;
+  if (recorder.StopRequested()) {
+    out.stopped = out.stopped_by_request = out.root_lp_stopped = true;
+    out.detail = "stopped before the solve started";
+  } else {
+    out = RunDriver(&request, &recorder, &detail);
+  }
+  detail += out.detail;
+  const Eigen::VectorXd x = ChooseSolution(lp, options, out, recorder, start_x, &detail);
   const bool has_x = x.size() > 0;
-  const bool stopped = status == 1 || control.ShouldStop();
-  if (control.root_lp_stopped.load()) {
-    // Whatever CBC concluded from a root LP we stopped, it proves nothing.
+  auto limit = [&]() -> std::string {
+    if (clock.stopped_by_interrupt()) return "interrupted";
+    if (options.max_nodes >= 0 && !clock.DeadlinePassed() && out.status == 1) return "node limit";
+    return "time limit";
+  };
+
+  SolveResult r;
+  r.nodes = out.nodes;
+  const bool limited = out.stopped || clock.DeadlinePassed() || clock.stopped_by_interrupt();
+  if (!out.completed || out.root_lp_stopped || (limited && !out.proven_optimal)) {
+    // Whatever CBC concluded from a run that a limit stopped (an LP cut short
+    // reads as infeasible) or that we lost, it proves nothing.
     r.status = has_x ? SolveStatus::kFeasible : SolveStatus::kNoSolutionFound;
-    detail += "; " + limit_status() + " in the root LP relaxation";
-  } else if (model.isProvenOptimal() || (status == 0 && model.isProvenInfeasible() && has_x)) {
+    if (!out.completed && !limited && !has_x) r.status = SolveStatus::kError;
+    if (out.root_lp_stopped) {
+      detail += "; " + limit() + " in the root LP relaxation";
+    } else if (limited) {
+      detail += "; " + limit();
+    }
+  } else if (out.proven_optimal || (out.status == 0 && out.proven_infeasible && has_x)) {
     // (With the start as cutoff, "infeasible" means nothing better than it.)
-    r.status = SolveStatus::kOptimal;
-    if (!has_x) r.status = SolveStatus::kInfeasible;
-    if (cbc_claim != nullptr && !model.isProvenOptimal()) *cbc_claim = true;
-  } else if (model.isContinuousUnbounded()) {
-    r.status = SolveStatus::kUnbounded;
-  } else if (model.isProvenInfeasible()) {
+    r.status = has_x ? SolveStatus::kOptimal : SolveStatus::kInfeasible;
+    if (cbc_claim != nullptr && !out.proven_optimal) *cbc_claim = true;
+  } else if (out.continuous_unbounded) {
+    r.status = has_x ? SolveStatus::kUnbounded
+                     : ClassifyUnbounded(*this, lp, options, clock, &detail);
+  } else if (out.proven_infeasible) {
     r.status = SolveStatus::kInfeasible;
     if (cbc_claim != nullptr) *cbc_claim = true;
-  } else if (stopped) {
-    r.status = has_x ? SolveStatus::kFeasible : SolveStatus::kNoSolutionFound;
-    detail += "; " + limit_status();
   } else {
     r.status = SolveStatus::kError;
   }
-  if (r.status == SolveStatus::kUnbounded && !has_x) {
-    // Unbounded relaxation: the MILP is unbounded if it has an integer point
-    // (rational data). Look for one with a zero objective.
-    LpData feasibility = lp;
-    feasibility.col_cost.setZero();
-    feasibility.objective_offset = 0.0;
-    feasibility.sense = ObjectiveSense::kMinimize;
-    SolveOptions o = options;
-    o.progress = nullptr;
-    o.initial_solution.reset();
-    o.time_limit_s = std::max(0.0, control.Remaining());
-    const SolveResult f = Solve(feasibility, o);
-    if (f.status == SolveStatus::kInfeasible) {
-      r.status = SolveStatus::kInfeasible;
-      detail += "; LP relaxation unbounded but no integer point";
-    } else {
-      detail += f.has_solution() ? "; LP relaxation unbounded and an integer point exists"
-                                 : "; LP relaxation unbounded, integer feasibility not established";
-    }
-  }
-  if (has_x && (r.status == SolveStatus::kOptimal || r.status == SolveStatus::kFeasible)) {
+  if (has_x && r.has_solution()) {
     r.x = x;
     r.objective = lp.Objective(x);
-    double bound_model = std::abs(bound_min) < 1e50 ? control.ToModel(bound_min)
-                                                    : (sign > 0 ? -kInf : kInf);
-    if (r.status == SolveStatus::kOptimal) {
-      // Proven optimal within the gap tolerances. A bound outside them (or
-      // none) was not the final one (e.g. the start was proven optimal by the
-      // cutoff): the optimum itself is then the bound.
-      const double diff = std::abs(r.objective - bound_model);
-      if (!std::isfinite(bound_model) || sign * bound_model > sign * r.objective ||
-          (diff > options.absolute_gap &&
-           diff > options.relative_gap * std::max(1e-10, std::abs(r.objective)) * (1 + 1e-9))) {
-        bound_model = r.objective;
-      }
-    } else if (std::isfinite(bound_model) && sign * bound_model > sign * r.objective) {
-      bound_model = r.objective;
-    }
-    r.best_bound = bound_model;
+    r.best_bound = FinalBound(lp, options, out, r.status, r.objective);
     r.gap = RelativeGap(r.objective, r.best_bound);
-    std::lock_guard<std::mutex> lock(control.mu);
-    const double last = control.incumbents.empty() ? kNaN : control.incumbents.back().objective;
-    if (control.incumbents.empty() ||
-        std::abs(last - r.objective) > 1e-9 * std::max(1.0, std::abs(r.objective))) {
-      control.incumbents.push_back({control.Elapsed(), r.objective, r.best_bound});
-    }
   }
-  {
-    std::lock_guard<std::mutex> lock(control.mu);
-    r.incumbents = control.incumbents;
+  r.incumbents = recorder.incumbents();
+  if (r.has_solution() &&
+      (r.incumbents.empty() ||
+       std::abs(r.incumbents.back().objective - r.objective) >
+           1e-9 * std::max(1.0, std::abs(r.objective)))) {
+    r.incumbents.push_back({clock.Elapsed(), r.objective, r.best_bound});
   }
   r.detail = detail;
   return finish(r);

@@ -48,6 +48,16 @@ void CheckSize(const LpData& lp, Eigen::Index size, const char* what) {
 
 }  // namespace
 
+double IntegerLowerBound(double lower) {
+  if (!std::isfinite(lower)) return lower;
+  return std::ceil(lower - 1e-9 * std::max(1.0, std::abs(lower))) + 0.0;  // + 0.0: no -0
+}
+
+double IntegerUpperBound(double upper) {
+  if (!std::isfinite(upper)) return upper;
+  return std::floor(upper + 1e-9 * std::max(1.0, std::abs(upper))) + 0.0;
+}
+
 int LpData::num_integer_cols() const {
   return static_cast<int>(std::count_if(col_type.begin(), col_type.end(),
                                         [](VarType t) { return t != VarType::kContinuous; }));

@@ -28,6 +28,13 @@ namespace thrustsched::milp {
 
 enum class ObjectiveSense { kMinimize, kMaximize };
 
+/// Integer bounds rounded inward, after a 1e-9 relative allowance so that
+/// 2.9999999999 still admits 3 (the convention the MPS/LP writers and the
+/// solver backend share: GLPK rejects an integer column with a fractional
+/// bound). Infinite bounds are returned unchanged; never -0.
+double IntegerLowerBound(double lower);
+double IntegerUpperBound(double upper);
+
 struct LpData {
   std::string name;
   ObjectiveSense sense = ObjectiveSense::kMinimize;

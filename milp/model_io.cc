@@ -164,9 +164,6 @@ class Out {
   std::string buf_;
 };
 
-double IntegerLower(double lo);
-double IntegerUpper(double up);
-
 void CheckProblem(const LpData& problem, const char* what) {
   std::string error;
   if (!problem.IsValid(&error)) {
@@ -178,7 +175,7 @@ void CheckProblem(const LpData& problem, const char* what) {
   for (int j = 0; j < problem.num_cols(); ++j) {
     if (problem.col_type[static_cast<size_t>(j)] == VarType::kContinuous) continue;
     const double lo = problem.col_lower[j], up = problem.col_upper[j];
-    if (IntegerLower(lo) > IntegerUpper(up)) {
+    if (IntegerLowerBound(lo) > IntegerUpperBound(up)) {
       const std::string name = static_cast<size_t>(j) < problem.col_names.size()
                                    ? problem.col_names[static_cast<size_t>(j)]
                                    : "#" + std::to_string(j);
@@ -205,18 +202,6 @@ RangeEncoding EncodeRange(double lower, double upper) {
     if (upper - r == lower) return {'L', upper, r};
   }
   return {'G', lower, r0};
-}
-
-// Integer columns get integral bounds (GLPK rejects an integer column with a
-// fractional bound): lower rounded up, upper rounded down, each after a
-// 1e-9 relative allowance so that 2.9999999999 still admits 3.
-double IntegerLower(double lo) {
-  if (!std::isfinite(lo)) return lo;
-  return std::ceil(lo - 1e-9 * std::max(1.0, std::abs(lo))) + 0.0;  // + 0.0: no -0
-}
-double IntegerUpper(double up) {
-  if (!std::isfinite(up)) return up;
-  return std::floor(up + 1e-9 * std::max(1.0, std::abs(up))) + 0.0;
 }
 
 // ------------------------------------------------------------ MPS layout
@@ -420,8 +405,8 @@ void WriteMps(std::ostream& os, const LpData& problem, const MpsOptions& options
   for (int j = 0; j < n; ++j) {
     const std::string& c = cols[static_cast<size_t>(j)];
     const bool integer = problem.col_type[static_cast<size_t>(j)] != VarType::kContinuous;
-    const double lo = integer ? IntegerLower(problem.col_lower[j]) : problem.col_lower[j];
-    const double up = integer ? IntegerUpper(problem.col_upper[j]) : problem.col_upper[j];
+    const double lo = integer ? IntegerLowerBound(problem.col_lower[j]) : problem.col_lower[j];
+    const double up = integer ? IntegerUpperBound(problem.col_upper[j]) : problem.col_upper[j];
     if (integer) {
       out << (std::isfinite(lo) ? L.Make("LO", "BND", c, L.Number(lo)) : L.Make("MI", "BND", c));
       out << (std::isfinite(up) ? L.Make("UP", "BND", c, L.Number(up)) : L.Make("PL", "BND", c));
@@ -563,8 +548,8 @@ void WriteLp(std::ostream& os, const LpData& problem, const LpFormatOptions& opt
   for (int j = 0; j < n; ++j) {
     const std::string& c = cols[static_cast<size_t>(j)];
     const bool integer = problem.col_type[static_cast<size_t>(j)] != VarType::kContinuous;
-    const double lo = integer ? IntegerLower(problem.col_lower[j]) : problem.col_lower[j];
-    const double up = integer ? IntegerUpper(problem.col_upper[j]) : problem.col_upper[j];
+    const double lo = integer ? IntegerLowerBound(problem.col_lower[j]) : problem.col_lower[j];
+    const double up = integer ? IntegerUpperBound(problem.col_upper[j]) : problem.col_upper[j];
     if (lo == up) {
       out << ' ' << c << " = " << Fmt17(lo) << '\n';
     } else if (!std::isfinite(lo) && !std::isfinite(up)) {
@@ -601,7 +586,7 @@ void WriteLp(std::ostream& os, const LpData& problem, const LpFormatOptions& opt
   };
   auto pure_binary = [&](int j) {
     return problem.col_type[static_cast<size_t>(j)] == VarType::kBinary &&
-           IntegerLower(problem.col_lower[j]) == 0.0 && IntegerUpper(problem.col_upper[j]) == 1.0;
+           IntegerLowerBound(problem.col_lower[j]) == 0.0 && IntegerUpperBound(problem.col_upper[j]) == 1.0;
   };
   section("Generals", [&](int j) {
     return problem.col_type[static_cast<size_t>(j)] != VarType::kContinuous && !pure_binary(j);

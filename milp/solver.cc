@@ -57,6 +57,27 @@ std::string_view ToString(SolveStatus status) {
 
 std::ostream& operator<<(std::ostream& os, SolveStatus status) { return os << ToString(status); }
 
+double RelativeGap(double objective, double bound) {
+  if (!std::isfinite(objective) || !std::isfinite(bound)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return std::abs(objective - bound) / std::max(1e-10, std::abs(objective));
+}
+
+std::string_view ToString(SolvePhase phase) {
+  switch (phase) {
+    case SolvePhase::kRootLp:
+      return "root LP";
+    case SolvePhase::kPresolve:
+      return "preprocessing, root cuts and heuristics";
+    case SolvePhase::kSearch:
+      return "branch and bound";
+    case SolvePhase::kFinishing:
+      return "finishing";
+  }
+  return "unknown";
+}
+
 std::string_view ToString(LpAlgorithm algorithm) {
   switch (algorithm) {
     case LpAlgorithm::kPrimal:
@@ -92,6 +113,9 @@ bool SolveOptions::IsValid(std::string* error) const {
   if (std::isnan(progress_interval_s) || progress_interval_s <= 0.0) {
     return fail("progress_interval_s must be > 0, got " + Num(progress_interval_s));
   }
+  if (!std::isfinite(cbc.stop_grace_s) || cbc.stop_grace_s < 0.0) {
+    return fail("cbc.stop_grace_s must be finite and >= 0, got " + Num(cbc.stop_grace_s));
+  }
   if (initial_solution.has_value()) {
     for (Eigen::Index j = 0; j < initial_solution->size(); ++j) {
       if (!std::isfinite((*initial_solution)[j])) {
@@ -106,8 +130,7 @@ bool SolveOptions::IsValid(std::string* error) const {
 double SolveResult::TimeToGap(double rel_gap) const {
   if (!std::isfinite(best_bound)) return std::numeric_limits<double>::quiet_NaN();
   for (const Incumbent& inc : incumbents) {
-    const double g = std::abs(inc.objective - best_bound) / std::max(1e-10, std::abs(inc.objective));
-    if (g <= rel_gap) return inc.wall_seconds;
+    if (RelativeGap(inc.objective, best_bound) <= rel_gap) return inc.wall_seconds;
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

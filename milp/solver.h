@@ -40,6 +40,19 @@ enum class SolveStatus {
 std::string_view ToString(SolveStatus status);
 std::ostream& operator<<(std::ostream& os, SolveStatus status);
 
+/// |objective - bound| / max(1e-10, |objective|): the relative gap used
+/// everywhere (stopping rule, reports); +inf if either is not finite.
+double RelativeGap(double objective, double bound);
+
+/// What a MILP solve is doing when it reports progress.
+enum class SolvePhase {
+  kRootLp,     // the LP relaxation at the root (no incumbent, no bound yet)
+  kPresolve,   // the solver's preprocessing, root cuts and heuristics
+  kSearch,     // branch and bound
+  kFinishing,  // stopped; the best solution is being completed and verified
+};
+std::string_view ToString(SolvePhase phase);
+
 /// Reported to SolveOptions::progress during a solve.
 struct SolveProgress {
   double wall_seconds = 0.0;
@@ -51,6 +64,13 @@ struct SolveProgress {
   /// True while the MILP's root LP relaxation is being solved (before the
   /// search: no incumbent, no bound yet); reported every progress_interval_s.
   bool in_root_lp = false;
+  SolvePhase phase = SolvePhase::kSearch;
+  /// In the root LP: simplex iterations so far, and the current objective
+  /// (model sense, with offset; not a bound until the LP is optimal) and sum
+  /// of primal infeasibilities of the iterate. -1 / NaN when not known.
+  long long lp_iterations = -1;
+  double lp_objective = std::numeric_limits<double>::quiet_NaN();
+  double lp_primal_infeasibility = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Options of a solve. IsValid() rules: time_limit_s >= 0 (not NaN, may be
@@ -93,6 +113,14 @@ struct SolveOptions {
   /// progress_interval_s, from the solving thread. An exception thrown by it
   /// stops the solve and is rethrown by Solve().
   std::function<void(const SolveProgress&)> progress;
+  /// Optional, problem-aware completion of a solution: given x whose integer
+  /// entries are set (the others may be NaN, e.g. columns the solver's
+  /// preprocessing removed), fill in every entry and return true, or return
+  /// false if it cannot. The solver verifies the result against the model
+  /// and otherwise completes x by an LP over the continuous columns, which is
+  /// what it does without this function (e.g. the schedule MILPs propagate
+  /// their states from the on-off pattern instead).
+  std::function<bool(Eigen::VectorXd* x)> complete_solution;
   double progress_interval_s = 5.0;
   /// If set and becomes true, the solve stops as at a time limit.
   const std::atomic<bool>* interrupt = nullptr;
@@ -103,6 +131,20 @@ struct SolveOptions {
   /// Switch CBC's knapsack cover cuts off (used by the second run that checks
   /// an infeasibility claim; see cbc_solver.cc).
   bool disable_knapsack_cuts = false;
+
+  /// Settings only the CBC backend reads.
+  struct Cbc {
+    /// Run CBC's driver in a child process (fork) that streams every
+    /// incumbent to this one, rather than in this process. The child can be
+    /// stopped at any moment (inside an LP, a cut round or a heuristic), a
+    /// crash of CBC does not take this process down, and solves from several
+    /// threads run in parallel. Off: in this process, one solve at a time.
+    bool separate_process = true;
+    /// After an interrupt or the deadline, how long the child may take to
+    /// stop by itself (and hand over its final answer) before it is killed;
+    /// the incumbents it already reported are kept either way.
+    double stop_grace_s = 0.5;
+  } cbc;
 
   bool IsValid(std::string* error) const;
 };

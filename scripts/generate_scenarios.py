@@ -4,13 +4,16 @@
 that they stay consistent. Hand-edit this script, not the generated files;
 run it from the repository root:
 
-    python3 scripts/generate_scenarios.py
+    python3 scripts/generate_scenarios.py           # rewrite them
+    python3 scripts/generate_scenarios.py --check   # only compare (exit 1 if any differs)
 
 Every field is documented in data/scenarios/README.md; the published figures
 the scenarios reproduce are in data/reference/*.json.
 """
+import argparse
 import json
 import os
+import sys
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "scenarios")
 DAY = 86400
@@ -21,11 +24,25 @@ THESIS_RULES = {"max_simultaneous": 1, "min_burn_s": 300, "min_off_same_s": 1200
                 "min_gap_other_s": 300}
 
 
+# --check: compare instead of writing (names of the files that differ).
+CHECK_ONLY = False
+DIFFERENT = []
+
+
 def write(name, scenario):
     path = os.path.join(OUT, name + ".json")
+    text = json.dumps(scenario, indent=2) + "\n"
+    if CHECK_ONLY:
+        try:
+            with open(path) as f:
+                same = f.read() == text
+        except OSError:
+            same = False
+        if not same:
+            DIFFERENT.append(os.path.relpath(path))
+        return
     with open(path, "w") as f:
-        json.dump(scenario, f, indent=2)
-        f.write("\n")
+        f.write(text)
     print("wrote", os.path.relpath(path))
 
 
@@ -221,7 +238,26 @@ def serra_cases():
         **di_common))
 
 
-if __name__ == "__main__":
+def main():
+    parser = argparse.ArgumentParser(
+        description="Rewrite the generated scenario files of data/scenarios/ (thesis Tables 4.1 "
+                    "and 4.2, the GEO weeks, the Serra rendezvous cases) from this script.")
+    parser.add_argument("--check", action="store_true",
+                        help="write nothing; list the generated files that differ from what this "
+                             "script would write (exit 1 if any)")
+    args = parser.parse_args()
+    global CHECK_ONLY
+    CHECK_ONLY = args.check
     thesis_tables()
     geo_weeks()
     serra_cases()
+    if CHECK_ONLY:
+        for path in DIFFERENT:
+            print("differs:", path)
+        print("generate_scenarios: %s" % ("all generated files are up to date" if not DIFFERENT
+                                          else "%d file(s) differ" % len(DIFFERENT)))
+        sys.exit(1 if DIFFERENT else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -3,6 +3,7 @@
 # Uses apt-get when run as root, sudo otherwise (asking for the password when
 # there is a terminal to ask on); fails clearly if it can do neither.
 set -euo pipefail
+case "${1:-}" in -h|--help) sed -n "2,4p" "$0" | sed "s/^# \{0,1\}//"; exit 0 ;; esac
 
 PACKAGES=(
   build-essential cmake pkgconf

@@ -10,7 +10,7 @@
 #
 # Options: -j N (years run in parallel, default 2: each uses one core),
 #          --cli PATH (default build/app/thrustsched), --out DIR (default out/year),
-#          --fresh (ignore existing checkpoints), --summary-only.
+#          --fresh (start over: earlier results in OUT/<name> are replaced), --summary-only.
 # Each year takes 0.5-2 hours on the 2-core development machine (see
 # docs/year_results.md); the receding-horizon years solve twice as many cycles.
 set -euo pipefail
@@ -27,9 +27,9 @@ while [[ $# -gt 0 ]]; do
     -j) jobs="$2"; shift 2 ;;
     --cli) cli="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    --fresh) resume=""; shift ;;
+    --fresh) resume="--force"; shift ;;
     --summary-only) summary_only=1; shift ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "unknown option $1" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac

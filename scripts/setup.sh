@@ -3,6 +3,7 @@
 # packages (scripts/install-deps.sh), configure a Release build and build it.
 #   scripts/setup.sh [BUILD_DIR (default build)] [JOBS (default 2)]
 set -euo pipefail
+case "${1:-}" in -h|--help) sed -n "2,4p" "$0" | sed "s/^# \{0,1\}//"; exit 0 ;; esac
 cd "$(dirname "$0")/.."
 build=${1:-build}
 jobs=${2:-2}

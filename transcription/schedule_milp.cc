@@ -646,8 +646,31 @@ Eigen::VectorXd ScheduleMilp::StartFromBurns(const std::vector<Burn>& burns) con
   if (p.input_mode != InputMode::kOnOff) {
     throw std::invalid_argument("StartFromBurns: only for the on-off input mode");
   }
+  return StartFromPattern(PatternFromBurns(burns, p.thrusters.size(), p.grid));
+}
+
+bool ScheduleMilp::CompleteFromPattern(Eigen::VectorXd* x) const {
+  if (problem_.input_mode != InputMode::kOnOff || x->size() != lp_.num_cols()) return false;
+  const int m = static_cast<int>(encoding_.on.size());
+  const int n = problem_.num_intervals();
+  Eigen::MatrixXi pattern = Eigen::MatrixXi::Zero(m, n);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double v = (*x)[encoding_.on[i][j].index()];
+      if (!(std::abs(v) <= 1e-6 || std::abs(v - 1.0) <= 1e-6)) return false;  // NaN too
+      pattern(i, j) = v > 0.5 ? 1 : 0;
+    }
+  }
+  *x = StartFromPattern(pattern);
+  return true;
+}
+
+Eigen::VectorXd ScheduleMilp::StartFromPattern(const Eigen::MatrixXi& pattern) const {
+  const ScheduleProblem& p = problem_;
+  if (p.input_mode != InputMode::kOnOff) {
+    throw std::invalid_argument("StartFromPattern: only for the on-off input mode");
+  }
   Eigen::VectorXd x = Eigen::VectorXd::Zero(lp_.num_cols());
-  const Eigen::MatrixXi pattern = PatternFromBurns(burns, p.thrusters.size(), p.grid);
   encoding_.Complete(pattern, &x);
   const std::vector<Eigen::VectorXd> states = PropagateDiscrete(pattern, Eigen::MatrixXd());
   for (size_t j = 0; j < state_.size(); ++j) {

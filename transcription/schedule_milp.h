@@ -126,6 +126,13 @@ class ScheduleMilp {
   /// Full column vector (MIP start) for a burn list: binaries from the
   /// pattern on the grid, auxiliaries completed, states propagated.
   Eigen::VectorXd StartFromBurns(const std::vector<Burn>& burns) const;
+  /// Same from a 0/1 pattern (thrusters x intervals).
+  Eigen::VectorXd StartFromPattern(const Eigen::MatrixXi& pattern) const;
+  /// Completes a column vector from its on-off columns (the rest, which may
+  /// be NaN, recomputed as StartFromPattern does). False, x unchanged, if an
+  /// on-off entry is NaN or not 0/1, or in impulsive mode. (The solver's
+  /// milp::SolveOptions::complete_solution.)
+  bool CompleteFromPattern(Eigen::VectorXd* x) const;
 
   /// Column of "thruster i on in interval j" (on-off mode).
   milp::Variable on(int thruster, int interval) const { return encoding_.on[thruster][interval]; }

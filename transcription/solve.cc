@@ -121,15 +121,33 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
   milp::SolveOptions solve_options = options.solve;
   if (solve_options.objective_step == 0.0) solve_options.objective_step = milp.objective_step();
   const ScheduleProblem& p = milp.problem();
-  if (!options.warm_start.empty() && p.input_mode == InputMode::kOnOff) {
-    solve_options.initial_solution = milp.StartFromBurns(options.warm_start);
+  if (p.input_mode == InputMode::kOnOff) {
+    if (!options.warm_start.empty()) {
+      solve_options.initial_solution = milp.StartFromBurns(options.warm_start);
+    }
+    // Solutions are completed from their on-off pattern (states propagated)
+    // rather than by an LP over the continuous columns.
+    solve_options.complete_solution = [&milp](Eigen::VectorXd* x) {
+      return milp.CompleteFromPattern(x);
+    };
   }
   r.solve = solver.Solve(milp.lp(), solve_options);
   const bool interrupted = options.solve.interrupt != nullptr && options.solve.interrupt->load();
   if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted &&
       options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff &&
       p.window.enabled() && !p.window.soft) {
+    if (options.announce) {
+      char buf[320];
+      std::snprintf(buf, sizeof(buf),
+                    "no schedule and no proof within the time limit: looking for a proof of "
+                    "infeasibility on the first 1/32, 1/8 and 1/2 of the horizon (at most %.3g s "
+                    "more)",
+                    options.prefix_diagnosis_s);
+      options.announce(buf);
+    }
+    const auto t_diagnosis = std::chrono::steady_clock::now();
     const std::string reason = DiagnosePrefixes(milp, solver, options);
+    r.diagnosis_seconds = Seconds(t_diagnosis);
     if (!reason.empty()) {
       r.solve.status = milp::SolveStatus::kInfeasible;
       r.solve.detail += "; " + reason + " infeasible";

@@ -16,6 +16,7 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_SOLVE_H_
 #define THRUSTSCHED_TRANSCRIPTION_SOLVE_H_
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -46,6 +47,10 @@ struct SolveScheduleOptions {
   /// kInfeasible, the reason in infeasibility_reasons). It spends at most
   /// this many seconds beyond the time limit (0: off); not after an interrupt.
   double prefix_diagnosis_s = 30.0;
+  /// Called (from the calling thread) when a phase after the solve starts,
+  /// with a sentence saying what it does and how long it may take (e.g. the
+  /// infeasibility diagnosis), so that a user is told why the work goes on.
+  std::function<void(const std::string&)> announce;
 };
 
 /// Check of an impulsive schedule: impulses applied to the continuous model
@@ -65,6 +70,7 @@ struct ScheduleResult {
   CheckReport check;             // on-off mode
   ImpulsiveCheck impulsive_check;  // impulsive mode
   double check_seconds = 0.0;
+  double diagnosis_seconds = 0.0;  // the infeasibility diagnosis (0 if it did not run)
   std::vector<std::string> infeasibility_reasons;  // from the rules, known before solving
   bool has_schedule() const { return solve.has_solution(); }
 };

@@ -391,7 +391,19 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
   AddSchemeSolves(&b, options);
   AddScaling(&b, options);
   AddOperations(&b, options);
-  return b.Take();
+  std::vector<CaseSpec> cases = b.Take();
+  if (options.quick) {
+    // --quick checks code paths and numbers, not speed: its solves stop at a
+    // node limit (the same result on every run, loaded machine or not), the
+    // time limits only guard against a hang.
+    for (CaseSpec& c : cases) {
+      c.max_nodes = kQuickMaxNodes;
+      c.time_limit_s = kQuickGuardSeconds;
+      c.lp_relaxation_time_limit_s = kQuickGuardSeconds;
+      c.external_time_limit_s = kQuickGuardSeconds;
+    }
+  }
+  return cases;
 }
 
 }  // namespace thrustsched::bench

@@ -55,6 +55,7 @@ struct CaseSpec {
 
   // Solver settings (kSolve).
   double time_limit_s = 60.0;
+  long long max_nodes = -1;  // >= 0: branch-and-bound node limit (deterministic)
   double relative_gap = 1e-4;
   int threads = 1;
   milp::LpAlgorithm lp_algorithm = milp::LpAlgorithm::kPrimal;
@@ -76,6 +77,10 @@ struct CaseSpec {
   std::string published_source;
   std::string note;  // written to the `note` column
 };
+
+/// --quick: node limit of every solve, and the wall-clock guard against a hang.
+inline constexpr long long kQuickMaxNodes = 2000;
+inline constexpr double kQuickGuardSeconds = 600.0;
 
 struct MatrixOptions {
   bool quick = false;

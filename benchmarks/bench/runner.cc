@@ -324,6 +324,7 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
   milp::SolveOptions so = s.solve;
   so.time_limit_s = spec.time_limit_s;
+  so.max_nodes = spec.max_nodes;
   so.relative_gap = spec.relative_gap;
   so.threads = spec.threads;
   so.lp_algorithm = spec.lp_algorithm;

@@ -219,6 +219,43 @@ TEST(Cli, ExportWritesModelFiles) {
   fs::remove_all(dir);
 }
 
+// A misspelt command or field is named as such (not reported as missing),
+// `help` and -V work, a folder given as the scenario says so, and the MPS
+// NAME is the scenario's name.
+TEST(Cli, MisspellingsAndSmallThingsAreClear) {
+  RunResult r = RunCli({"solv", kScenarios + "hcw_table41_1d.json"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_HAS(r.err, "unknown subcommand 'solv'; did you mean 'solve'?");
+  r = RunCli({"help"});
+  EXPECT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_HAS(r.out, "simulate");
+  r = RunCli({"help", "check"});
+  EXPECT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_HAS(r.out, "schedule");
+  r = RunCli({"-V"});
+  EXPECT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_HAS(r.out, "thrustsched ");
+
+  const std::string dir = TempDir("typos");
+  json sc = ReadJson(kScenarios + "hcw_table41_1d.json");
+  sc["spacecraft"]["thrust_N"] = sc["spacecraft"]["thrust_n"];
+  sc["spacecraft"].erase("thrust_n");
+  WriteFile(dir + "/typo.json", sc.dump());
+  r = RunCli({"validate", dir + "/typo.json"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_HAS(r.err, "unknown field 'thrust_N'; did you mean 'thrust_n'?");
+  EXPECT_EQ(r.err.find("missing"), std::string::npos) << r.err;
+
+  r = RunCli({"solve", kScenarios, "--out", dir + "/o"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_HAS(r.err, "is a folder, not a scenario file");
+
+  r = RunCli({"export", kScenarios + "hcw_table41_1d.json", dir + "/m.mps"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_HAS(ReadFile(dir + "/m.mps"), "NAME          hcw_table41_1d");
+  fs::remove_all(dir);
+}
+
 TEST(Cli, InfeasibleExitsThree) {
   const std::string dir = TempDir("infeasible");
   const RunResult r = RunCli({"solve", kTestData + "hcw_10km_infeasible_1d.json", "--out", dir});

@@ -396,6 +396,40 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   fs::remove_all(other);
 }
 
+// A folder holding an earlier run is never silently started over: without
+// --resume or --force the command refuses (exit 2, naming both) and changes
+// nothing; --force starts over with the earlier run's files removed (no stale
+// cycles/cycle_002* left beside a one-cycle run).
+TEST(SimulateCli, RefusesToStartOverAnEarlierRun) {
+  const std::string dir = TempDir("sim_again");
+  auto r = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2"}, 300);
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  ASSERT_TRUE(fs::exists(dir + "/cycles/cycle_002.csv"));
+  const std::string checkpoint = ReadFile(dir + "/checkpoint.json");
+
+  r = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "1"}, 60);
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_NE(r.err.find("--resume"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+  EXPECT_EQ(ReadFile(dir + "/checkpoint.json"), checkpoint);
+  EXPECT_TRUE(fs::exists(dir + "/cycles/cycle_002.csv"));
+
+  r = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "1", "--resume",
+              "--force"},
+             60);
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+
+  thrustsched::testing::WriteFile(dir + "/my_notes.txt", "mine");
+  r = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "1", "--force"}, 300);
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_EQ(ReadJson(dir + "/checkpoint.json")["next_cycle"], 1);
+  EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 2u);
+  EXPECT_TRUE(fs::exists(dir + "/cycles/cycle_001.csv"));
+  EXPECT_FALSE(fs::exists(dir + "/cycles/cycle_002.csv"));
+  EXPECT_EQ(ReadFile(dir + "/my_notes.txt"), "mine");
+  fs::remove_all(dir);
+}
+
 TEST(SimulateCli, BadInputExitsTwo) {
   const std::string dir = TempDir("sim_bad");
   thrustsched::testing::WriteFile(dir + "/s.json", ScenarioText(R"({"duration_s": -5})"));

@@ -412,15 +412,17 @@ TEST(CbcSolverTest, ParallelSolvesMatchSequentialOnes) {
   }
 }
 
-// MILP solves share one CBC driver (see cbc_solver.h): a solve that waits for
-// it must still get its whole time limit, not "time limit before the solve
-// started".
+// In this process (cbc.separate_process off), MILP solves share one CBC driver
+// (see cbc_solver.h): a solve that waits for it must still get its whole time
+// limit, not "time limit before the solve started".
 TEST(CbcSolverTest, WaitingForTheDriverDoesNotSpendTheTimeLimit) {
   const LpData hard = RandomKnapsack(2000, 20, 7);  // not solved within 1 s
   SolveOptions first;
   first.time_limit_s = 1.5;
+  first.cbc.separate_process = false;
   SolveOptions second;
   second.time_limit_s = 1.0;  // shorter than the first solve's hold on the driver
+  second.cbc.separate_process = false;
   SolveResult a, b;
   std::thread ta([&] { a = MakeCbcSolver()->Solve(hard, first); });
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -432,6 +434,64 @@ TEST(CbcSolverTest, WaitingForTheDriverDoesNotSpendTheTimeLimit) {
   EXPECT_THAT(b.detail, Not(HasSubstr("before the solve started")));
   EXPECT_TRUE(b.has_solution()) << b.detail;
   EXPECT_LT(b.wall_seconds, 1.0 + 5.0);  // its own limit (+ CBC's root-LP overrun)
+}
+
+// In child processes (the default) solves from several threads do not wait
+// for each other, and each gives the answer it gives alone (node limit, one
+// thread: deterministic).
+TEST(CbcSolverTest, ChildProcessSolvesRunInParallel) {
+  std::vector<LpData> models;
+  for (unsigned seed = 11; seed <= 13; ++seed) models.push_back(RandomKnapsack(400, 20, seed));
+  SolveOptions o;
+  o.max_nodes = 200;
+  auto solver = MakeCbcSolver();
+  std::vector<SolveResult> sequential;
+  for (const LpData& lp : models) sequential.push_back(solver->Solve(lp, o));
+  std::vector<SolveResult> parallel(models.size());
+  std::vector<std::thread> threads;
+  for (size_t k = 0; k < models.size(); ++k) {
+    threads.emplace_back([&, k] { parallel[k] = solver->Solve(models[k], o); });
+  }
+  for (std::thread& t : threads) t.join();
+  for (size_t k = 0; k < models.size(); ++k) {
+    ASSERT_TRUE(parallel[k].has_solution()) << parallel[k].detail;
+    EXPECT_THAT(parallel[k].detail, Not(HasSubstr("waited")));
+    EXPECT_EQ(parallel[k].status, sequential[k].status);
+    EXPECT_EQ(parallel[k].objective, sequential[k].objective);
+    EXPECT_EQ(parallel[k].nodes, sequential[k].nodes);
+  }
+}
+
+// The same answers in a child process and in this one (nothing is lost or
+// altered on the way through the pipe).
+TEST(CbcSolverTest, ChildProcessAndInProcessAgree) {
+  for (unsigned seed : {3u, 5u}) {
+    const LpData lp = RandomKnapsack(300, 20, seed);
+    SolveOptions o;
+    o.max_nodes = 100;
+    SolveOptions here = o;
+    here.cbc.separate_process = false;
+    const SolveResult a = MakeCbcSolver()->Solve(lp, o);
+    const SolveResult b = MakeCbcSolver()->Solve(lp, here);
+    ASSERT_TRUE(a.has_solution()) << a.detail;
+    EXPECT_EQ(a.status, b.status);
+    EXPECT_EQ(a.objective, b.objective);
+    EXPECT_EQ(a.best_bound, b.best_bound);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.incumbents.size(), b.incumbents.size());
+  }
+}
+
+// A progress callback that throws stops the child and the exception reaches
+// the caller (no orphan process, no hang).
+TEST(CbcSolverTest, ThrowingProgressCallbackStopsTheChild) {
+  SolveOptions o;
+  o.time_limit_s = 60;
+  o.progress_interval_s = 0.05;
+  o.progress = [](const SolveProgress&) { throw std::runtime_error("callback says stop"); };
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_THROW(MakeCbcSolver()->Solve(RandomKnapsack(2000, 20, 7), o), std::runtime_error);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 TEST(LpRelaxationTest, ParallelLpSolvesMatchSequentialOnes) {

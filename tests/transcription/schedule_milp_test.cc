@@ -13,6 +13,7 @@
 #include "milp/cbc_solver.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
+#include "tests/transcription/thesis_cases.h"
 
 namespace thrustsched::transcription {
 namespace {
@@ -35,23 +36,6 @@ ScheduleProblem DoubleIntegratorRestToRest(int intervals, InputMode mode) {
   return p;
 }
 
-// Thesis ch. 4 HCW set-up: ideal six thrusters, 4850 kg, 0.265 N, 5-min grid,
-// window +-36.8 km on y and z, operations 5 / 20 / 5 min.
-ScheduleProblem Table41(double days) {
-  ScheduleProblem p;
-  p.model = std::make_shared<dynamics::HcwModel>(kGeoN);
-  p.thrusters = dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005);
-  p.grid = dynamics::UniformGrid(0.0, days * 86400.0, static_cast<int>(std::lround(days * 288)));
-  p.initial_state = Eigen::VectorXd::Zero(6);
-  p.initial_state[0] = 1000.0;  // X0 = [1 km, 0, 0, 0, 0, 0]
-  p.window.outputs = {1, 2};
-  p.window.half_widths = {36800.0, 36800.0};
-  p.rules.min_burn_s = 300;
-  p.rules.min_off_same_s = 1200;
-  p.rules.min_gap_other_s = 300;
-  p.objective.kind = ObjectiveKind::kL1;
-  return p;
-}
 
 milp::SolveOptions Exact(double time_limit = 120) {
   milp::SolveOptions o;
@@ -109,7 +93,7 @@ TEST(ScheduleMilpTest, ThesisTable41ShortHorizons) {
   const std::vector<std::pair<double, int>> cases = {{1, 1}, {2, 5}, {3, 6}};
   const std::vector<double> published = {0.0164, 0.0819, 0.0984};
   for (size_t k = 0; k < cases.size(); ++k) {
-    const ScheduleProblem p = Table41(cases[k].first);
+    const ScheduleProblem p = ThesisTable41(cases[k].first);
     SolveScheduleOptions o;
     o.solve = Exact();
     const ScheduleResult r = SolveSchedule(p, *solver, o);
@@ -124,7 +108,7 @@ TEST(ScheduleMilpTest, ThesisTable41ShortHorizons) {
 // Sparse and condensed transcriptions, thesis and tight encodings: one optimum.
 TEST(ScheduleMilpTest, FormulationsAndEncodingsAgree) {
   auto solver = milp::MakeCbcSolver();
-  ScheduleProblem p = Table41(1.0);
+  ScheduleProblem p = ThesisTable41(1.0);
   p.grid = dynamics::UniformGrid(0.0, 86400.0, 144);  // 10-min steps
   p.initial_state[0] = 3000.0;
   double reference = std::nan("");
@@ -147,7 +131,7 @@ TEST(ScheduleMilpTest, FormulationsAndEncodingsAgree) {
 // trajectory, and StartFromBurns rebuilds a feasible point of equal cost.
 TEST(ScheduleMilpTest, DecodeAndWarmStartAreConsistent) {
   auto solver = milp::MakeCbcSolver();
-  ScheduleProblem p = Table41(1.0);
+  ScheduleProblem p = ThesisTable41(1.0);
   p.initial_state[0] = 2000.0;
   const ScheduleMilp m(p, {});
   milp::SolveOptions exact = Exact();
@@ -182,7 +166,7 @@ TEST(ScheduleMilpTest, DecodeAndWarmStartAreConsistent) {
 // it. A soft window returns the least-violating schedule instead.
 TEST(ScheduleMilpTest, InfeasibleStartAndSoftWindow) {
   auto solver = milp::MakeCbcSolver();
-  ScheduleProblem p = Table41(2.0);
+  ScheduleProblem p = ThesisTable41(2.0);
   p.grid = dynamics::UniformGrid(0.0, 2 * 86400.0, 288);
   p.initial_state[0] = 10000.0;
   p.initial_state[1] = 36000.0;  // near the edge, drifting out fast
@@ -209,7 +193,7 @@ TEST(ScheduleMilpTest, InfeasibleStartAndSoftWindow) {
 // declared infeasible.
 TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
   auto solver = milp::MakeCbcSolver();
-  ScheduleProblem p = Table41(7.0);
+  ScheduleProblem p = ThesisTable41(7.0);
   p.initial_state[0] = 10000.0;
   SolveScheduleOptions o;
   o.solve.time_limit_s = 0.5;  // stops CBC inside its root LP
@@ -223,7 +207,7 @@ TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
   EXPECT_NE(r.infeasibility_reasons.back().find("are infeasible on their own"), std::string::npos)
       << r.infeasibility_reasons.back();
   // Feasible (thesis Table 4.1, 2 days), stopped before any schedule: stays undecided.
-  const ScheduleProblem feasible = Table41(2.0);
+  const ScheduleProblem feasible = ThesisTable41(2.0);
   o.solve.time_limit_s = 0.01;
   const ScheduleResult f = SolveSchedule(feasible, *solver, o);
   EXPECT_NE(f.solve.status, milp::SolveStatus::kInfeasible) << f.solve.detail;
@@ -280,7 +264,7 @@ TEST(ScheduleMilpTest, ScalingNarrowsTheCoefficientRange) {
     }
     return hi / lo;
   };
-  const ScheduleProblem p = Table41(3.0);
+  const ScheduleProblem p = ThesisTable41(3.0);
   BuildOptions scaled, raw;
   raw.scale = false;
   const double r_scaled = range(ScheduleMilp(p, scaled).lp());
@@ -290,7 +274,7 @@ TEST(ScheduleMilpTest, ScalingNarrowsTheCoefficientRange) {
 }
 
 TEST(ScheduleMilpTest, InvalidProblemThrowsNamingTheField) {
-  ScheduleProblem p = Table41(1.0);
+  ScheduleProblem p = ThesisTable41(1.0);
   p.window.half_widths = {36800.0, -1.0};
   try {
     ScheduleMilp m(p, {});
@@ -298,7 +282,7 @@ TEST(ScheduleMilpTest, InvalidProblemThrowsNamingTheField) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("window.half_widths[1]"), std::string::npos) << e.what();
   }
-  p = Table41(1.0);
+  p = ThesisTable41(1.0);
   p.initial_state = Eigen::VectorXd::Zero(3);
   EXPECT_THROW(ScheduleMilp(p, {}), std::invalid_argument);
   EXPECT_THROW(ParseFormulation("dense"), std::invalid_argument);

@@ -13,25 +13,11 @@
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
 #include "transcription/solve.h"
+#include "tests/transcription/thesis_cases.h"
 
 namespace thrustsched::transcription {
 namespace {
 
-ScheduleProblem Table41(double days) {
-  ScheduleProblem p;
-  p.model = std::make_shared<dynamics::HcwModel>(7.2921159e-5);
-  p.thrusters = dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005);
-  p.grid = dynamics::UniformGrid(0.0, days * 86400.0, static_cast<int>(std::lround(days * 288)));
-  p.initial_state = Eigen::VectorXd::Zero(6);
-  p.initial_state[0] = 1000.0;
-  p.window.outputs = {1, 2};
-  p.window.half_widths = {36800.0, 36800.0};
-  p.rules.min_burn_s = 300;
-  p.rules.min_off_same_s = 1200;
-  p.rules.min_gap_other_s = 300;
-  p.objective.kind = ObjectiveKind::kL1;
-  return p;
-}
 
 class Table41LongTest : public ::testing::TestWithParam<double> {};
 
@@ -45,7 +31,7 @@ TEST_P(Table41LongTest, ProvenOptimumIsEightSlots) {
   o.solve.relative_gap = 1e-9;
   o.solve.absolute_gap = 1e-9;
   const auto solver = milp::MakeCbcSolver();
-  const ScheduleResult r = SolveSchedule(Table41(days), *solver, o);
+  const ScheduleResult r = SolveSchedule(ThesisTable41(days), *solver, o);
   ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
   EXPECT_NEAR(r.schedule.consumption_l1_m_s, 8 * slot, 1e-9);
   EXPECT_LE(r.schedule.consumption_l1_m_s, published + 2e-4);

@@ -1,0 +1,387 @@
+// CLP pieces of the CBC backend (see clp_lp.h).
+#include "milp/internal/clp_lp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "ClpEventHandler.hpp"
+#include "ClpPresolve.hpp"
+#include "ClpSimplex.hpp"
+#include "ClpSolve.hpp"
+#include "CoinMessageHandler.hpp"
+#include "CoinTypes.hpp"
+#include "OsiClpSolverInterface.hpp"
+
+namespace thrustsched::milp::internal {
+namespace {
+
+static_assert(std::is_same<CoinBigIndex, int>::value,
+              "CoinBigIndex must match Eigen's StorageIndex (int) of LpData::a_matrix");
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Drops every message: nothing is printed at log_level 0.
+class SilentHandler : public CoinMessageHandler {
+ public:
+  SilentHandler() { setLogLevel(0); }
+  int print() override { return 0; }
+  CoinMessageHandler* clone() const override { return new SilentHandler(*this); }
+};
+
+// Stops CLP at the deadline or on interrupt (checked every 16 iterations).
+class LpStopHandler : public ClpEventHandler {
+ public:
+  explicit LpStopHandler(SolveClock* clock) : clock_(clock) {}
+  int event(Event which) override {
+    if (which != endOfIteration) return -1;
+    if ((++count_ & 15) != 0) return -1;
+    return clock_->ShouldStop() ? 0 : -1;
+  }
+  ClpEventHandler* clone() const override { return new LpStopHandler(*this); }
+
+ private:
+  SolveClock* clock_;
+  unsigned count_ = 0;
+};
+
+void RunLp(ClpSimplex* model, LpAlgorithm algorithm) {
+  switch (algorithm) {
+    case LpAlgorithm::kPrimal:
+      model->primal();
+      break;
+    case LpAlgorithm::kDual:
+      model->dual();
+      break;
+    case LpAlgorithm::kBarrier: {
+      ClpSolve how;
+      how.setSolveType(ClpSolve::useBarrier);
+      model->initialSolve(how);
+      // Clean-up from the barrier's basis (usually no iterations); it also
+      // classifies problems the barrier misjudges (it can call an unbounded
+      // LP optimal).
+      model->dual();
+      break;
+    }
+  }
+}
+
+// Solves with presolve; false if presolve found nothing to solve (or failed),
+// so that the caller solves the original model.
+bool SolvePresolved(ClpSimplex* model, const SolveOptions& options, CoinMessageHandler* silent,
+                    LpStopHandler* events, SolveClock* clock) {
+  auto set_time = [clock](ClpSimplex* m) {
+    const double remaining = clock->Remaining();
+    if (std::isfinite(remaining)) m->setMaximumWallSeconds(std::max(remaining, 1e-3));
+  };
+  ClpPresolve presolve;
+  ClpSimplex* reduced = presolve.presolvedModel(*model, 1e-8, false, 5);
+  if (reduced == nullptr) return false;
+  Silence(reduced, silent, options.log_level);
+  reduced->passInEventHandler(events);
+  set_time(reduced);
+  RunLp(reduced, options.lp_algorithm);
+  if (reduced->status() != 0) {
+    delete reduced;
+    return false;
+  }
+  presolve.postsolve(true);
+  delete reduced;
+  model->checkSolution();
+  set_time(model);
+  if (model->numberPrimalInfeasibilities() > 0 || model->numberDualInfeasibilities() > 0) {
+    model->primal(1);
+  }
+  return true;
+}
+
+// Status 2 (dual infeasible): unbounded if the primal is feasible.
+void ClassifyDualInfeasible(const ClpSimplex& model, const LpData& lp, const SolveOptions& options,
+                            CoinMessageHandler* silent, LpStopHandler* events, SolveClock* clock,
+                            LpOutcome* out) {
+  ClpSimplex feas(model);
+  Silence(&feas, silent, options.log_level);
+  feas.passInEventHandler(events);
+  std::vector<double> zero(static_cast<size_t>(lp.num_cols()), 0.0);
+  feas.chgObjCoefficients(zero.data());
+  const double remaining = clock->Remaining();
+  if (std::isfinite(remaining)) feas.setMaximumWallSeconds(std::max(remaining, 1e-3));
+  feas.primal();
+  if (feas.status() == 0) {
+    out->status = SolveStatus::kUnbounded;
+  } else if (feas.status() == 1) {
+    out->status = SolveStatus::kInfeasible;
+  } else {
+    out->status = SolveStatus::kUnbounded;
+    out->detail = "clp: dual infeasible; primal feasibility not established";
+  }
+}
+
+// Fixes the integer columns of lp at x's (rounded) values and makes them
+// continuous: the LP of the continuous part.
+LpData FixIntegers(const LpData& lp, const Eigen::VectorXd& x) {
+  LpData fixed = lp;
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    if (!IsInteger(lp, j)) continue;
+    fixed.col_type[static_cast<size_t>(j)] = VarType::kContinuous;
+    if (std::isnan(x[j])) continue;
+    fixed.col_lower[j] = x[j];
+    fixed.col_upper[j] = x[j];
+  }
+  return fixed;
+}
+
+// An LP solved to the end (no deadline, no interrupt): presolve and dual
+// simplex, then, if that did not end optimal, primal simplex without
+// presolve. (Dual simplex without presolve has called feasible fixed-integer
+// LPs of the HCW and GEO transcriptions infeasible; CLP's barrier aborts the
+// process, "primal off to infinity", on some of them, seen on a GEO week with
+// six thrusters.)
+LpOutcome SolveFinishingLp(const LpData& lp, const SolveOptions& options) {
+  SolveOptions o = options;
+  o.interrupt = nullptr;
+  o.presolve = true;
+  o.lp_algorithm = LpAlgorithm::kDual;
+  const CoinArrays arrays = MakeArrays(lp, ObjectiveSign(lp), false);
+  SolveClock unlimited;
+  LpOutcome r = SolveLpCore(lp, arrays, o, &unlimited);
+  if (r.status == SolveStatus::kOptimal) return r;
+  o.presolve = false;
+  o.lp_algorithm = LpAlgorithm::kPrimal;
+  return SolveLpCore(lp, arrays, o, &unlimited);
+}
+
+}  // namespace
+
+double ObjectiveSign(const LpData& lp) {
+  return lp.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0;
+}
+
+bool IsInteger(const LpData& lp, int column) {
+  return lp.col_type[static_cast<size_t>(column)] != VarType::kContinuous;
+}
+
+CoinArrays MakeArrays(const LpData& lp, double sign, bool round_integer_bounds) {
+  CoinArrays c;
+  c.a = lp.a_matrix;
+  c.a.makeCompressed();
+  const int n = lp.num_cols(), m = lp.num_rows();
+  auto coin = [](double v) {
+    if (v == kInf) return COIN_DBL_MAX;
+    if (v == -kInf) return -COIN_DBL_MAX;
+    return v;
+  };
+  c.col_lower.resize(static_cast<size_t>(n));
+  c.col_upper.resize(static_cast<size_t>(n));
+  c.cost.resize(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    double lo = lp.col_lower[j], up = lp.col_upper[j];
+    if (round_integer_bounds && IsInteger(lp, j)) {
+      lo = IntegerLowerBound(lo);
+      up = IntegerUpperBound(up);
+    }
+    c.col_lower[static_cast<size_t>(j)] = coin(lo);
+    c.col_upper[static_cast<size_t>(j)] = coin(up);
+    c.cost[static_cast<size_t>(j)] = sign * lp.col_cost[j];
+  }
+  c.row_lower.resize(static_cast<size_t>(m));
+  c.row_upper.resize(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) {
+    c.row_lower[static_cast<size_t>(i)] = coin(lp.row_lower[i]);
+    c.row_upper[static_cast<size_t>(i)] = coin(lp.row_upper[i]);
+  }
+  return c;
+}
+
+void LoadClp(ClpSimplex* clp, const CoinArrays& c) {
+  clp->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()),
+                   c.a.outerIndexPtr(), c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(),
+                   c.col_upper.data(), c.cost.data(), c.row_lower.data(), c.row_upper.data());
+}
+
+void LoadOsi(OsiClpSolverInterface* si, const CoinArrays& c, const LpData& lp) {
+  si->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()),
+                  c.a.outerIndexPtr(), c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(),
+                  c.col_upper.data(), c.cost.data(), c.row_lower.data(), c.row_upper.data());
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    if (IsInteger(lp, j)) si->setInteger(j);
+  }
+}
+
+std::unique_ptr<CoinMessageHandler> MakeSilentHandler() {
+  return std::make_unique<SilentHandler>();
+}
+
+void Silence(ClpSimplex* clp, CoinMessageHandler* handler, int log_level) {
+  if (log_level <= 0) {
+    clp->passInMessageHandler(handler);
+    clp->setLogLevel(0);
+  } else {
+    clp->setLogLevel(std::min(log_level - 1, 4));
+  }
+}
+
+LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOptions& options,
+                      SolveClock* clock) {
+  LpOutcome out;
+  const std::unique_ptr<CoinMessageHandler> silent = MakeSilentHandler();
+  LpStopHandler events(clock);
+  ClpSimplex model;
+  Silence(&model, silent.get(), options.log_level);
+  LoadClp(&model, arrays);
+  if (options.random_seed > 0) model.setRandomSeed(options.random_seed);
+  model.passInEventHandler(&events);
+  const bool solved = options.presolve && lp.num_rows() > 0 &&
+                      SolvePresolved(&model, options, silent.get(), &events, clock);
+  if (!solved) {
+    const double remaining = clock->Remaining();
+    if (std::isfinite(remaining)) model.setMaximumWallSeconds(std::max(remaining, 1e-3));
+    RunLp(&model, options.lp_algorithm);
+  }
+  const int status = model.status();
+  if (status == 0) {
+    out.status = SolveStatus::kOptimal;
+    out.min_objective = model.objectiveValue();
+    out.x = Eigen::Map<const Eigen::VectorXd>(model.primalColumnSolution(), lp.num_cols());
+    out.duals = Eigen::Map<const Eigen::VectorXd>(model.dualRowSolution(), lp.num_rows());
+  } else if (status == 1) {
+    out.status = SolveStatus::kInfeasible;
+  } else if (status == 2) {
+    ClassifyDualInfeasible(model, lp, options, silent.get(), &events, clock, &out);
+  } else if (status == 3 || status == 5) {
+    out.status = SolveStatus::kNoSolutionFound;
+    out.detail = clock->stopped_by_interrupt() ? "interrupted" : "time limit";
+  } else {
+    out.status = SolveStatus::kError;
+    out.detail = "clp status " + std::to_string(status) + " secondary " +
+                 std::to_string(model.secondaryStatus());
+  }
+  return out;
+}
+
+bool Polish(const LpData& lp, const SolveOptions& options, Eigen::VectorXd* x) {
+  bool any_continuous = false;
+  bool costed_continuous = false;
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    if (IsInteger(lp, j)) {
+      (*x)[j] = std::round((*x)[j]);
+    } else {
+      any_continuous = true;
+      costed_continuous = costed_continuous || lp.col_cost[j] != 0.0;
+    }
+  }
+  // A feasible point whose continuous columns cost nothing cannot improve.
+  const bool feasible = lp.MaxViolation(*x) <= kFeasibilityTolerance;
+  if (any_continuous && lp.num_rows() > 0 && (!feasible || costed_continuous)) {
+    const double sign = ObjectiveSign(lp);
+    const LpOutcome r = SolveFinishingLp(FixIntegers(lp, *x), options);
+    if (r.status == SolveStatus::kOptimal) {
+      Eigen::VectorXd candidate = r.x;
+      for (int j = 0; j < lp.num_cols(); ++j) {
+        if (IsInteger(lp, j)) candidate[j] = (*x)[j];
+      }
+      // Keep the re-optimised point only if it is feasible and no worse.
+      if (lp.MaxViolation(candidate) <= kFeasibilityTolerance &&
+          (lp.MaxViolation(*x) > kFeasibilityTolerance ||
+           sign * lp.Objective(candidate) <= sign * lp.Objective(*x) + 1e-9)) {
+        *x = candidate;
+      }
+    }
+  }
+  return lp.MaxViolation(*x) <= kFeasibilityTolerance;
+}
+
+bool CompletePartial(const LpData& lp, const SolveOptions& options, Eigen::VectorXd* x) {
+  if (options.complete_solution) {
+    Eigen::VectorXd y = *x;
+    for (int j = 0; j < lp.num_cols(); ++j) {
+      if (IsInteger(lp, j) && !std::isnan(y[j])) y[j] = std::round(y[j]);
+    }
+    if (options.complete_solution(&y) && y.size() == lp.num_cols() &&
+        lp.MaxViolation(y) <= kFeasibilityTolerance) {
+      *x = y;
+      return true;
+    }
+  }
+  bool unknown_integer = false;
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    if (std::isnan((*x)[j]) && IsInteger(lp, j)) unknown_integer = true;
+  }
+  if (unknown_integer) {
+    // The removed columns were fixed by CBC's preprocessing (implied by the
+    // others): the LP over them, with the known integers fixed, finds them.
+    const LpOutcome r = SolveFinishingLp(FixIntegers(lp, *x), options);
+    if (r.status != SolveStatus::kOptimal) return false;
+    for (int j = 0; j < lp.num_cols(); ++j) {
+      if (std::isnan((*x)[j])) (*x)[j] = r.x[j];
+    }
+  }
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    if (std::isnan((*x)[j])) (*x)[j] = 0.0;  // continuous: re-optimised by Polish
+  }
+  return Polish(lp, options, x);
+}
+
+SolveResult SolveTrivial(const LpData& lp) {
+  SolveResult r;
+  const int n = lp.num_cols(), m = lp.num_rows();
+  const double sign = ObjectiveSign(lp);
+  if (n == 0) {
+    for (int i = 0; i < m; ++i) {
+      if (lp.row_lower[i] > kFeasibilityTolerance || lp.row_upper[i] < -kFeasibilityTolerance) {
+        r.status = SolveStatus::kInfeasible;
+        r.detail = "empty model: row " + std::to_string(i) + " cannot hold with no columns";
+        return r;
+      }
+    }
+    r.status = SolveStatus::kOptimal;
+    r.x = Eigen::VectorXd(0);
+    r.objective = r.best_bound = lp.objective_offset;
+    r.gap = 0.0;
+    r.detail = "empty model (no columns)";
+    r.incumbents.push_back({0.0, r.objective, r.best_bound});
+    return r;
+  }
+  // No rows: each column on its own.
+  Eigen::VectorXd x(n);
+  bool unbounded = false;
+  for (int j = 0; j < n; ++j) {
+    double lo = lp.col_lower[j], up = lp.col_upper[j];
+    if (IsInteger(lp, j)) {
+      lo = IntegerLowerBound(lo);
+      up = IntegerUpperBound(up);
+    }
+    if (lo > up) {
+      r.status = SolveStatus::kInfeasible;
+      r.detail = "no rows: integer column " + std::to_string(j) + " has no integer value in [" +
+                 std::to_string(lp.col_lower[j]) + ", " + std::to_string(lp.col_upper[j]) + "]";
+      return r;
+    }
+    const double c = sign * lp.col_cost[j];
+    if (c > 0.0) {
+      x[j] = lo;
+    } else if (c < 0.0) {
+      x[j] = up;
+    } else {
+      x[j] = std::min(std::max(0.0, lo), up);
+    }
+    if (!std::isfinite(x[j])) unbounded = true;
+  }
+  if (unbounded) {
+    r.status = SolveStatus::kUnbounded;
+    r.detail = "no rows: a column with nonzero cost is unbounded in its improving direction";
+    return r;
+  }
+  r.status = SolveStatus::kOptimal;
+  r.x = x;
+  r.objective = r.best_bound = lp.Objective(x);
+  r.gap = 0.0;
+  r.detail = "no rows: solved column by column";
+  r.incumbents.push_back({0.0, r.objective, r.best_bound});
+  return r;
+}
+
+}  // namespace thrustsched::milp::internal
