@@ -211,6 +211,7 @@ int RunSolve(const SolveArgs& a) {
   Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
   if (!a.export_lp.empty()) ModelFileExtension(a.export_lp, "--export-lp");
+  CheckFlightDynamicsFiles(s, a.ccsds, s.problem.grid.front(), s.problem.grid.back());
   const std::string dir =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
   MakeDirectory(dir);
@@ -302,6 +303,12 @@ int RunSolve(const SolveArgs& a) {
       files.insert(files.end(), {"schedule.csv", "trajectory.csv"});
     }
     WritePlotsReport(dir, s, r.check.nonlinear_checked, a.no_plots, &files, err);
+    if (a.ccsds.any()) {
+      for (const std::string& f : WriteFlightDynamicsFiles(
+               s, a.ccsds, {ScenarioReplayLeg(s, r.schedule.burns, r.check.sample_times)})) {
+        files.push_back(f);
+      }
+    }
   }
   RunFacts facts;
   facts.interrupted = interrupted;
@@ -386,6 +393,7 @@ int RunExport(const ExportArgs& a) {
 
 int RunCheck(const CheckArgs& a) {
   const Scenario s = LoadScenario(a.scenario);
+  CheckFlightDynamicsFiles(s, a.ccsds, s.problem.grid.front(), s.problem.grid.back());
   std::ostream& out = std::cout;
   std::vector<std::string> files;
   bool passed = false;
@@ -438,6 +446,12 @@ int RunCheck(const CheckArgs& a) {
       WriteTrajectoryCsv(a.out_dir + "/trajectory.csv", s, r, burns);
       files = {"check.json", "schedule.csv", "trajectory.csv"};
       WritePlotsReport(a.out_dir, s, r.nonlinear_checked, a.no_plots, &files, std::cerr);
+    }
+    if (a.ccsds.any()) {
+      for (const std::string& f :
+           WriteFlightDynamicsFiles(s, a.ccsds, {ScenarioReplayLeg(s, burns, r.sample_times)})) {
+        out << "wrote         " << f << "\n";
+      }
     }
   }
   if (!a.out_dir.empty()) out << "output        " << a.out_dir << " (" << JoinNames(files) << ")\n";

@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "app/geo_products.h"
 #include "app/scenario.h"
 
 namespace thrustsched::app {
@@ -28,6 +29,7 @@ struct SolveArgs {
   bool quiet = false;
   bool no_plots = false;
   std::string command_line;
+  FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
 };
 int RunSolve(const SolveArgs& args);
 
@@ -44,6 +46,7 @@ struct CheckArgs {
   std::string schedule;  // schedule.csv (on-off) or impulses.csv (impulsive)
   std::string out_dir;   // optional: check.json, trajectory.csv, plots
   bool no_plots = false;
+  FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
 };
 int RunCheck(const CheckArgs& args);
 

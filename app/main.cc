@@ -63,6 +63,14 @@ struct OverrideFlags {
   }
 };
 
+// --oem FILE and --opm-maneuvers FILE (GEO scenarios).
+void AddCcsdsOptions(CLI::App* app, thrustsched::app::FlightDynamicsFiles* files) {
+  app->add_option("--oem", files->oem,
+                  "also write the nonlinear replay as a CCSDS OEM 2.0 (KVN, EME2000, UTC; GEO only)");
+  app->add_option("--opm-maneuvers", files->opm_maneuvers,
+                  "also write the plan as a CCSDS OPM 2.0 with one maneuver block per burn (GEO only)");
+}
+
 std::string CommandLine(int argc, char** argv) {
   std::string s;
   for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
@@ -97,6 +105,7 @@ int main(int argc, char** argv) {
   solve_flags.AddModelOptions(c_solve);
   c_solve->add_option("--export-mps", solve.export_mps, "also write the model as free MPS");
   c_solve->add_option("--export-lp", solve.export_lp, "also write the model as CPLEX LP");
+  AddCcsdsOptions(c_solve, &solve.ccsds);
   c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
   c_solve->add_flag("--no-plots", solve.no_plots, "write the gnuplot scripts but do not run gnuplot");
 
@@ -122,6 +131,7 @@ int main(int argc, char** argv) {
   c_check->add_option("--out", check.out_dir,
                       "also write check.json, trajectory.csv and plots to this directory");
   c_check->add_flag("--no-plots", check.no_plots, "with --out: do not run gnuplot");
+  AddCcsdsOptions(c_check, &check.ccsds);
 
   // import-solution
   app::ImportArgs imp;
@@ -169,6 +179,7 @@ int main(int argc, char** argv) {
                        "continue from the checkpoint in the output directory");
   c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
   c_simulate->add_flag("--no-plots", sim.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  AddCcsdsOptions(c_simulate, &sim.ccsds);
 
   try {
     cli.parse(argc, argv);
