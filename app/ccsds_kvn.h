@@ -3,11 +3,10 @@
 // writers (app/ccsds_oem.h, app/ccsds_opm.h), and the typed values they
 // share (epochs, time systems, frames, centres, numbers with units).
 //
-//   std::vector<app::KvnLine> lines = app::ReadKvn(text);
-//   for (const app::KvnLine& l : lines)
-//     if (l.kind == app::KvnLine::kKeyValue && l.keyword == "X")
-//       double x_km = app::KvnNumber("orbit.opm", l, "km");
-//   std::string row = app::KvnKeyValue("MAN_DURATION", "600.000", "s");  // "MAN_DURATION = 600.000 [s]"
+//   for (const app::KvnLine& l : app::ReadKvn(text)) {
+//     if (l.kind == app::KvnLine::kKeyValue && l.keyword == "X") x_km = app::KvnNumber("orbit.opm", l, "km");
+//   }
+//   std::string row = app::KvnKeyValue("MAN_DURATION", "600.000", "s");  // "MAN_DURATION  ... = 600.000 [s]"
 //
 // Every reading error is a ScenarioError (bad input, exit 2) whose message
 // names the file, the line, the keyword and its value.

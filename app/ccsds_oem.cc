@@ -66,7 +66,8 @@ OemSegment SegmentFromMeta(const std::string& source, const MetaBlock& m) {
   for (const char* k : {"OBJECT_NAME", "OBJECT_ID", "CENTER_NAME", "REF_FRAME", "TIME_SYSTEM", "START_TIME",
                         "STOP_TIME"}) {
     if (m.keys.count(k) == 0) {
-      throw ScenarioError(source + ":" + std::to_string(m.start_line) + ": META block lacks the mandatory keyword " + k);
+      throw ScenarioError(source + ":" + std::to_string(m.start_line) +
+                          ": META block lacks the mandatory keyword " + k);
     }
   }
   OemSegment s;
@@ -110,7 +111,9 @@ std::string FormatOem(const OemFile& f) {
   std::ostringstream os;
   os << KvnHeader("CCSDS_OEM_VERS", f.version, f.comments, f.creation_date, f.originator);
   for (const OemSegment& s : f.segments) {
-    if (s.time_system != dynamics::TimeScale::kUtc) throw std::invalid_argument("FormatOem: segments are written in UTC");
+    if (s.time_system != dynamics::TimeScale::kUtc) {
+      throw std::invalid_argument("FormatOem: segments are written in UTC");
+    }
     if (s.points.empty()) throw std::invalid_argument("FormatOem: a segment without data lines");
     for (size_t k = 0; k < s.points.size(); ++k) {
       const double t = s.points[k].epoch.SecondsSince(s.start_time);
@@ -172,11 +175,14 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
     }
   }
   if (!have_creation || !have_originator) {
-    throw ScenarioError(source + ": the OEM header lacks " + std::string(have_creation ? "ORIGINATOR" : "CREATION_DATE"));
+    throw ScenarioError(source + ": the OEM header lacks " +
+                        std::string(have_creation ? "ORIGINATOR" : "CREATION_DATE"));
   }
   while (i < lines.size()) {
     const KvnLine& start = lines[i++];
-    if (!(start.kind == KvnLine::kMarker && start.keyword == "META_START")) KvnFail(source, start, "expected META_START");
+    if (!(start.kind == KvnLine::kMarker && start.keyword == "META_START")) {
+      KvnFail(source, start, "expected META_START");
+    }
     MetaBlock m;
     m.start_line = start.number;
     for (; i < lines.size() && !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_STOP"); ++i) {
@@ -187,7 +193,9 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
       }
       if (!m.keys.emplace(l.keyword, l).second) KvnFail(source, l, "repeated in the META block");
     }
-    if (i == lines.size()) throw ScenarioError(source + ":" + std::to_string(start.number) + ": META_START without META_STOP");
+    if (i == lines.size()) {
+      throw ScenarioError(source + ":" + std::to_string(start.number) + ": META_START without META_STOP");
+    }
     ++i;
     OemSegment s = SegmentFromMeta(source, m);
     bool in_covariance = false;

@@ -110,7 +110,9 @@ OpmKeplerian ReadKeplerian(const std::string& source, const Keys& k) {
   e.raan_rad = KvnNumber(source, Need(source, k, "RA_OF_ASC_NODE", block), "deg") * kDeg;
   e.arg_perigee_rad = KvnNumber(source, Need(source, k, "ARG_OF_PERICENTER", block), "deg") * kDeg;
   const bool mean = k.count("MEAN_ANOMALY") > 0;
-  if (mean && k.count("TRUE_ANOMALY") > 0) KvnFail(source, k.at("MEAN_ANOMALY"), "give TRUE_ANOMALY or MEAN_ANOMALY, not both");
+  if (mean && k.count("TRUE_ANOMALY") > 0) {
+    KvnFail(source, k.at("MEAN_ANOMALY"), "give TRUE_ANOMALY or MEAN_ANOMALY, not both");
+  }
   if (!mean && k.count("TRUE_ANOMALY") == 0) {
     throw ScenarioError(source + ": the Keplerian elements block lacks TRUE_ANOMALY or MEAN_ANOMALY");
   }

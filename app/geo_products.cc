@@ -156,7 +156,8 @@ double DeliveredDeltaV(const dynamics::GeoSimulator& sim, const Eigen::Vector3d&
 
 }  // namespace
 
-ReplayLeg ScenarioReplayLeg(const Scenario& s, const std::vector<Burn>& burns, const std::vector<double>& sample_times) {
+ReplayLeg ScenarioReplayLeg(const Scenario& s, const std::vector<Burn>& burns,
+                            const std::vector<double>& sample_times) {
   ReplayLeg leg;
   leg.start_s = s.problem.grid.front();
   leg.end_s = s.problem.grid.back();
@@ -166,16 +167,18 @@ ReplayLeg ScenarioReplayLeg(const Scenario& s, const std::vector<Burn>& burns, c
   return leg;
 }
 
-std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s, const std::vector<Burn>& burns, const ReplayLeg& start) {
+std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s, const std::vector<Burn>& burns, const ReplayLeg& leg) {
   const std::shared_ptr<const dynamics::GeoSimulator> sim = Simulator(s);
+  if (burns.empty()) return {};
   const dynamics::Epoch epoch = ModelEpoch(s);
   const Eigen::MatrixXd accel = s.problem.thrusters.AccelerationMatrix();
   std::vector<size_t> order(burns.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return burns[a].start_s < burns[b].start_s; });
   std::vector<double> starts;
-  for (size_t k : order) starts.push_back(std::max(burns[k].start_s, start.start_s));
-  const std::vector<dynamics::Vector6d> at_start = sim->Propagate(start.eci, start.start_s, accel, Pulses(burns), starts);
+  for (size_t k : order) starts.push_back(std::max(burns[k].start_s, leg.start_s));
+  const std::vector<dynamics::Vector6d> at_start =
+      sim->Propagate(leg.eci, leg.start_s, accel, Pulses(burns), starts);
   std::vector<BurnFacts> out(burns.size());
   for (size_t j = 0; j < order.size(); ++j) {
     const Burn& b = burns[order[j]];

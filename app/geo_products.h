@@ -6,7 +6,7 @@
 // block per burn. Formats: data/scenarios/README.md, section 10.
 //
 //   app::ReplayLeg leg = app::ScenarioReplayLeg(scenario, burns, report.sample_times);
-//   std::vector<app::BurnFacts> facts = app::ComputeBurnFacts(scenario, burns, leg.start);
+//   std::vector<app::BurnFacts> facts = app::ComputeBurnFacts(scenario, burns, leg);
 //   app::WriteTextFile("plan.oem", app::FormatOem(app::BuildReplayOem(scenario, {leg})));
 //   app::WriteTextFile("plan.opm", app::FormatOpm(app::BuildManeuverOpm(scenario, {leg})));
 //
@@ -59,10 +59,10 @@ struct BurnFacts {
   Eigen::Vector3d direction_rtn = Eigen::Vector3d::Zero();
   double delta_v_m_s = 0.0;
 };
-/// `start` is the replay start (the scenario's, or a cycle's true state).
+/// `leg` gives the replay start (the scenario's, or a cycle's true state).
 /// @throws std::invalid_argument if the scenario is not GEO.
 std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s, const std::vector<transcription::Burn>& burns,
-                                        const ReplayLeg& start);
+                                        const ReplayLeg& leg);
 
 /// The replay of consecutive legs as an OEM 2.0 in EME2000 and UTC: one
 /// segment per coast or burn arc (boundaries shared by adjacent segments),

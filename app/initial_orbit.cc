@@ -45,7 +45,9 @@ InitialOrbit FromOpm(JsonObject o, const std::string& base_dir) {
   out.object_id = opm.object_id;
   out.given = {opm.epoch, opm.frame, opm.rv};
   if (use == "keplerian") {
-    if (!opm.keplerian) throw ScenarioError(o.FieldPath("use") + ": \"keplerian\" but " + out.file + " has no Keplerian elements");
+    if (!opm.keplerian) {
+      throw ScenarioError(o.FieldPath("use") + ": \"keplerian\" but " + out.file + " has no Keplerian elements");
+    }
     out.given.rv = dynamics::CartesianFromKeplerian(opm.keplerian->elements, opm.keplerian->gm_m3_s2);
   }
   return out;

@@ -9,7 +9,8 @@
 //                                   "position_km": [...], "velocity_km_s": [...]}}
 //   "initial_state": {"keplerian": {"frame": "GCRF", "semi_major_axis_km": 42165.8, ...}}
 //
-//   if (app::HasOrbitForm(init)) s.initial_orbit = app::ReadInitialOrbit(init, s, base_dir);
+//   dynamics::GeoSimulator sim(*scenario.geo);
+//   if (app::HasOrbitForm(init)) orbit = app::ReadInitialOrbit(init, sim, start_s, scenario_dir);
 #ifndef THRUSTSCHED_APP_INITIAL_ORBIT_H_
 #define THRUSTSCHED_APP_INITIAL_ORBIT_H_
 

@@ -136,10 +136,12 @@ TEST(CcsdsOem, RejectsWhatItDoesNotSupportNamingKeywordAndValue) {
   auto fails = [](const std::string& from, const std::string& to, const std::string& message) {
     ExpectEditFails([](const std::string& t) { ParseOem(t, "bad.oem"); }, kOem, from, to, message);
   };
-  fails("REF_FRAME            = EME2000", "REF_FRAME = ITRF2014", "bad.oem:10: REF_FRAME = ITRF2014: unsupported reference frame");
+  fails("REF_FRAME            = EME2000", "REF_FRAME = ITRF2014",
+        "bad.oem:10: REF_FRAME = ITRF2014: unsupported reference frame");
   fails("REF_FRAME            = EME2000", "REF_FRAME = TOD", "REF_FRAME = TOD: unsupported reference frame");
   fails("TIME_SYSTEM          = UTC", "TIME_SYSTEM = TDB", "TIME_SYSTEM = TDB: unsupported time system");
-  fails("CENTER_NAME          = EARTH", "CENTER_NAME = MARS BARYCENTER", "CENTER_NAME = MARS BARYCENTER: unsupported centre");
+  fails("CENTER_NAME          = EARTH", "CENTER_NAME = MARS BARYCENTER",
+        "CENTER_NAME = MARS BARYCENTER: unsupported centre");
   fails("CCSDS_OEM_VERS = 2.0", "CCSDS_OEM_VERS = 4.0", "CCSDS_OEM_VERS = 4.0: unsupported version");
   fails("OBJECT_ID            = 2033-999A\n", "", "META block lacks the mandatory keyword OBJECT_ID");
   fails("2034-001T00:10:00Z -31697.000001", "2033-12-31T23:59:00 -31697.000001",
@@ -251,7 +253,8 @@ TEST(CcsdsOpm, RejectsWhatItDoesNotSupportNamingKeywordAndValue) {
   };
   fails("REF_FRAME = EME2000", "REF_FRAME = TOD", "bad.opm:10: REF_FRAME = TOD: unsupported reference frame");
   fails("REF_FRAME = EME2000", "REF_FRAME = ITRF-93", "REF_FRAME = ITRF-93: unsupported reference frame");
-  fails("TIME_SYSTEM = UTC", "TIME_SYSTEM = UT1", "TIME_SYSTEM = UT1: unsupported time system (supported: UTC, TAI, TT, GPS)");
+  fails("TIME_SYSTEM = UTC", "TIME_SYSTEM = UT1",
+        "TIME_SYSTEM = UT1: unsupported time system (supported: UTC, TAI, TT, GPS)");
   fails("CENTER_NAME = EARTH", "CENTER_NAME = MOON", "CENTER_NAME = MOON: unsupported centre");
   fails("X = -32906.123456 [km]", "X = -32906123.456 [m]", "X = -32906123.456: units [m] where [km] are expected");
   fails("Z_DOT = 0.0007 [km/s]\n", "", "the state vector lacks the mandatory keyword Z_DOT");
@@ -259,7 +262,8 @@ TEST(CcsdsOpm, RejectsWhatItDoesNotSupportNamingKeywordAndValue) {
   fails("ECCENTRICITY = 0.0002", "ECCENTRICITY = 1.2", "invalid Keplerian elements");
   fails("MAN_DELTA_MASS = -0.0081", "MAN_DELTA_MASS = 0.0081", "MAN_DELTA_MASS = 0.0081: must be <= 0");
   fails("MAN_DV_3 = 0.0 [km/s]\n", "", "the maneuver block lacks MAN_DV_3");
-  fails("EPOCH = 2033-365T22:00:00.000", "EPOCH = 2033-12-31T23:59:60", "a leap second (ss = 60) cannot be represented");
+  fails("EPOCH = 2033-365T22:00:00.000", "EPOCH = 2033-12-31T23:59:60",
+        "a leap second (ss = 60) cannot be represented");
   fails("MASS = 4850.0 [kg]", "MASS = 4850.0 [kg]\nX = 1 [km]", "X = 1: out of order");
   fails("OBJECT_ID = 2033-999A", "OBJECT_ID = 2033-999A\nOBJECT_ID = 2", "OBJECT_ID = 2: repeated");
   fails("MESSAGE_ID = TEST-0001", "MESSAGE_IDENT = TEST-0001", "MESSAGE_IDENT = TEST-0001: unknown OPM keyword");

@@ -65,7 +65,9 @@ Eigen::VectorXd Relative(const nlohmann::json& scenario) { return ParseScenario(
 double MaxRelativeError(const Eigen::VectorXd& got, const Eigen::VectorXd& want) {
   const Eigen::VectorXd scale = dynamics::GeoLinearModel(dynamics::GeoModelOptions{}).state_scale();
   double worst = 0;
-  for (int i = 0; i < 6; ++i) worst = std::max(worst, std::abs(got(i) - want(i)) / std::max(std::abs(want(i)), scale(i)));
+  for (int i = 0; i < 6; ++i) {
+    worst = std::max(worst, std::abs(got(i) - want(i)) / std::max(std::abs(want(i)), scale(i)));
+  }
   return worst;
 }
 
@@ -143,7 +145,8 @@ TEST(InitialOrbit, UnsupportedInputIsRejectedNamingFieldAndValue) {
   std::string text = ReadFile(kOpmFile);
   text.replace(text.find("EME2000"), 7, "ITRF2014");
   WriteFile(dir + "/itrf.opm", text);
-  fails({{"initial_state", {{"opm", {{"file", dir + "/itrf.opm"}}}}}}, "REF_FRAME = ITRF2014: unsupported reference frame");
+  fails({{"initial_state", {{"opm", {{"file", dir + "/itrf.opm"}}}}}},
+        "REF_FRAME = ITRF2014: unsupported reference frame");
   WriteFile(dir + "/man.opm", ReadFile(kOpmFile) +
                                   "MAN_EPOCH_IGNITION = 2034-01-01T01:00:00\nMAN_DURATION = 1 [s]\nMAN_DELTA_MASS = "
                                   "-0.1 [kg]\nMAN_REF_FRAME = RTN\nMAN_DV_1 = 0\nMAN_DV_2 = 0\nMAN_DV_3 = 0\n");
@@ -152,7 +155,8 @@ TEST(InitialOrbit, UnsupportedInputIsRejectedNamingFieldAndValue) {
   nlohmann::json hcw = nlohmann::json::parse(ReadFile(kScenarios + "hcw_table41_1d.json"));
   hcw["initial_state"] = {{"eci_state", eci}};
   EXPECT_THAT([&] { ParseScenario(hcw); },
-              ThrowsMessage<ScenarioError>(HasSubstr("scenario.initial_state.eci_state: an orbit needs a \"geo\" model")));
+              ThrowsMessage<ScenarioError>(
+                  HasSubstr("scenario.initial_state.eci_state: an orbit needs a \"geo\" model")));
   std::filesystem::remove_all(dir);
 }
 
@@ -248,7 +252,8 @@ TEST(FlightDynamicsCli, ShippedWeekRoundTripsThroughTheCcsdsFiles) {
   EXPECT_LT(err, 1.0);
   // The first line is the replay start: the OPM state propagated 2 h (not the OPM state itself).
   const dynamics::Vector6d start = dynamics::FromModelFrame(
-      dynamics::GeoSimulator(*s.geo).EciFromRelative(s.problem.initial_state, 0.0), dynamics::InertialFrame::kEme2000, epoch);
+      dynamics::GeoSimulator(*s.geo).EciFromRelative(s.problem.initial_state, 0.0),
+      dynamics::InertialFrame::kEme2000, epoch);
   EXPECT_LT((oem.segments[0].points[0].rv - start).head<3>().norm(), 1e-3);
 
   // OPM: the same start state, one maneuver block per burn.
@@ -262,12 +267,14 @@ TEST(FlightDynamicsCli, ShippedWeekRoundTripsThroughTheCcsdsFiles) {
     EXPECT_NEAR(m.ignition.SecondsSince(epoch), burns[k].start_s, 1e-6);
     EXPECT_NEAR(m.duration_s, burns[k].duration_s(), 1e-9);
     EXPECT_EQ(m.ref_frame, "RTN");
-    const Eigen::Vector3d dv = accel * burns[k].duration_s() * s.problem.thrusters.thruster(burns[k].thruster).direction;
+    const Eigen::Vector3d dv =
+        accel * burns[k].duration_s() * s.problem.thrusters.thruster(burns[k].thruster).direction;
     EXPECT_LT((m.dv_m_s - dv).norm(), 1e-9);
     EXPECT_NEAR(m.delta_mass_kg, -0.265 / (9.80665 * 2005) * burns[k].duration_s(), 1e-6);
   }
   // Deterministic: the same command gives the same bytes.
-  const testing::RunResult again = RunCli({"check", kShipped, dir + "/given_schedule.csv", "--oem", dir + "/again.oem"});
+  const testing::RunResult again =
+      RunCli({"check", kShipped, dir + "/given_schedule.csv", "--oem", dir + "/again.oem"});
   EXPECT_EQ(again.exit_code, 0) << again.Describe();
   EXPECT_EQ(ReadFile(dir + "/again.oem"), oem_text);
   unsetenv("SOURCE_DATE_EPOCH");
@@ -279,7 +286,8 @@ TEST(FlightDynamicsCli, BadOptionsExitTwoNamingTheValue) {
   testing::RunResult r =
       RunCli({"check", kScenarios + "hcw_table41_1d.json", dir + "/s.csv", "--oem", dir + "/x.oem"});
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
-  EXPECT_THAT(r.err, HasSubstr("--oem " + dir + "/x.oem: CCSDS files need a GEO scenario (model.type \"geo\"), got \"hcw\""));
+  EXPECT_THAT(r.err, HasSubstr("--oem " + dir +
+                               "/x.oem: CCSDS files need a GEO scenario (model.type \"geo\"), got \"hcw\""));
   // A scenario whose OPM is in an unsupported time system.
   std::string opm = ReadFile(kOpmFile);
   opm.replace(opm.find("TIME_SYSTEM          = UTC"), 26, "TIME_SYSTEM = TDB");
