@@ -193,6 +193,31 @@ std::string BurnCounts(const Scenario& s, const transcription::Schedule& sch) {
   return out;
 }
 
+// The flight-dynamics files of a run: those asked for inside the output
+// folder are written into its temporary folder (moved into place with the
+// rest), the others where they were asked for.
+FlightDynamicsFiles InFolder(const FlightDynamicsFiles& files, const RunFolder& folder) {
+  const fs::path target = fs::absolute(folder.target()).lexically_normal();
+  auto map = [&](const std::string& path) {
+    if (path.empty()) return path;
+    const fs::path p = fs::absolute(path).lexically_normal();
+    if (p.parent_path() != target && p.parent_path() != target.parent_path() / target.filename()) {
+      return path;
+    }
+    return (fs::path(folder.path()) / p.filename()).string();
+  };
+  FlightDynamicsFiles out = files;
+  out.oem = map(files.oem);
+  out.opm_maneuvers = map(files.opm_maneuvers);
+  return out;
+}
+
+// A path as the user will find it once the run folder is committed.
+std::string ShownPath(const RunFolder& folder, const std::string& path) {
+  if (path.compare(0, folder.path().size(), folder.path()) != 0) return path;
+  return (fs::path(folder.target()) / path.substr(folder.path().size() + 1)).string();
+}
+
 // Plots of a run written into `folder` (messages name its final place).
 void WritePlotsReport(const RunFolder& folder, const Scenario& s, bool nonlinear, bool no_plots,
                       std::vector<std::string>* files, std::ostream& err) {
@@ -239,6 +264,7 @@ int RunSolve(const SolveArgs& a) {
   Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
   if (!a.export_lp.empty()) ModelFileExtension(a.export_lp, "--export-lp");
+  CheckFlightDynamicsFiles(s, a.ccsds, s.problem.grid.front(), s.problem.grid.back());
   const std::string target =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
   RunFolder folder(target, a.force, a.command_line);
@@ -330,6 +356,13 @@ int RunSolve(const SolveArgs& a) {
       files.insert(files.end(), {"schedule.csv", "trajectory.csv"});
     }
     WritePlotsReport(folder, s, r.check.nonlinear_checked, a.no_plots, &files, err);
+    if (a.ccsds.any()) {
+      for (const std::string& f :
+           WriteFlightDynamicsFiles(s, InFolder(a.ccsds, folder),
+                                    {ScenarioReplayLeg(s, r.schedule.burns, r.check.sample_times)})) {
+        files.push_back(ShownPath(folder, f));
+      }
+    }
   }
   RunFacts facts;
   facts.interrupted = interrupted;
@@ -417,6 +450,7 @@ int RunExport(const ExportArgs& a) {
 
 int RunCheck(const CheckArgs& a) {
   const Scenario s = LoadScenario(a.scenario);
+  CheckFlightDynamicsFiles(s, a.ccsds, s.problem.grid.front(), s.problem.grid.back());
   std::ostream& out = std::cout;
   std::vector<std::string> files;
   bool passed = false;
@@ -471,6 +505,13 @@ int RunCheck(const CheckArgs& a) {
       WriteTrajectoryCsv(dir + "/trajectory.csv", s, r, burns);
       files = {"check.json", "schedule.csv", "trajectory.csv"};
       WritePlotsReport(*folder, s, r.nonlinear_checked, a.no_plots, &files, std::cerr);
+    }
+    if (a.ccsds.any()) {
+      const FlightDynamicsFiles where = folder ? InFolder(a.ccsds, *folder) : a.ccsds;
+      for (const std::string& f :
+           WriteFlightDynamicsFiles(s, where, {ScenarioReplayLeg(s, burns, r.sample_times)})) {
+        out << "wrote         " << (folder ? ShownPath(*folder, f) : f) << "\n";
+      }
     }
   }
   if (folder) {

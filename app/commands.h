@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "app/geo_products.h"
 #include "app/scenario.h"
 
 namespace thrustsched::app {
@@ -29,6 +30,7 @@ struct SolveArgs {
   bool no_plots = false;
   bool force = false;  // replace an earlier run's files in out_dir
   std::string command_line;
+  FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
 };
 int RunSolve(const SolveArgs& args);
 
@@ -47,6 +49,7 @@ struct CheckArgs {
   bool no_plots = false;
   bool force = false;  // replace an earlier run's files in out_dir
   std::string command_line;
+  FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
 };
 int RunCheck(const CheckArgs& args);
 

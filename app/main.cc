@@ -66,6 +66,14 @@ struct OverrideFlags {
   }
 };
 
+// --oem FILE and --opm-maneuvers FILE (GEO scenarios).
+void AddCcsdsOptions(CLI::App* app, thrustsched::app::FlightDynamicsFiles* files) {
+  app->add_option("--oem", files->oem,
+                  "also write the nonlinear replay as a CCSDS OEM 2.0 (KVN, EME2000, UTC; GEO only)");
+  app->add_option("--opm-maneuvers", files->opm_maneuvers,
+                  "also write the plan as a CCSDS OPM 2.0 with one maneuver block per burn (GEO only)");
+}
+
 std::string CommandLine(int argc, char** argv) {
   std::string s;
   for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
@@ -101,6 +109,7 @@ int main(int argc, char** argv) {
   solve_flags.AddModelOptions(c_solve);
   c_solve->add_option("--export-mps", solve.export_mps, "also write the model as free MPS");
   c_solve->add_option("--export-lp", solve.export_lp, "also write the model as CPLEX LP");
+  AddCcsdsOptions(c_solve, &solve.ccsds);
   c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
   c_solve->add_flag("--no-plots", solve.no_plots, "write the gnuplot scripts but do not run gnuplot");
   c_solve->add_flag("--force", solve.force,
@@ -134,6 +143,7 @@ int main(int argc, char** argv) {
   c_check->add_flag("--no-plots", check.no_plots, "with --out: do not run gnuplot");
   c_check->add_flag("--force", check.force,
                     "with --out: replace the files of an earlier run in that folder");
+  AddCcsdsOptions(c_check, &check.ccsds);
 
   // import-solution
   app::ImportArgs imp;
@@ -185,6 +195,7 @@ int main(int argc, char** argv) {
                        "with exit 2)");
   c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
   c_simulate->add_flag("--no-plots", sim.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  AddCcsdsOptions(c_simulate, &sim.ccsds);
 
   // `thrustsched help [command]`, and a misspelt command named as such.
   if (argc >= 2 && std::string(argv[1]) == "help") {

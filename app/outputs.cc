@@ -139,6 +139,23 @@ int ThrusterOf(const std::string& path, const CsvTable::Row& row, const std::str
                       "\" is not in the scenario (thrusters: " + list + ")");
 }
 
+// A start_utc/end_utc cell, if present and not empty, must be the UTC label
+// of the time in seconds (derived columns: the seconds are what is read).
+void CheckUtcCell(const std::string& path, const CsvTable::Row& row, const CsvTable& t,
+                  const std::string& column, double t_s, const Scenario& s) {
+  auto c = t.column.find(column);
+  if (c == t.column.end() || row.cells[c->second].empty()) return;
+  const std::string& cell = row.cells[c->second];
+  const std::string where = path + ":" + std::to_string(row.line) + ": " + column + " \"" + cell + "\"";
+  if (!s.geo) throw ScenarioError(where + ": the scenario has no UTC epoch (GEO models only)");
+  const dynamics::Epoch label = Wrap(where, [&] { return dynamics::Epoch::Parse(cell); });
+  const double dt = label.SecondsSince(dynamics::Epoch::Parse(s.geo->epoch)) - t_s;
+  if (std::abs(dt) > 1e-3) {
+    throw ScenarioError(where + " is not the UTC time of " + Fmt(t_s) + " s after the epoch " +
+                        s.geo->epoch + " (off by " + Fmt(dt) + " s)");
+  }
+}
+
 double OutputToWindow(const Scenario& s, double v) { return v * s.window_unit_per_output_unit; }
 
 std::string OutputName(const Scenario& s, int output) {
@@ -441,13 +458,26 @@ void WriteJsonFile(const std::string& path, const nlohmann::json& json) {
 }
 
 void WriteScheduleCsv(const std::string& path, const Scenario& s,
-                      const std::vector<transcription::Burn>& burns) {
+                      const std::vector<transcription::Burn>& burns, const ReplayLeg* replay) {
   std::ostringstream os;
-  os << "thruster,start_s,end_s,duration_s\n";
+  os << "thruster,start_s,end_s,duration_s";
+  std::vector<BurnFacts> facts;
+  if (s.geo) {
+    os << ",start_utc,end_utc,dir_r,dir_t,dir_n,delta_v_m_s";
+    facts = ComputeBurnFacts(s, burns, replay != nullptr ? *replay : ScenarioReplayLeg(s, burns, {}));
+  }
+  os << "\n";
   const std::vector<std::string> names = s.thruster_names();
-  for (const transcription::Burn& b : burns) {
+  for (size_t k = 0; k < burns.size(); ++k) {
+    const transcription::Burn& b = burns[k];
     os << names.at(b.thruster) << "," << Fmt(b.start_s) << "," << Fmt(b.end_s) << ","
-       << Fmt(b.duration_s()) << "\n";
+       << Fmt(b.duration_s());
+    if (s.geo) {
+      const BurnFacts& f = facts[k];
+      os << "," << f.start_utc << "," << f.end_utc << "," << Fmt(f.direction_rtn.x()) << ","
+         << Fmt(f.direction_rtn.y()) << "," << Fmt(f.direction_rtn.z()) << "," << Fmt(f.delta_v_m_s);
+    }
+    os << "\n";
   }
   WriteTextFile(path, os.str());
 }
@@ -466,7 +496,9 @@ void WriteImpulsesCsv(const std::string& path, const Scenario& s,
 }
 
 std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const Scenario& s) {
-  const CsvTable t = ReadCsv(path, {"thruster", "start_s", "end_s"}, {"duration_s"});
+  const CsvTable t = ReadCsv(path, {"thruster", "start_s", "end_s"},
+                             {"duration_s", "start_utc", "end_utc", "dir_r", "dir_t", "dir_n",
+                              "delta_v_m_s"});
   std::vector<transcription::Burn> burns;
   for (const CsvTable::Row& row : t.rows) {
     transcription::Burn b;
@@ -485,6 +517,8 @@ std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const 
                             " disagrees with end_s - start_s = " + Fmt(b.duration_s()));
       }
     }
+    CheckUtcCell(path, row, t, "start_utc", b.start_s, s);
+    CheckUtcCell(path, row, t, "end_utc", b.end_s, s);
     burns.push_back(b);
   }
   return burns;

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/geo_products.h"
 #include "app/scenario.h"
 #include "transcription/checker.h"
 #include "transcription/schedule_milp.h"
@@ -66,18 +67,24 @@ std::string StatusName(milp::SolveStatus status);
 void WriteTextFile(const std::string& path, const std::string& text);
 void WriteJsonFile(const std::string& path, const nlohmann::json& json);
 
-/// Header "thruster,start_s,end_s,duration_s", one row per burn.
+/// Header "thruster,start_s,end_s,duration_s", one row per burn. GEO
+/// scenarios append "start_utc,end_utc,dir_r,dir_t,dir_n,delta_v_m_s" (UTC
+/// times, the thruster's RTN direction, the delta-v delivered on the
+/// nonlinear replay: app/geo_products.h) computed from `replay` (the
+/// scenario's own initial state at the horizon start if null).
 void WriteScheduleCsv(const std::string& path, const Scenario& scenario,
-                      const std::vector<transcription::Burn>& burns);
+                      const std::vector<transcription::Burn>& burns,
+                      const ReplayLeg* replay = nullptr);
 /// Header "thruster,node,time_s,delta_v_m_s", one row per impulse (impulsive mode).
 void WriteImpulsesCsv(const std::string& path, const Scenario& scenario,
                       const std::vector<transcription::Impulse>& impulses);
 
-/// Reads a schedule written by WriteScheduleCsv or by hand (duration_s
-/// optional; blank lines and lines starting with '#' ignored).
+/// Reads a schedule written by WriteScheduleCsv or by hand (duration_s and
+/// the GEO columns optional; blank lines and lines starting with '#' ignored).
 /// @throws ScenarioError naming the file, line and field on a bad header, an
-/// unknown thruster, a non-finite time, end < start, or a duration that
-/// disagrees with end - start.
+/// unknown thruster, a non-finite time, end < start, a duration that
+/// disagrees with end - start, or a start_utc/end_utc that is not the UTC
+/// label of start_s/end_s (to 1 ms).
 std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const Scenario& scenario);
 /// Reads impulses.csv. The node must be a grid node index; time_s, if not
 /// empty, must equal the node's time. @throws ScenarioError as ReadScheduleCsv.

@@ -38,16 +38,21 @@ bool ValidThrusterName(const std::string& name) {
   return true;
 }
 
-// Keys of a state description, per model type.
-std::vector<std::string> StateForms(ModelType type) {
-  if (type == ModelType::kGeo) return {"station_point", "relative_equinoctial", "state"};
+// Keys of a state description, per model type (a GEO initial state may also
+// be an orbit: initial_orbit.h).
+std::vector<std::string> StateForms(ModelType type, bool initial = false) {
+  if (type == ModelType::kGeo) {
+    std::vector<std::string> forms = {"station_point", "relative_equinoctial", "state"};
+    if (initial) forms.insert(forms.end(), OrbitForms().begin(), OrbitForms().end());
+    return forms;
+  }
   return {"hcw_position_m", "state"};
 }
 
 // Reads a state given in one of the forms above from `o` (other keys of `o`
 // are left to the caller).
-Eigen::VectorXd ReadState(JsonObject& o, ModelType type, int n) {
-  o.ExactlyOneOf(StateForms(type), /*required=*/true);
+Eigen::VectorXd ReadState(JsonObject& o, ModelType type, int n, bool initial = false) {
+  o.ExactlyOneOf(StateForms(type, initial), /*required=*/true);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   if (o.Has("state")) {
     const std::vector<double> v = o.NumberArray("state", n);
@@ -75,6 +80,30 @@ Eigen::VectorXd ReadState(JsonObject& o, ModelType type, int n) {
   return x;
 }
 
+
+// The initial state; needs the model and the horizon (an orbit is converted
+// at the horizon start). OPM paths are relative to the scenario file.
+void ParseInitialState(JsonObject init, const ScenarioParseOptions& options, Scenario* s) {
+  if (s->model_type != ModelType::kGeo) {
+    for (const std::string& form : OrbitForms()) {
+      if (init.Has(form)) {
+        init.Fail(form, "an orbit needs a \"geo\" model, got \"" + std::string(ToString(s->model_type)) + "\"");
+      }
+    }
+  }
+  if (s->model_type == ModelType::kGeo && HasOrbitForm(init)) {
+    init.ExactlyOneOf(StateForms(ModelType::kGeo, /*initial=*/true), /*required=*/true);
+    std::error_code ec;
+    const bool is_file = std::filesystem::is_regular_file(options.source, ec);
+    const std::string base_dir = is_file ? std::filesystem::path(options.source).parent_path().string() : "";
+    const dynamics::GeoSimulator sim(*s->geo);
+    s->initial_orbit = ReadInitialOrbit(init, sim, s->start_s, base_dir);
+    s->problem.initial_state = s->initial_orbit->relative_state;
+  } else {
+    s->problem.initial_state = ReadState(init, s->model_type, s->problem.model->num_states(), /*initial=*/true);
+  }
+  init.Finish();
+}
 
 void ParseModel(JsonObject m, Scenario* s) {
   const std::string type =
@@ -549,13 +578,8 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
 
   ParseModel(top.Object("model"), &s);
   ParseSpacecraft(top.Object("spacecraft"), &s);
-  const int n = s.problem.model->num_states();
-  {
-    JsonObject init = top.Object("initial_state");
-    s.problem.initial_state = ReadState(init, s.model_type, n);
-    init.Finish();
-  }
   ParseHorizon(top.Object("horizon"), &s);
+  ParseInitialState(top.Object("initial_state"), options, &s);
 
   // Input mode first: it decides which other sections make sense.
   if (top.Has("input_mode")) {

@@ -28,6 +28,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/initial_orbit.h"
 #include "app/json_reader.h"
 #include "dynamics/geo_model.h"
 #include "milp/solver.h"
@@ -81,6 +82,10 @@ struct Scenario {
 
   /// GEO model options (set iff model_type == kGeo).
   std::optional<dynamics::GeoModelOptions> geo;
+  /// GEO: the initial state when it was given as an orbit (OPM file, ECI
+  /// state vector or Keplerian elements); problem.initial_state holds its
+  /// conversion to the model state at the horizon start.
+  std::optional<InitialOrbit> initial_orbit;
   /// Uniform grid description.
   double start_s = 0.0, step_s = 0.0;
   int num_intervals = 0;

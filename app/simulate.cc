@@ -988,6 +988,8 @@ int RunSimulate(const SimulateArgs& a) {
                 a.command_line);
   const Scenario& s = setup.scenario;
   const std::string epoch = s.geo->epoch;
+  CheckFlightDynamicsFiles(s, a.ccsds, setup.options.start_s,
+                           setup.options.start_s + setup.options.duration_s);
 
   // Ctrl-C stops the running solve; that unfinished cycle is not recorded.
   setup.options.solve.solve.interrupt = InterruptWatcher::flag();
@@ -1092,7 +1094,8 @@ int RunSimulate(const SimulateArgs& a) {
       interrupted = rec.interrupted || InterruptWatcher::interrupted();
       if (rec.interrupted) break;
       // Files of the finished cycle, then the checkpoint.
-      WriteScheduleCsv(dir + "/cycles/" + CycleTag(k) + ".csv", s, rec.burns);
+      const ReplayLeg leg = CycleReplayLeg(rec, setup.options.step_s);
+      WriteScheduleCsv(dir + "/cycles/" + CycleTag(k) + ".csv", s, rec.burns, &leg);
       WriteTextFile(dir + "/cycles/" + CycleTag(k) + "_trajectory.csv",
                     TrajectoryHeader() + TrajectoryRows(setup, rec, k + 1 == total));
       {
@@ -1153,6 +1156,11 @@ int RunSimulate(const SimulateArgs& a) {
   WriteJsonFile(dir + "/year.json", year);
   std::vector<std::string> files = {"cycles.csv", "year.json", "trajectory.csv", "checkpoint.json",
                                     "cycles/"};
+  if (a.ccsds.any() && !cycles.empty()) {
+    std::vector<ReplayLeg> legs;
+    for (const CycleRecord& c : cycles) legs.push_back(CycleReplayLeg(c, setup.options.step_s));
+    for (const std::string& f : WriteFlightDynamicsFiles(s, a.ccsds, legs)) files.push_back(f);
+  }
   if (!cycles.empty()) {
     const PlotFiles p = WriteYearPlots(dir, setup, cycles, !a.no_plots);
     files.insert(files.end(), p.images.begin(), p.images.end());

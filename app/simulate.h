@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/geo_products.h"
 #include "app/scenario.h"
 #include "transcription/long_horizon.h"
 
@@ -37,6 +38,7 @@ struct SimulateArgs {
   bool quiet = false;    // no progress on stderr
   bool no_plots = false; // write the gnuplot scripts but do not run gnuplot
   std::string command_line;
+  FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers: the whole run's replay and burns
 };
 
 /// Exit codes: 0 every requested cycle ran (fallbacks included: see year.json),

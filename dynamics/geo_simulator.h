@@ -17,6 +17,8 @@
 //   a UTC instant). No leap second is inserted during a run:
 //   JD_TT(t) = JD_UTC(epoch) + (TAI-UTC(epoch) + 32.184 s + t) / 86400 (TAI-UTC = 37 s in
 //   2034, see dynamics/time.h) for the ephemerides; UT1 = UTC at the epoch for Theta.
+//   (The chain, the leap-second table's validity and the exchange frames EME2000
+//   and GCRF: data/scenarios/README.md, section 10.)
 //
 // INERTIAL FRAME. Mean equator and mean equinox of the epoch ("mean of epoch",
 //   MOE(t0)): a fixed (inertial) frame equal to the mean-of-date frame at

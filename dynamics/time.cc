@@ -93,6 +93,32 @@ void CheckYear(std::int64_t year, const std::string& where) {
   }
 }
 
+// The calendar fields of (mjd, seconds of day) rounded to 1/ticks_per_second s
+// (a rounding up to midnight carries into the next day).
+struct CalendarLabel {
+  CivilDate date;
+  long long whole_seconds;  // of the day
+  long long ticks;          // fraction of the second, in 1/ticks_per_second
+};
+
+CalendarLabel Label(std::int64_t mjd, double seconds, long long ticks_per_second) {
+  long long ticks = std::llround(seconds * static_cast<double>(ticks_per_second));
+  const long long day = 86400LL * ticks_per_second;
+  if (ticks >= day) {
+    ticks -= day;
+    ++mjd;
+  }
+  return {CivilFromDays(mjd - kMjdOfUnixEpoch), ticks / ticks_per_second, ticks % ticks_per_second};
+}
+
+std::string DateTime(const CalendarLabel& l) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%04lld-%02d-%02dT%02lld:%02lld:%02lld", static_cast<long long>(l.date.year),
+                l.date.month, l.date.day, l.whole_seconds / 3600, (l.whole_seconds / 60) % 60,
+                l.whole_seconds % 60);
+  return buf;
+}
+
 }  // namespace
 
 Epoch Epoch::Parse(std::string_view text) {
@@ -168,27 +194,33 @@ double Epoch::JulianDateTt() const {
 }
 
 std::string Epoch::ToIso8601() const {
-  std::int64_t mjd = mjd_;
-  long long micro = std::llround(seconds_ * 1e6);
-  if (micro >= 86400LL * 1000000LL) {
-    micro -= 86400LL * 1000000LL;
-    ++mjd;
-  }
-  const CivilDate date = CivilFromDays(mjd - kMjdOfUnixEpoch);
-  const long long whole = micro / 1000000LL;
-  long long frac = micro % 1000000LL;
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%04lld-%02d-%02dT%02lld:%02lld:%02lld", static_cast<long long>(date.year),
-                date.month, date.day, whole / 3600, (whole / 60) % 60, whole % 60);
-  std::string out(buf);
-  if (frac != 0) {
+  const CalendarLabel l = Label(mjd_, seconds_, 1000000LL);
+  std::string out = DateTime(l);
+  if (l.ticks != 0) {
     char fbuf[16];
-    std::snprintf(fbuf, sizeof(fbuf), ".%06lld", frac);
+    std::snprintf(fbuf, sizeof(fbuf), ".%06lld", l.ticks);
     std::string f(fbuf);
     while (f.back() == '0') f.pop_back();
     out += f;
   }
   out += 'Z';
+  return out;
+}
+
+std::string Epoch::FormatUtc(int decimals, bool zulu) const {
+  if (decimals < 0 || decimals > 9) {
+    throw std::invalid_argument("Epoch::FormatUtc: decimals must be in 0..9, got " + std::to_string(decimals));
+  }
+  long long ticks_per_second = 1;
+  for (int k = 0; k < decimals; ++k) ticks_per_second *= 10;
+  const CalendarLabel l = Label(mjd_, seconds_, ticks_per_second);
+  std::string out = DateTime(l);
+  if (decimals > 0) {
+    char fbuf[16];
+    std::snprintf(fbuf, sizeof(fbuf), ".%0*lld", decimals, l.ticks);
+    out += fbuf;
+  }
+  if (zulu) out += 'Z';
   return out;
 }
 
@@ -214,6 +246,48 @@ Epoch Epoch::PlusSeconds(double s) const {
 
 double Epoch::SecondsSince(const Epoch& other) const {
   return static_cast<double>(mjd_ - other.mjd_) * kSecondsPerDay + (seconds_ - other.seconds_);
+}
+
+bool CrossesLeapSecond(const Epoch& from, double seconds) {
+  return from.PlusSeconds(seconds).TaiMinusUtc() != from.TaiMinusUtc();
+}
+
+const char* ToString(TimeScale scale) {
+  switch (scale) {
+    case TimeScale::kUtc:
+      return "UTC";
+    case TimeScale::kTai:
+      return "TAI";
+    case TimeScale::kTt:
+      return "TT";
+    case TimeScale::kGps:
+      return "GPS";
+  }
+  return "?";
+}
+
+Epoch UtcFromScale(const Epoch& label, TimeScale scale) {
+  // Offset of the scale from TAI (s): label_TAI = label - offset.
+  double tai_minus_label = 0.0;
+  switch (scale) {
+    case TimeScale::kUtc:
+      return label;
+    case TimeScale::kTai:
+      tai_minus_label = 0.0;
+      break;
+    case TimeScale::kTt:
+      tai_minus_label = -32.184;
+      break;
+    case TimeScale::kGps:
+      tai_minus_label = 19.0;  // GPS time = TAI - 19 s (fixed since 1980-01-06)
+      break;
+  }
+  const Epoch tai = label.PlusSeconds(tai_minus_label);
+  // UTC = TAI - (TAI - UTC); TAI - UTC is looked up at the UTC instant, so
+  // take it at the first guess and correct once (exact except inside the
+  // leap second itself, which UTC labels here cannot represent).
+  const Epoch guess = tai.PlusSeconds(-tai.TaiMinusUtc());
+  return tai.PlusSeconds(-guess.TaiMinusUtc());
 }
 
 double GmstRad(double jd_ut1) {

@@ -10,11 +10,19 @@
 //   double gmst = dynamics::GmstRad(jd_utc);    // 100.7225 deg (UT1 ~ UTC)
 //   std::string s = e.PlusSeconds(3600).ToIso8601();   // "2034-01-01T01:00:00Z"
 //
-// Time scales (dynamics.md §5.8): UT1 is taken equal to UTC (|UT1 - UTC| < 0.9 s,
-// i.e. < 4e-3 deg of Earth rotation); TT = UTC + (TAI - UTC) + 32.184 s with the
-// leap-second table below (TAI - UTC = 37 s since 2017-01-01, also used for all
-// later dates: no leap second has been announced since, and the CGPM decided
-// in 2022 to stop inserting them by 2035).
+// Time scales: UT1 is taken equal to UTC (|UT1 - UTC| < 0.9 s, i.e. < 4e-3 deg
+// of Earth rotation); TT = UTC + (TAI - UTC) + 32.184 s with the leap-second
+// table of IERS Bulletin C (TAI - UTC = 37 s since 2017-01-01). The table is
+// known to be complete up to kLeapSecondsKnownUntil (Bulletin C 70, July 2025:
+// no leap second at the end of December 2025); later dates use the last value,
+// 37 s (the CGPM decided in 2022, resolution 4, to stop inserting leap seconds
+// by 2035). The whole chain (UTC labels, TT/TDB for the ephemerides, Earth
+// rotation) and what an unannounced leap second would change are documented
+// once, in data/scenarios/README.md, section 10.1.
+//
+//   std::string s = e.FormatUtc(3, true);                       // "2034-01-01T00:00:00.000Z"
+//   Epoch utc = UtcFromScale(Epoch::Parse("2034-01-01T00:01:09.184"), TimeScale::kTt);
+//                                                               // 2034-01-01T00:00:00Z
 #ifndef THRUSTSCHED_DYNAMICS_TIME_H_
 #define THRUSTSCHED_DYNAMICS_TIME_H_
 
@@ -54,6 +62,10 @@ class Epoch {
   /// "YYYY-MM-DDThh:mm:ssZ", with up to 6 decimals of seconds when the
   /// instant is not a whole second (trailing zeros removed).
   std::string ToIso8601() const;
+  /// "YYYY-MM-DDThh:mm:ss" with exactly `decimals` (0..9) decimals of seconds,
+  /// rounded to the nearest (carries into the minute, hour and day), then 'Z'
+  /// if `zulu`. @throws std::invalid_argument if decimals is outside 0..9.
+  std::string FormatUtc(int decimals, bool zulu) const;
   /// The UTC label `s` seconds later (s may be negative). Leap seconds that
   /// would fall inside the interval are ignored (the UTC clock is treated as
   /// uniform). @throws std::invalid_argument if s is not finite or the result
@@ -75,6 +87,27 @@ class Epoch {
   std::int64_t mjd_ = 51544;  // 2000-01-01
   double seconds_ = 43200.0;
 };
+
+/// Last instant up to which the leap-second table is known to be complete
+/// (IERS Bulletin C 70 announced no leap second at the end of December 2025;
+/// the next possible one is at the end of June 2026). Update it, and the
+/// table in time.cc, with each new Bulletin C.
+inline constexpr const char* kLeapSecondsKnownUntil = "2026-06-30T23:59:59Z";
+
+/// True if the table's value of TAI - UTC changes between `from` and the
+/// instant `seconds` later, i.e. a leap second of the table falls inside: UTC
+/// labels computed with PlusSeconds are then off by the leap seconds after it.
+bool CrossesLeapSecond(const Epoch& from, double seconds);
+
+/// Time scales a calendar label can be given in (the TIME_SYSTEM values of
+/// CCSDS 502.0-B-3 §3.2.3 that this library converts exactly).
+enum class TimeScale { kUtc, kTai, kTt, kGps };
+/// "UTC", "TAI", "TT", "GPS".
+const char* ToString(TimeScale scale);
+/// The UTC instant whose calendar label in `scale` is `label` (parsed as if
+/// it were UTC): TAI = UTC + (TAI - UTC), TT = TAI + 32.184 s, GPS = TAI - 19 s.
+/// @throws std::invalid_argument if the result leaves the supported years.
+Epoch UtcFromScale(const Epoch& label, TimeScale scale);
 
 /// Greenwich mean sidereal time (rad, in [0, 2 pi)) at the UT1 Julian date,
 /// IAU 1982 expression (Meeus 12.4):

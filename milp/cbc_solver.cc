@@ -148,6 +148,10 @@ class CbcSolverImpl final : public Solver {
                                        SolveResult claimed) const;
   LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
                                          const SolveOptions& options) const override;
+  std::unique_ptr<LpSession> DoOpenLpSession(const LpData& problem,
+                                             const SolveOptions& options) const override {
+    return internal::OpenClpSession(problem, options);
+  }
 };
 
 LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
@@ -171,6 +175,7 @@ LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
       internal::SolveLpCore(relaxed, internal::MakeArrays(relaxed, sign, false), options, &clock);
   r.status = o.status;
   r.detail = o.detail.empty() ? "clp" : "clp: " + o.detail;
+  r.iterations = o.iterations;
   if (o.status == SolveStatus::kOptimal) {
     r.x = o.x;
     r.objective = lp.Objective(o.x);
@@ -184,8 +189,11 @@ LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
 
 // A model without integer columns: CLP alone.
 SolveResult SolveContinuous(const LpData& lp, const SolveOptions& options, SolveClock* clock) {
+  SolveOptions o_lp = options;
+  // A model's solution must be a feasible vertex, not an interior point.
+  if (o_lp.lp_algorithm == LpAlgorithm::kBarrierNoCrossover) o_lp.lp_algorithm = LpAlgorithm::kBarrier;
   const internal::LpOutcome o = internal::SolveLpCore(
-      lp, internal::MakeArrays(lp, internal::ObjectiveSign(lp), true), options, clock);
+      lp, internal::MakeArrays(lp, internal::ObjectiveSign(lp), true), o_lp, clock);
   SolveResult r;
   r.status = o.status;
   r.detail = o.detail.empty() ? "clp (no integer columns)" : "clp: " + o.detail;

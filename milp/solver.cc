@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "milp/lp_bound.h"
+
 namespace thrustsched::milp {
 namespace {
 
@@ -86,6 +88,8 @@ std::string_view ToString(LpAlgorithm algorithm) {
       return "dual";
     case LpAlgorithm::kBarrier:
       return "barrier";
+    case LpAlgorithm::kBarrierNoCrossover:
+      return "barrier_no_crossover";
   }
   return "unknown";
 }
@@ -151,11 +155,22 @@ LpRelaxationResult Solver::SolveLpRelaxation(const LpData& problem,
   Validate(problem, options, "Solver::SolveLpRelaxation");
   const auto start = std::chrono::steady_clock::now();
   LpRelaxationResult result = DoSolveLpRelaxation(problem, options);
+  if (result.row_duals.size() == problem.num_rows() && problem.num_rows() > 0) {
+    result.dual_bound = SafeDualBound(problem, result.row_duals).bound;
+  } else if (result.status == SolveStatus::kOptimal) {
+    result.dual_bound = result.objective;  // no rows: the optimum is exact
+  }
   if (result.wall_seconds <= 0.0) {
     result.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   return result;
+}
+
+std::unique_ptr<LpSession> Solver::OpenLpSession(const LpData& problem,
+                                                 const SolveOptions& options) const {
+  Validate(problem, options, "Solver::OpenLpSession");
+  return DoOpenLpSession(problem, options);
 }
 
 }  // namespace thrustsched::milp

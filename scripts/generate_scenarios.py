@@ -153,6 +153,17 @@ def geo_weeks():
         "geo_week_anzel4_failed_ne",
         common + "Anzel thrusters with NE failed (disabled: forced off), thesis sec. 5.3.7.",
         anzel, disabled=["NE"]))
+    from_opm = geo(
+        "geo_week_from_opm",
+        "The GEO week of geo_week_anzel4 (118 deg E, epoch 2034-01-01T00:00:00Z, full perturbation "
+        "model, Anzel thrusters, thesis rules, end-of-week station-keeping set) started from a real "
+        "orbit instead of the station point: the CCSDS OPM geo_week_from_opm.opm (a fictitious "
+        "satellite's orbit determination 2 h before the week, EME2000, UTC), propagated to the week "
+        "start with the nonlinear model and converted to the model's relative equinoctial state. Run "
+        "with --oem and --opm-maneuvers to get the plan back as CCSDS files (README).",
+        anzel)
+    from_opm["initial_state"] = {"opm": {"file": "geo_week_from_opm.opm"}}
+    write("geo_week_from_opm", from_opm)
 
 
 def serra(name, description, a_m, e, nu0, nuf, z0, vz0, zf, vzf, intervals=1000):

@@ -263,6 +263,9 @@ std::vector<std::string> DriverArguments(const DriverRequest& request, const Sol
     case LpAlgorithm::kBarrier:
       args.push_back("-barrier");
       break;
+    case LpAlgorithm::kBarrierNoCrossover:
+      args.push_back("-primalS");  // CBC needs a vertex at its root
+      break;
   }
   args.insert(args.end(), {"-solve", "-quit"});
   return args;

@@ -55,6 +55,7 @@ struct LpOutcome {
   double min_objective = std::numeric_limits<double>::quiet_NaN();
   Eigen::VectorXd x;
   Eigen::VectorXd duals;  // CLP row duals (minimisation form)
+  long long iterations = 0;
 };
 
 /// Solves the continuous relaxation of `lp` (as given in `arrays`) with CLP:
@@ -79,6 +80,10 @@ bool CompletePartial(const LpData& lp, const SolveOptions& options, Eigen::Vecto
 
 /// Models without rows or without columns (CBC cannot take them).
 SolveResult SolveTrivial(const LpData& lp);
+
+/// The CLP LP session of Solver::OpenLpSession: the first Solve with presolve
+/// and dual simplex, later ones by dual simplex from the last basis.
+std::unique_ptr<LpSession> OpenClpSession(const LpData& lp, const SolveOptions& options);
 
 }  // namespace thrustsched::milp::internal
 

@@ -55,6 +55,28 @@ inline void WriteFile(const std::string& path, const std::string& text) {
   out << text;
 }
 
+/// A CSV file as its header line and its rows split at commas (blank lines skipped).
+struct CsvRows {
+  std::string header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+inline CsvRows ReadCsv(const std::string& path) {
+  CsvRows c;
+  std::istringstream in(ReadFile(path));
+  std::string line;
+  std::getline(in, c.header);
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    c.rows.push_back(cells);
+  }
+  return c;
+}
+
 inline nlohmann::json ReadJson(const std::string& path) {
   return nlohmann::json::parse(ReadFile(path));
 }

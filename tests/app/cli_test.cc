@@ -26,27 +26,6 @@ const std::string kTestData = THRUSTSCHED_APP_TEST_DATA "/";
 #define EXPECT_HAS(haystack, needle) \
   EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
 
-struct CsvRows {
-  std::string header;
-  std::vector<std::vector<std::string>> rows;
-};
-
-CsvRows ReadCsv(const std::string& path) {
-  CsvRows c;
-  std::istringstream in(ReadFile(path));
-  std::string line;
-  std::getline(in, c.header);
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    c.rows.push_back(cells);
-  }
-  return c;
-}
-
 TEST(Cli, HelpAndVersion) {
   RunResult r = RunCli({"--help"});
   EXPECT_EQ(r.exit_code, 0) << r.Describe();

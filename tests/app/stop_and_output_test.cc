@@ -34,6 +34,14 @@ double Seconds(Clock::time_point since) {
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
 
+// The process has ended (a zombie waiting for RunProgram to reap it).
+bool Ended(pid_t pid) {
+  const std::string stat = ReadFile("/proc/" + std::to_string(pid) + "/stat");
+  const size_t close = stat.rfind(')');
+  return stat.empty() || (close != std::string::npos && close + 2 < stat.size() &&
+                          stat[close + 2] == 'Z');
+}
+
 // Solves `scenario` and sends `signal` once stderr contains `trigger`;
 // returns the run and the seconds from the signal to the CLI's line saying
 // the solver stopped ("interrupted (SIG...) after").
@@ -50,7 +58,7 @@ SignalledRun SolveAndSignal(const std::string& scenario, const std::string& dir,
       THRUSTSCHED_CLI, {"solve", scenario, "--out", dir, "--no-plots"}, 600.0,
       [&](pid_t pid, const std::string& err_path) {
         const Clock::time_point t0 = Clock::now();
-        while (Seconds(t0) < give_up_s) {
+        while (Seconds(t0) < give_up_s && !Ended(pid)) {
           if (ReadFile(err_path).find(trigger) != std::string::npos) break;
           std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }

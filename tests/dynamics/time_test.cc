@@ -60,6 +60,40 @@ TEST(EpochTest, IsoRoundTripAndArithmetic) {
   EXPECT_NEAR(e.PlusSeconds(86400.0).JulianDateTt() - e.JulianDateTt(), 1.0, 1e-9);
 }
 
+TEST(EpochTest, FixedDecimalsRoundAndCarry) {
+  const Epoch e = Epoch::Parse("2034-01-01T00:00:00Z");
+  EXPECT_EQ(e.FormatUtc(3, true), "2034-01-01T00:00:00.000Z");
+  EXPECT_EQ(e.PlusSeconds(3723.4567).FormatUtc(3, false), "2034-01-01T01:02:03.457");
+  EXPECT_EQ(e.PlusSeconds(3723.4567).FormatUtc(0, true), "2034-01-01T01:02:03Z");
+  // Rounding up to midnight carries into the next day (and year).
+  EXPECT_EQ(e.PlusSeconds(-0.0004).FormatUtc(3, true), "2034-01-01T00:00:00.000Z");
+  EXPECT_EQ(e.PlusSeconds(-0.0006).FormatUtc(3, true), "2033-12-31T23:59:59.999Z");
+  EXPECT_EQ(e.PlusSeconds(0.5).FormatUtc(6, false), "2034-01-01T00:00:00.500000");
+  EXPECT_THROW(e.FormatUtc(10, true), std::invalid_argument);
+}
+
+TEST(EpochTest, OtherTimeScalesConvertToUtc) {
+  // 2034: TAI - UTC = 37 s, TT - UTC = 69.184 s, GPS - UTC = 18 s.
+  const Epoch utc = Epoch::Parse("2034-01-01T00:00:00Z");
+  EXPECT_EQ(UtcFromScale(Epoch::Parse("2034-01-01T00:00:37Z"), TimeScale::kTai), utc);
+  EXPECT_NEAR(UtcFromScale(Epoch::Parse("2034-01-01T00:01:09.184Z"), TimeScale::kTt).SecondsSince(utc), 0.0, 1e-9);
+  EXPECT_EQ(UtcFromScale(Epoch::Parse("2034-01-01T00:00:18Z"), TimeScale::kGps), utc);
+  EXPECT_EQ(UtcFromScale(utc, TimeScale::kUtc), utc);
+  // Just after the 2016-12-31 leap second: TAI - UTC = 37 s on the UTC side.
+  EXPECT_EQ(UtcFromScale(Epoch::Parse("2017-01-01T00:00:37Z"), TimeScale::kTai), Epoch::Parse("2017-01-01T00:00:00Z"));
+  // Just before it: 36 s.
+  EXPECT_EQ(UtcFromScale(Epoch::Parse("2016-12-31T12:00:36Z"), TimeScale::kTai), Epoch::Parse("2016-12-31T12:00:00Z"));
+  EXPECT_STREQ(ToString(TimeScale::kTt), "TT");
+}
+
+TEST(EpochTest, LeapSecondCrossingsAreDetected) {
+  EXPECT_TRUE(CrossesLeapSecond(Epoch::Parse("2016-12-31T12:00:00Z"), 86400.0));
+  EXPECT_FALSE(CrossesLeapSecond(Epoch::Parse("2017-01-01T00:00:00Z"), 365 * 86400.0));
+  EXPECT_FALSE(CrossesLeapSecond(Epoch::Parse("2034-01-01T00:00:00Z"), 365 * 86400.0));
+  // The table's last known date is after its last leap second.
+  EXPECT_EQ(Epoch::Parse(kLeapSecondsKnownUntil).TaiMinusUtc(), 37.0);
+}
+
 TEST(GmstTest, PublishedValues) {
   // J2000.0: 280.46061837 deg by definition of the series.
   EXPECT_NEAR(GmstRad(2451545.0) / kDeg, 280.46061837, 1e-8);
