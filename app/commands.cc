@@ -285,10 +285,11 @@ int RunSolve(const SolveArgs& a) {
   if (!a.export_lp.empty()) WriteModelFile(a.export_lp, milp.lp(), s.name, false);
 
   // Solve (progress on stderr once the solve has run for a few seconds).
-  transcription::SolveScheduleOptions opt;
+  transcription::SolveScheduleOptions opt{};
   opt.build = s.build;
   opt.solve = s.solve;
   opt.check_schedule = false;  // checked below, with its own timing and messages
+  opt.search.enabled = s.search;
   const bool quiet = a.quiet;
   // The best incumbent seen so far: progress reports between incumbents may
   // carry NaN for it, and the line should still show it.

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
   app::SolveArgs solve;
   OverrideFlags solve_flags;
   bool solve_no_diagnose = false;
+  bool solve_no_search = false;
   CLI::App* c_solve = cli.add_subcommand(
       "solve",
       "Build, solve, check and write results (summary.json, schedule.csv, trajectory.csv, SVG "
@@ -115,6 +116,9 @@ int main(int argc, char** argv) {
   c_solve->add_flag("--force", solve.force,
                     "replace the files of an earlier run in the --out folder (without it, such a "
                     "folder is refused with exit 2)");
+  c_solve->add_flag("--no-search", solve_no_search,
+                    "hand the whole MILP to CBC, without the problem-aware search (scenario field "
+                    "solver.search; for comparisons with the first release)");
   c_solve->add_flag("--no-diagnose", solve_no_diagnose,
                     "after a solve that stops with no schedule, do not look for a proof of "
                     "infeasibility (scenario field solver.diagnosis_time_limit_s, default 30 s)");
@@ -241,6 +245,7 @@ int main(int argc, char** argv) {
     if (c_solve->parsed()) {
       solve.overrides = solve_flags.Get();
       solve.overrides.no_diagnose = solve_no_diagnose;
+      solve.overrides.no_search = solve_no_search;
       solve.command_line = CommandLine(argc, argv);
       return app::RunSolve(solve);
     }

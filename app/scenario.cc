@@ -430,6 +430,7 @@ void ParseSolver(JsonObject o, Scenario* s) {
   if (auto d = o.OptionalNumber("diagnosis_time_limit_s", Bound::kNonNegative)) {
     s->diagnosis_time_limit_s = *d;
   }
+  s->search = o.OptionalBool("search").value_or(s->search);
   o.Finish();
   std::string err;
   if (!so.IsValid(&err)) throw ScenarioError(o.path() + ": " + err);
@@ -647,6 +648,7 @@ Scenario LoadScenario(const std::string& path, const ScenarioParseOptions& optio
 
 void ApplyOverrides(const ScenarioOverrides& ov, Scenario* s) {
   if (ov.no_diagnose) s->diagnosis_time_limit_s = 0.0;
+  if (ov.no_search) s->search = false;
   if (ov.time_limit_s) {
     if (!(*ov.time_limit_s > 0.0) || std::isnan(*ov.time_limit_s)) {
       throw ScenarioError("--time-limit: must be > 0, got " + FormatNumber(*ov.time_limit_s));

@@ -78,6 +78,9 @@ struct Scenario {
   /// infeasibility (transcription::SolveScheduleOptions::prefix_diagnosis_s);
   /// 0 switches it off (as does --no-diagnose).
   double diagnosis_time_limit_s = 30.0;
+  /// solver.search: the problem-aware search (transcription/search.h) in
+  /// on-off mode; false hands the whole MILP to CBC (--no-search).
+  bool search = true;
   VerdictOptions verdict;
 
   /// GEO model options (set iff model_type == kGeo).
@@ -120,6 +123,7 @@ struct ScenarioOverrides {
   std::optional<std::string> formulation;
   std::optional<std::string> encoding;
   bool no_diagnose = false;  // --no-diagnose
+  bool no_search = false;    // --no-search
 };
 /// Applies the overrides. @throws ScenarioError naming the option ("--gap: ...").
 void ApplyOverrides(const ScenarioOverrides& overrides, Scenario* scenario);

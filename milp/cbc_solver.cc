@@ -29,6 +29,7 @@
 #include "CbcConfig.h"
 #include "ClpConfig.h"
 #include "milp/internal/cbc_child.h"
+#include "milp/internal/lp_child.h"
 #include "milp/internal/cbc_driver.h"
 #include "milp/internal/clp_lp.h"
 #include "milp/internal/solve_clock.h"
@@ -171,10 +172,28 @@ LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
     return r;
   }
   const double sign = internal::ObjectiveSign(lp);
-  const internal::LpOutcome o =
-      internal::SolveLpCore(relaxed, internal::MakeArrays(relaxed, sign, false), options, &clock);
+  const internal::CoinArrays arrays = internal::MakeArrays(relaxed, sign, false);
+  internal::LpOutcome o;
+  std::string note;
+  const bool interior = options.lp_algorithm == LpAlgorithm::kBarrier ||
+                        options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
+  if (interior && options.cbc.separate_process) {
+    // CLP's interior point may abort() the process (see lp_child.h).
+    internal::LpChildOutcome c = internal::SolveLpCoreInChild(relaxed, arrays, options, &clock);
+    if (c.died) {
+      SolveOptions simplex = options;
+      simplex.lp_algorithm = LpAlgorithm::kPrimal;
+      note = "interior point " + c.why + ", primal simplex instead";
+      o = internal::SolveLpCore(relaxed, arrays, simplex, &clock);
+    } else {
+      o = std::move(c.outcome);
+    }
+  } else {
+    o = internal::SolveLpCore(relaxed, arrays, options, &clock);
+  }
   r.status = o.status;
-  r.detail = o.detail.empty() ? "clp" : "clp: " + o.detail;
+  std::string words = note + (note.empty() || o.detail.empty() ? "" : "; ") + o.detail;
+  r.detail = words.empty() ? "clp" : "clp: " + words;
   r.iterations = o.iterations;
   if (o.status == SolveStatus::kOptimal) {
     r.x = o.x;

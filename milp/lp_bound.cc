@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 #include <Eigen/SparseCore>
 
 namespace thrustsched::milp {
@@ -28,11 +29,8 @@ bool Unsafe(double d, double lo, double up) {
   return (d > 0.0 && !std::isfinite(lo)) || (d < 0.0 && !std::isfinite(up));
 }
 
-// Zeroes the reduced costs of `cols` by changing the duals of `rows` (whose
-// dual sign is free) by the least-norm step: dy = A_RJ z, (A_RJ' A_RJ) z = d_J.
-// Returns false if the normal matrix is singular (a column of J in no row of R).
-bool ProjectOut(const SparseCol& a, const std::vector<int>& rows, const std::vector<int>& cols,
-                Eigen::VectorXd* y, Eigen::VectorXd* d) {
+// A_RJ: the rows `rows` of the columns `cols`.
+SparseCol Block(const SparseCol& a, const std::vector<int>& rows, const std::vector<int>& cols) {
   std::vector<int> row_pos(static_cast<size_t>(a.rows()), -1);
   for (size_t k = 0; k < rows.size(); ++k) row_pos[static_cast<size_t>(rows[k])] = static_cast<int>(k);
   std::vector<Eigen::Triplet<double>> t;
@@ -42,8 +40,45 @@ bool ProjectOut(const SparseCol& a, const std::vector<int>& rows, const std::vec
       if (r >= 0) t.emplace_back(r, static_cast<int>(k), it.value());
     }
   }
-  SparseCol arj(static_cast<int>(rows.size()), static_cast<int>(cols.size()));
-  arj.setFromTriplets(t.begin(), t.end());
+  SparseCol block(static_cast<int>(rows.size()), static_cast<int>(cols.size()));
+  block.setFromTriplets(t.begin(), t.end());
+  return block;
+}
+
+// When the equality rows holding the columns are exactly as many as the
+// columns (the schedule MILPs: one dynamics row per state column), A_RJ' dy
+// = d_J is square (block triangular in time: the adjoint recursion), solved
+// by LU to full accuracy. False if not square or singular.
+bool ProjectOutSquare(const SparseCol& a, const std::vector<int>& equality_rows,
+                      const std::vector<int>& cols, Eigen::VectorXd* y,
+                      const Eigen::VectorXd& d) {
+  std::vector<char> touched(static_cast<size_t>(a.rows()), 0);
+  for (int j : cols) {
+    for (SparseCol::InnerIterator it(a, j); it; ++it) touched[static_cast<size_t>(it.row())] = 1;
+  }
+  std::vector<int> rows;
+  for (int i : equality_rows) {
+    if (touched[static_cast<size_t>(i)]) rows.push_back(i);
+  }
+  if (rows.size() != cols.size()) return false;
+  const SparseCol at = SparseCol(Block(a, rows, cols).transpose());
+  Eigen::SparseLU<SparseCol> lu;
+  lu.compute(at);
+  if (lu.info() != Eigen::Success) return false;
+  Eigen::VectorXd dj(static_cast<Eigen::Index>(cols.size()));
+  for (size_t k = 0; k < cols.size(); ++k) dj[static_cast<Eigen::Index>(k)] = d[cols[k]];
+  const Eigen::VectorXd dy = lu.solve(dj);
+  if (lu.info() != Eigen::Success || !dy.allFinite()) return false;
+  for (size_t k = 0; k < rows.size(); ++k) (*y)[rows[k]] += dy[static_cast<Eigen::Index>(k)];
+  return true;
+}
+
+// Zeroes the reduced costs of `cols` by changing the duals of `rows` (whose
+// dual sign is free) by the least-norm step: dy = A_RJ z, (A_RJ' A_RJ) z = d_J.
+// Returns false if the normal matrix is singular (a column of J in no row of R).
+bool ProjectOut(const SparseCol& a, const std::vector<int>& rows, const std::vector<int>& cols,
+                Eigen::VectorXd* y, Eigen::VectorXd* d) {
+  const SparseCol arj = Block(a, rows, cols);
   const SparseCol normal = SparseCol(arj.transpose() * arj);
   Eigen::SimplicialLDLT<SparseCol> ldlt(normal);
   if (ldlt.info() != Eigen::Success) return false;
@@ -85,26 +120,38 @@ DualBound SafeDualBound(const LpData& lp, const Eigen::VectorXd& row_duals) {
   const double scale = std::max(1.0, c.cwiseAbs().maxCoeff());
   const double tiny = 1e-12 * scale;
   std::vector<int> free_rows;  // equality or ranged rows: any dual sign
+  std::vector<int> equality_rows;
   for (int i = 0; i < m; ++i) {
     if (std::isfinite(lp.row_lower[i]) && std::isfinite(lp.row_upper[i])) free_rows.push_back(i);
+    if (lp.row_lower[i] == lp.row_upper[i]) equality_rows.push_back(i);
   }
   DualBound b;
   // Columns whose needed bound side is infinite get a zero reduced cost; the
   // step changes other reduced costs, so look again (the set only grows).
+  // Free columns are in it from the start (whatever their reduced cost now):
+  // the step is then the whole adjoint system, square and exact.
   std::vector<char> in_set(static_cast<size_t>(n), 0);
   std::vector<int> set;
-  for (int pass = 0; pass < 3; ++pass) {
-    bool grew = false;
+  for (int j = 0; j < n; ++j) {
+    if (!std::isfinite(lp.col_lower[j]) && !std::isfinite(lp.col_upper[j])) {
+      in_set[static_cast<size_t>(j)] = 1;
+      set.push_back(j);
+    }
+  }
+  // (A few passes: each also refines the last one, whose normal equations
+  // lose digits on the scaled state columns.)
+  for (int pass = 0; pass < 6; ++pass) {
+    double left = 0.0;
     for (int j = 0; j < n; ++j) {
       if (!in_set[static_cast<size_t>(j)] && std::abs(d[j]) > tiny &&
           Unsafe(d[j], lp.col_lower[j], lp.col_upper[j])) {
         in_set[static_cast<size_t>(j)] = 1;
         set.push_back(j);
-        grew = true;
       }
     }
-    if (!grew) break;
-    if (!ProjectOut(a, free_rows, set, &y, &d)) {
+    for (int j : set) left = std::max(left, std::abs(d[j]));
+    if (left <= tiny) break;
+    if (!ProjectOutSquare(a, equality_rows, set, &y, d) && !ProjectOut(a, free_rows, set, &y, &d)) {
       b.detail = "the columns without a finite bound are not all in equality or ranged rows";
       break;
     }

@@ -186,4 +186,76 @@ bool LpData::IsValid(std::string* error) const {
   return true;
 }
 
+LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasible) {
+  const int n = lp.num_cols(), m = lp.num_rows();
+  std::vector<int> keep, new_index(static_cast<size_t>(n), -1);
+  Eigen::VectorXd fixed_value = Eigen::VectorXd::Zero(n);
+  for (int j = 0; j < n; ++j) {
+    if (lp.col_lower[j] == lp.col_upper[j]) {
+      fixed_value[j] = lp.col_lower[j];
+    } else {
+      new_index[static_cast<size_t>(j)] = static_cast<int>(keep.size());
+      keep.push_back(j);
+    }
+  }
+  const Eigen::VectorXd constant = lp.a_matrix * fixed_value;  // per row
+  std::vector<int> row_count(static_cast<size_t>(m), 0);
+  for (int j : keep) {
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it; ++it) {
+      ++row_count[static_cast<size_t>(it.row())];
+    }
+  }
+  std::vector<int> new_row(static_cast<size_t>(m), -1);
+  std::vector<int> rows;
+  bool ok = true;
+  for (int i = 0; i < m; ++i) {
+    if (row_count[static_cast<size_t>(i)] > 0) {
+      new_row[static_cast<size_t>(i)] = static_cast<int>(rows.size());
+      rows.push_back(i);
+      continue;
+    }
+    const double tol = 1e-9 * std::max(1.0, std::abs(constant[i]));
+    if (constant[i] < lp.row_lower[i] - tol || constant[i] > lp.row_upper[i] + tol) ok = false;
+  }
+  LpData out;
+  out.name = lp.name;
+  out.sense = lp.sense;
+  out.objective_offset = lp.objective_offset + lp.col_cost.dot(fixed_value);
+  const int nk = static_cast<int>(keep.size()), mk = static_cast<int>(rows.size());
+  out.col_cost.resize(nk);
+  out.col_lower.resize(nk);
+  out.col_upper.resize(nk);
+  out.col_type.resize(static_cast<size_t>(nk));
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int k = 0; k < nk; ++k) {
+    const int j = keep[static_cast<size_t>(k)];
+    out.col_cost[k] = lp.col_cost[j];
+    out.col_lower[k] = lp.col_lower[j];
+    out.col_upper[k] = lp.col_upper[j];
+    out.col_type[static_cast<size_t>(k)] = lp.col_type[static_cast<size_t>(j)];
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it; ++it) {
+      t.emplace_back(new_row[static_cast<size_t>(it.row())], k, it.value());
+    }
+  }
+  out.row_lower.resize(mk);
+  out.row_upper.resize(mk);
+  for (int r = 0; r < mk; ++r) {
+    const int i = rows[static_cast<size_t>(r)];
+    out.row_lower[r] = lp.row_lower[i] - constant[i];  // +-inf stay infinite
+    out.row_upper[r] = lp.row_upper[i] - constant[i];
+  }
+  out.a_matrix.resize(mk, nk);
+  out.a_matrix.setFromTriplets(t.begin(), t.end());
+  out.a_matrix.makeCompressed();
+  if (static_cast<int>(lp.col_names.size()) == n) {
+    for (int j : keep) out.col_names.push_back(lp.col_names[static_cast<size_t>(j)]);
+  }
+  if (static_cast<int>(lp.row_names.size()) == m) {
+    for (int i : rows) out.row_names.push_back(lp.row_names[static_cast<size_t>(i)]);
+  }
+  if (kept != nullptr) *kept = keep;
+  if (feasible != nullptr) *feasible = ok;
+  return out;
+}
+
 }  // namespace thrustsched::milp

@@ -69,6 +69,15 @@ struct LpData {
   bool IsValid(std::string* error) const;
 };
 
+/// The model without its fixed columns (col_lower == col_upper): their values
+/// folded into the row bounds and the objective offset, and the rows left
+/// with no column dropped. A dropped row whose constant violates its bounds
+/// by more than 1e-9 (relative) makes *feasible false (if not null).
+/// `kept` (if not null) receives, for each remaining column, its index in
+/// `lp`. Names are kept when `lp` has them.
+LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept = nullptr,
+                          bool* feasible = nullptr);
+
 }  // namespace thrustsched::milp
 
 #endif  // THRUSTSCHED_MILP_LP_DATA_H_

@@ -167,6 +167,34 @@ LpRelaxationResult Solver::SolveLpRelaxation(const LpData& problem,
   return result;
 }
 
+namespace {
+
+// Solver::DoOpenLpSession's default: every Solve from scratch.
+class ColdLpSession final : public LpSession {
+ public:
+  ColdLpSession(const Solver& solver, const LpData& lp, const SolveOptions& options)
+      : solver_(solver), lp_(lp), options_(options) {}
+  void SetColumnBounds(int column, double lower, double upper) override {
+    lp_.col_lower[column] = lower;
+    lp_.col_upper[column] = upper;
+  }
+  double column_lower(int column) const override { return lp_.col_lower[column]; }
+  double column_upper(int column) const override { return lp_.col_upper[column]; }
+  LpRelaxationResult Solve() override { return solver_.SolveLpRelaxation(lp_, options_); }
+
+ private:
+  const Solver& solver_;
+  LpData lp_;
+  SolveOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<LpSession> Solver::DoOpenLpSession(const LpData& problem,
+                                                   const SolveOptions& options) const {
+  return std::make_unique<ColdLpSession>(*this, problem, options);
+}
+
 std::unique_ptr<LpSession> Solver::OpenLpSession(const LpData& problem,
                                                  const SolveOptions& options) const {
   Validate(problem, options, "Solver::OpenLpSession");

@@ -250,8 +250,10 @@ class Solver {
   virtual SolveResult DoSolve(const LpData& problem, const SolveOptions& options) const = 0;
   virtual LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
                                                  const SolveOptions& options) const = 0;
+  /// Default: a session that solves each time from scratch through
+  /// DoSolveLpRelaxation (backends override it with a warm-started one).
   virtual std::unique_ptr<LpSession> DoOpenLpSession(const LpData& problem,
-                                                     const SolveOptions& options) const = 0;
+                                                     const SolveOptions& options) const;
 };
 
 }  // namespace thrustsched::milp

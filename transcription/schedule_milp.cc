@@ -220,6 +220,35 @@ void ScheduleMilp::Build() {
   } else if (options_.formulation != Formulation::kSparse) {
     throw std::invalid_argument("impulsive input mode supports the sparse formulation only");
   }
+  const Eigen::MatrixXi& mask = options_.free_slots;
+  if (mask.size() > 0) {
+    if (problem_.input_mode != InputMode::kOnOff || mask.rows() != problem_.thrusters.size() ||
+        mask.cols() != problem_.num_intervals()) {
+      throw std::invalid_argument(
+          "ScheduleMilp: free_slots must be thrusters x intervals (" +
+          std::to_string(problem_.thrusters.size()) + " x " +
+          std::to_string(problem_.num_intervals()) + ") in on-off mode, got " +
+          std::to_string(mask.rows()) + " x " + std::to_string(mask.cols()));
+    }
+    // An always-off slot, and the start/stop indicators between two
+    // always-off slots: any pattern the free slots allow keeps them at 0
+    // (they are only bounded above by the rows), so they leave the model
+    // with milp::RemoveFixedColumns, and with them the rows of the rules
+    // that concern no free slot.
+    for (int i = 0; i < mask.rows(); ++i) {
+      for (int j = 0; j < mask.cols(); ++j) {
+        if (mask(i, j) != 0) continue;
+        model_.SetBounds(encoding_.on[i][j], 0.0, 0.0);
+        const bool off_before = j > 0 ? mask(i, j - 1) == 0 : encoding_.prev_on[i] == 0;
+        if (!off_before) continue;
+        for (const auto* v : {&encoding_.start, &encoding_.stop}) {
+          if (static_cast<int>(v->size()) > i && static_cast<int>((*v)[i].size()) > j) {
+            model_.SetBounds((*v)[i][j], 0.0, 0.0);
+          }
+        }
+      }
+    }
+  }
   if (options_.formulation == Formulation::kSparse) {
     BuildSparse();
   } else {
@@ -452,16 +481,26 @@ void ScheduleMilp::BuildCondensed() {
   RowBuffer rows(options_.scale);
   const auto partials = InterSampleMaps(p, options_.discretisation);
 
-  // x_j = base_j + G_j u, u stacked as u[k*m + i]; G_j has nonzeros in the
-  // first j*m columns only.
+  // x_j = base_j + G_j u over the free on-columns (all of them without a
+  // free_slots mask), stacked in time order: G_j has nonzeros in the columns
+  // of the intervals before j only. A fixed slot (always off) adds nothing.
+  std::vector<milp::Variable> cols;  // the free on-columns, in time order
+  std::vector<int> first_col(static_cast<size_t>(nn) + 1, 0);  // of interval j
+  for (int j = 0; j < nn; ++j) {
+    first_col[static_cast<size_t>(j)] = static_cast<int>(cols.size());
+    for (int i = 0; i < m; ++i) {
+      if (options_.free_slots.size() == 0 || options_.free_slots(i, j) != 0) {
+        cols.push_back(encoding_.on[i][j]);
+      }
+    }
+  }
+  first_col[static_cast<size_t>(nn)] = static_cast<int>(cols.size());
   Eigen::VectorXd base = p.initial_state;
-  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(nn) * m);
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(cols.size()));
   auto add_row = [&](const Eigen::RowVectorXd& coef, int used_cols, double shift, double lo,
                      double hi, const std::string& name, milp::Variable slack, double slack_coef) {
     rows.Begin();
-    for (int col = 0; col < used_cols; ++col) {
-      rows.Coef(encoding_.on[col % m][col / m].index(), coef[col]);
-    }
+    for (int col = 0; col < used_cols; ++col) rows.Coef(cols[static_cast<size_t>(col)].index(), coef[col]);
     if (slack.is_valid()) rows.Coef(slack.index(), slack_coef);
     rows.End(std::isfinite(lo) ? lo - shift : lo, std::isfinite(hi) ? hi - shift : hi, name);
   };
@@ -481,8 +520,17 @@ void ScheduleMilp::BuildCondensed() {
     add_row(coef / w, used_cols, shift / w, -1.0, kInf, tag + "_lo", slack, 1.0);
   };
 
+  // Gamma_j's columns of the free slots of interval j.
+  auto gamma_free = [&](const Eigen::MatrixXd& gamma, int j) {
+    Eigen::MatrixXd out(gamma.rows(), first_col[static_cast<size_t>(j) + 1] - first_col[static_cast<size_t>(j)]);
+    int k = 0;
+    for (int i = 0; i < m; ++i) {
+      if (options_.free_slots.size() == 0 || options_.free_slots(i, j) != 0) out.col(k++) = gamma.col(i);
+    }
+    return out;
+  };
   for (int j = 0; j <= nn; ++j) {
-    const int used = j * m;
+    const int used = first_col[static_cast<size_t>(j)];
     if (p.window.enabled() && WindowActive(p, j, p.grid[j])) {
       const Eigen::MatrixXd c = model.EvaluateOutput(p.grid[j]).c;
       for (size_t k = 0; k < p.window.outputs.size(); ++k) {
@@ -497,13 +545,15 @@ void ScheduleMilp::BuildCondensed() {
         const Partial& q = partials[j][s];
         if (!WindowActive(p, j + 1, q.t)) continue;
         const Eigen::MatrixXd c = model.EvaluateOutput(q.t).c;
+        const Eigen::MatrixXd qg = gamma_free(q.gamma, j);
         for (size_t k = 0; k < p.window.outputs.size(); ++k) {
           const int o = p.window.outputs[k];
-          Eigen::RowVectorXd coef = Eigen::RowVectorXd::Zero(used + m);
+          const int here = static_cast<int>(qg.cols());
+          Eigen::RowVectorXd coef = Eigen::RowVectorXd::Zero(used + here);
           const Eigen::RowVectorXd cphi = c.row(o) * q.phi;
           coef.head(used) = cphi * g.leftCols(used);
-          coef.tail(m) = c.row(o) * q.gamma;
-          add_window(coef, used + m, cphi.dot(base) + c.row(o).dot(q.d), static_cast<int>(k), j,
+          coef.tail(here) = c.row(o) * qg;
+          add_window(coef, used + here, cphi.dot(base) + c.row(o).dot(q.d), static_cast<int>(k), j,
                      static_cast<int>(s) + 1);
         }
       }
@@ -511,14 +561,15 @@ void ScheduleMilp::BuildCondensed() {
     // Advance: x_{j+1} = Phi_j x_j + Gamma_j u_j + d_j.
     const Eigen::MatrixXd& phi = discrete_.phi[j];
     g.leftCols(used) = phi * g.leftCols(used);
-    g.middleCols(used, m) = discrete_.gamma[j];
+    const Eigen::MatrixXd gj = gamma_free(discrete_.gamma[j], j);
+    g.middleCols(used, gj.cols()) = gj;
     base = phi * base + discrete_.drift[j];
   }
   rows.Flush(&model_);
 
   // Terminal rows on x_N = base + G u.
   const TerminalSpec& term = p.terminal;
-  const int used = nn * m;
+  const int used = static_cast<int>(cols.size());
   if (term.kind == TerminalKind::kFixedState || term.kind == TerminalKind::kStateBox) {
     for (int c = 0; c < n; ++c) {
       const double tol = term.kind == TerminalKind::kStateBox ? term.tolerance[c] : 0.0;

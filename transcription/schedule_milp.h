@@ -49,6 +49,14 @@ struct BuildOptions {
   /// Scale state columns and rows so coefficients are near 1 (recommended;
   /// off only to demonstrate what goes wrong without it).
   bool scale = true;
+  /// On-off mode, optional: thrusters x intervals, 1 where the thruster may
+  /// fire; the other on-columns are fixed at 0 (the MILP of the problem with
+  /// those firings forbidden, used by the search heuristics on a few hundred
+  /// candidate slots). With the condensed formulation they are also left out
+  /// of the dynamics rows, which then stay as small as the free set (after
+  /// milp::RemoveFixedColumns, a MILP of a few thousand nonzeros per free
+  /// slot instead of a week's). Empty: every slot free.
+  Eigen::MatrixXi free_slots;
 };
 
 struct BuildStats {

@@ -131,7 +131,13 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
       return milp.CompleteFromPattern(x);
     };
   }
-  r.solve = solver.Solve(milp.lp(), solve_options);
+  if (p.input_mode == InputMode::kOnOff && options.search.enabled) {
+    std::vector<Eigen::VectorXd> starts;
+    if (solve_options.initial_solution) starts.push_back(*solve_options.initial_solution);
+    r.solve = SearchSchedule(milp, solver, solve_options, options.search, starts, &r.search);
+  } else {
+    r.solve = solver.Solve(milp.lp(), solve_options);
+  }
   const bool interrupted = options.solve.interrupt != nullptr && options.solve.interrupt->load();
   if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted &&
       options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff &&

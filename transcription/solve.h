@@ -27,12 +27,16 @@
 #include "transcription/checker.h"
 #include "transcription/problem.h"
 #include "transcription/schedule_milp.h"
+#include "transcription/search.h"
 
 namespace thrustsched::transcription {
 
 struct SolveScheduleOptions {
   BuildOptions build;
   milp::SolveOptions solve;
+  /// On-off mode: the problem-aware search (search.h) unless disabled; then
+  /// the whole MILP goes to the solver.
+  SearchOptions search;
   CheckOptions check;
   bool check_schedule = true;
   /// Optional MIP start (on-off mode): a burn list, e.g. the previous cycle's
@@ -71,6 +75,7 @@ struct ScheduleResult {
   ImpulsiveCheck impulsive_check;  // impulsive mode
   double check_seconds = 0.0;
   double diagnosis_seconds = 0.0;  // the infeasibility diagnosis (0 if it did not run)
+  SearchReport search;             // what the search did (on-off mode, search enabled)
   std::vector<std::string> infeasibility_reasons;  // from the rules, known before solving
   bool has_schedule() const { return solve.has_solution(); }
 };

@@ -2,6 +2,7 @@
 
 #include <fnmatch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -82,6 +83,22 @@ class Builder {
 
   std::vector<CaseSpec> Take() { return std::move(cases_); }
 
+  /// Scenario names (file stems, sorted) in the folder `sub` of the first
+  /// scenario directory that has it.
+  std::vector<std::string> ScenariosIn(const std::string& sub) const {
+    std::vector<std::string> names;
+    for (const std::string& dir : o_.scenario_dirs) {
+      const std::filesystem::path p = std::filesystem::path(dir) / sub;
+      if (!std::filesystem::is_directory(p)) continue;
+      for (const auto& e : std::filesystem::directory_iterator(p)) {
+        if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+      }
+      break;
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
  private:
   std::string Locate(const std::string& scenario) const {
     for (const std::string& dir : o_.scenario_dirs) {
@@ -152,6 +169,66 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
     c.repeats = o.timing_repeats;
     c.variant = "target: 1% gap < 120 s, 2 threads";
     b->Add(c, "2threads");
+  }
+}
+
+// The problem-aware search against the first release's path (CBC on the
+// whole MILP), case by case in the same run so that machine load cancels in
+// the ratio; the targets are those of the solver-speed work.
+void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
+  auto pair = [b](CaseSpec c, const std::string& suffix) {
+    c.search = true;
+    c.variant = "search (this release)";
+    b->Add(c, suffix + "-search");
+    c.search = false;
+    c.variant = "CBC on the whole MILP (first release)";
+    b->Add(c, suffix + "-cbc");
+  };
+  {
+    CaseSpec c = b->Make(kSectionSolverSpeed, "hcw_table42_t1_2d", CaseKind::kSolve);
+    c.patch = PresolveOn();
+    c.threads = 1;
+    c.time_limit_s = 120;
+    c.relative_gap = 1e-4;
+    c.repeats = o.quick ? 1 : o.timing_repeats;
+    c.target_1pct_s = 2.0;
+    const Published p = Table42(2);
+    c.published = p.value;
+    c.published_source = p.source;
+    pair(c, "1thread");
+  }
+  if (o.quick) return;  // the GEO weeks take minutes on the first release's path
+  {
+    CaseSpec c = b->Make(kSectionSolverSpeed, "geo_week_anzel4", CaseKind::kSolve);
+    c.threads = 2;
+    c.time_limit_s = 120;
+    c.relative_gap = 1e-4;
+    c.repeats = o.timing_repeats;
+    c.target_1pct_s = 10.0;
+    c.target_opt_s = 20.0;
+    pair(c, "2threads");
+  }
+  {
+    CaseSpec c = b->Make(kSectionSolverSpeed, "geo_week_ideal6", CaseKind::kSolve);
+    c.threads = 2;
+    c.time_limit_s = 150;
+    c.relative_gap = 0.01;
+    c.repeats = o.timing_repeats;
+    c.target_1pct_s = 30.0;
+    pair(c, "2threads");
+  }
+  // The hard-weeks suite: weeks of year runs as that run handed them
+  // (scripts/extract_year_weeks.py), each to 2 % of its own bound in 60 s.
+  for (const std::string& name : b->ScenariosIn("hard")) {
+    CaseSpec c = b->Make(kSectionSolverSpeed, "hard/" + name, CaseKind::kSolve);
+    c.threads = 2;
+    c.time_limit_s = 60;
+    c.relative_gap = 0.02;
+    c.target_gap = 0.02;
+    c.target_gap_s = 60.0;
+    c.error_metrics = false;
+    c.lp_relaxation = false;
+    pair(c, "2threads");
   }
 }
 
@@ -386,6 +463,7 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
   AddAccuracy(&b, options.quick);
   AddCost(&b, options);
   AddTargets(&b, options);
+  AddSolverSpeed(&b, options);
   AddFormulations(&b, options);
   AddAblation(&b, options);
   AddSchemeSolves(&b, options);

@@ -35,6 +35,7 @@ inline constexpr const char* kSectionAblation = "ablation";
 inline constexpr const char* kSectionScalingHorizon = "scaling_horizon";
 inline constexpr const char* kSectionScalingStep = "scaling_step";
 inline constexpr const char* kSectionOperations = "operations";
+inline constexpr const char* kSectionSolverSpeed = "solver_speed";
 
 enum class CaseKind {
   kAccuracy,    // every scheme vs the reference on each step of `accuracy_steps_s`
@@ -60,6 +61,16 @@ struct CaseSpec {
   int threads = 1;
   milp::LpAlgorithm lp_algorithm = milp::LpAlgorithm::kPrimal;
   bool use_objective_step = true;  // pass ScheduleMilp::objective_step() to the solver
+  /// The problem-aware search (transcription::SearchSchedule, what `solve`
+  /// does) instead of CBC on the whole MILP (the first release's path).
+  bool search = false;
+  /// Targets of the solver-speed section (NaN: none): seconds to a proven
+  /// 1 % gap, seconds to proven optimality, and a gap to reach within
+  /// target_gap_s seconds.
+  double target_1pct_s = std::numeric_limits<double>::quiet_NaN();
+  double target_opt_s = std::numeric_limits<double>::quiet_NaN();
+  double target_gap = std::numeric_limits<double>::quiet_NaN();
+  double target_gap_s = std::numeric_limits<double>::quiet_NaN();
   bool lp_relaxation = true;       // also solve the root LP alone (lp_bound, lp_s)
   /// Algorithm of that separate LP solve if set (else lp_algorithm): the
   /// encoding comparison wants the bound itself, with the fastest algorithm.

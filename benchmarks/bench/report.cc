@@ -22,6 +22,8 @@
 #include "app/plots.h"
 #include "benchmarks/bench/accuracy.h"
 #include "benchmarks/bench/matrix.h"
+#include "benchmarks/bench/report_format.h"
+#include "benchmarks/bench/report_solver.h"
 #include "milp/cbc_solver.h"
 
 namespace thrustsched::bench {
@@ -45,71 +47,6 @@ int ExpectedOrder(const std::string& scheme) {
   if (scheme == "hermite_simpson" || scheme == "rk4") return 4;
   return 0;
 }
-
-std::string G(double v, int sig = 4) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*g", sig, v);
-  return buf;
-}
-
-std::string Sec(double v) {
-  if (std::isnan(v)) return "-";
-  if (std::isinf(v)) return "not reached";
-  char buf[64];
-  if (v < 0.01) std::snprintf(buf, sizeof(buf), "%.4f", v);
-  else if (v < 1) std::snprintf(buf, sizeof(buf), "%.3g", v);
-  else if (v < 10) std::snprintf(buf, sizeof(buf), "%.2f", v);
-  else std::snprintf(buf, sizeof(buf), "%.1f", v);
-  return buf;
-}
-
-std::string Pct(double v) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.2f %%", 100.0 * v);
-  return buf;
-}
-
-std::string Sci(double v) {
-  if (std::isnan(v)) return "-";
-  if (v == 0.0) return "0";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.2e", v);
-  return buf;
-}
-
-class MdTable {
- public:
-  explicit MdTable(std::vector<std::string> header) : header_(std::move(header)) {}
-  void Add(std::vector<std::string> row) {
-    row.resize(header_.size());
-    rows_.push_back(std::move(row));
-  }
-  bool empty() const { return rows_.empty(); }
-  std::string Str() const {
-    std::ostringstream os;
-    auto line = [&os](const std::vector<std::string>& cells) {
-      os << "|";
-      for (const std::string& c : cells) {
-        std::string e;  // a '|' inside a cell would end it
-        for (char ch : c) e += ch == '|' ? std::string("\\|") : std::string(1, ch);
-        os << " " << (e.empty() ? "-" : e) << " |";
-      }
-      os << "\n";
-    };
-    line(header_);
-    os << "|";
-    for (size_t i = 0; i < header_.size(); ++i) os << "---|";
-    os << "\n";
-    for (const auto& r : rows_) line(r);
-    return os.str();
-  }
-
- private:
-  std::vector<std::string> header_;
-  std::vector<std::vector<std::string>> rows_;
-};
 
 // Rows grouped by case id (repeats together), in first-appearance order.
 struct Group {
@@ -160,16 +97,6 @@ class Index {
   std::map<std::string, size_t> pos_;
 };
 
-// Median treating NaN as "not reached" (+inf) when `missing_is_inf`.
-double MedianOf(std::vector<double> v, bool missing_is_inf) {
-  if (missing_is_inf) {
-    for (double& x : v) {
-      if (std::isnan(x)) x = kInf;
-    }
-  }
-  return Median(v);
-}
-
 std::string MedSpread(const Group& g, const std::string& col, bool missing_is_inf = false) {
   std::vector<double> v = g.Values(col);
   const double med = MedianOf(v, missing_is_inf);
@@ -184,13 +111,6 @@ std::string MedSpread(const Group& g, const std::string& col, bool missing_is_in
     ++n;
   }
   return Sec(med) + " (" + Sec(lo) + "-" + Sec(hi) + ", n=" + std::to_string(n) + ")";
-}
-
-std::string Verdict(double value, double limit) {
-  if (std::isnan(value)) return "not measured";
-  if (std::isinf(value)) return "**missed**: not reached within the time limit";
-  if (value < limit) return "met (" + G(100.0 * value / limit, 3) + " % of the limit)";
-  return "**missed** by " + Sec(value - limit) + " s (" + G(value / limit, 3) + "x the limit)";
 }
 
 std::string StatusCell(const Group& g) {
@@ -1419,6 +1339,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteScaling(md, idx, &plot);
   WriteOperations(md, idx);
   WriteYear(md, meta);
+  WriteSolverSpeed(md, rows);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);
   WriteColumns(md);

@@ -28,6 +28,7 @@
 #include "milp/model_io.h"
 #include "transcription/checker.h"
 #include "transcription/schedule_milp.h"
+#include "transcription/search.h"
 
 namespace thrustsched::bench {
 namespace {
@@ -94,6 +95,10 @@ Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
   r.Set("repeat", repeat);
   r.Set("variant", spec.variant);
   r.Set("scenario", spec.scenario);
+  r.Set("target_1pct_s", spec.target_1pct_s);  // NaN (not a target): empty cells
+  r.Set("target_opt_s", spec.target_opt_s);
+  r.Set("target_gap", spec.target_gap);
+  r.Set("target_gap_s", spec.target_gap_s);
   r.Set("model", std::string(app::ToString(s.model_type)));
   r.Set("scheme", std::string(dynamics::ToString(s.build.discretisation.scheme)));
   r.Set("formulation", std::string(transcription::ToString(s.build.formulation)));
@@ -356,7 +361,18 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   so.progress = [&trace](const milp::SolveProgress& pr) {
     trace.push_back({pr.wall_seconds, pr.objective, pr.best_bound});
   };
-  const milp::SolveResult sr = solver->Solve(milp->lp(), so);
+  milp::SolveResult sr;
+  r.Set("solver_path", spec.search ? "search" : "cbc");
+  if (spec.search) {
+    transcription::SearchReport report;
+    sr = transcription::SearchSchedule(*milp, *solver, so, transcription::SearchOptions{}, {},
+                                       &report);
+    std::string steps;
+    for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;
+    r.Set("search_steps", steps);
+  } else {
+    sr = solver->Solve(milp->lp(), so);
+  }
   for (const milp::Incumbent& inc : sr.incumbents) {
     trace.push_back({inc.wall_seconds, inc.objective, inc.best_bound});
   }

@@ -23,6 +23,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "milp/internal/pipe_io.h"
+
 namespace thrustsched::milp::internal {
 namespace {
 
@@ -60,16 +62,7 @@ class FrameWriter {
   }
 
  private:
-  void WriteAll(const void* data, size_t size) {
-    const char* p = static_cast<const char*>(data);
-    while (size > 0) {
-      const ssize_t n = write(fd_, p, size);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) _exit(3);  // the parent is gone
-      p += n;
-      size -= static_cast<size_t>(n);
-    }
-  }
+  void WriteAll(const void* data, size_t size) { WriteAllOrExit(fd_, data, size); }
   int fd_;
 };
 

@@ -2,6 +2,8 @@
 #include "milp/internal/clp_lp.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -23,6 +25,7 @@ static_assert(std::is_same<CoinBigIndex, int>::value,
               "CoinBigIndex must match Eigen's StorageIndex (int) of LpData::a_matrix");
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+const std::atomic<bool> kStopNow{true};  // an interrupt flag that is always set
 
 // Drops every message: nothing is printed at log_level 0.
 class SilentHandler : public CoinMessageHandler {
@@ -32,20 +35,45 @@ class SilentHandler : public CoinMessageHandler {
   CoinMessageHandler* clone() const override { return new SilentHandler(*this); }
 };
 
-// Stops CLP at the deadline or on interrupt (checked every 16 iterations).
+// Stops CLP at the deadline or on interrupt, and reports progress (checked
+// every 16 iterations, and every iteration of an interior point, whose
+// iterations are few and long).
 class LpStopHandler : public ClpEventHandler {
  public:
-  explicit LpStopHandler(SolveClock* clock) : clock_(clock) {}
+  LpStopHandler(SolveClock* clock, const SolveOptions* options)
+      : clock_(clock), options_(options) {}
   int event(Event which) override {
     if (which != endOfIteration) return -1;
-    if ((++count_ & 15) != 0) return -1;
+    ++count_;
+    const bool interior = options_ != nullptr &&
+                          options_->lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
+    if (!interior && (count_ & 15) != 0) return -1;
+    Progress();
     return clock_->ShouldStop() ? 0 : -1;
   }
   ClpEventHandler* clone() const override { return new LpStopHandler(*this); }
 
  private:
+  void Progress() {
+    if (options_ == nullptr || !options_->progress) return;
+    const double wall = clock_->Elapsed();
+    if (wall - last_ < options_->progress_interval_s) return;
+    last_ = wall;
+    SolveProgress p;
+    p.wall_seconds = wall;
+    p.phase = SolvePhase::kRootLp;
+    p.in_root_lp = true;
+    p.lp_iterations = count_;
+    if (model_ != nullptr && options_->lp_algorithm != LpAlgorithm::kBarrierNoCrossover) {
+      p.lp_objective = model_->objectiveValue();
+      p.lp_primal_infeasibility = model_->sumPrimalInfeasibilities();
+    }
+    options_->progress(p);  // callers' progress does not throw into CLP (SolveLpCore)
+  }
   SolveClock* clock_;
+  const SolveOptions* options_;
   unsigned count_ = 0;
+  double last_ = 0.0;
 };
 
 void RunLp(ClpSimplex* model, LpAlgorithm algorithm) {
@@ -238,7 +266,21 @@ LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOpt
                       SolveClock* clock) {
   LpOutcome out;
   const std::unique_ptr<CoinMessageHandler> silent = MakeSilentHandler();
-  LpStopHandler events(clock);
+  // A throwing progress callback stops the LP; the exception is rethrown here.
+  std::exception_ptr progress_error;
+  SolveOptions guarded = options;
+  if (options.progress) {
+    guarded.progress = [&](const SolveProgress& p) {
+      if (progress_error) return;
+      try {
+        options.progress(p);
+      } catch (...) {
+        progress_error = std::current_exception();
+        clock->set_interrupt(&kStopNow);
+      }
+    };
+  }
+  LpStopHandler events(clock, &guarded);
   ClpSimplex model;
   Silence(&model, silent.get(), options.log_level);
   LoadClp(&model, arrays);
@@ -257,10 +299,12 @@ LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOpt
   if (status != 0 && status != 3 && status != 5 &&
       options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover) {
     // The interior point does not classify infeasible or unbounded LPs well:
-    // the dual simplex says what they are.
-    SolveOptions dual = options;
-    dual.lp_algorithm = LpAlgorithm::kDual;
-    return SolveLpCore(lp, arrays, dual, clock);
+    // the simplex says what they are (primal: the dual simplex has called
+    // feasible schedule LPs infeasible).
+    SolveOptions simplex = options;
+    simplex.lp_algorithm = LpAlgorithm::kPrimal;
+    if (progress_error) std::rethrow_exception(progress_error);
+    return SolveLpCore(lp, arrays, simplex, clock);
   }
   if (status == 0) {
     out.status = SolveStatus::kOptimal;
@@ -279,6 +323,7 @@ LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOpt
     out.detail = "clp status " + std::to_string(status) + " secondary " +
                  std::to_string(model.secondaryStatus());
   }
+  if (progress_error) std::rethrow_exception(progress_error);
   return out;
 }
 
@@ -413,7 +458,7 @@ class ClpSession final : public LpSession {
         options_(options),
         clock_(options.time_limit_s, options.interrupt),
         silent_(MakeSilentHandler()),
-        stop_(&clock_) {
+        stop_(&clock_, nullptr) {
     std::fill(lp_.col_type.begin(), lp_.col_type.end(), VarType::kContinuous);
     sign_ = ObjectiveSign(lp_);
     Silence(&model_, silent_.get(), options.log_level);

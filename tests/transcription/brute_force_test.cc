@@ -17,6 +17,7 @@
 // MILP must prove infeasibility when no pattern qualifies), for both
 // formulations and both encodings.
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <string>
@@ -27,6 +28,7 @@
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
 #include "transcription/checker.h"
+#include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::transcription {
@@ -343,6 +345,31 @@ std::vector<Case> Cases() {
     }
   }
   return v;
+}
+
+// CLP 1.17's interior point aborts the process on this relaxation ("primal
+// off to infinity"): in its child process the abort costs only the attempt,
+// the primal simplex gives the relaxation, and the caller lives on.
+TEST(BruteForceReference, InteriorPointAbortIsContained) {
+  Case c{"condensed_tight_intersample_terminal"};
+  c.WithInterSampleDrift(2);
+  c.terminal_box = true;
+  c.formulation = Formulation::kCondensed;
+  BuildOptions b;
+  b.formulation = c.formulation;
+  b.encoding = c.encoding;
+  const ScheduleMilp milp(MakeProblem(c), b);
+  const auto solver = milp::MakeCbcSolver();
+  milp::SolveOptions o;
+  o.lp_algorithm = milp::LpAlgorithm::kPrimal;
+  const milp::LpRelaxationResult simplex = solver->SolveLpRelaxation(milp.lp(), o);
+  ASSERT_EQ(simplex.status, milp::SolveStatus::kOptimal);
+  o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
+  ASSERT_TRUE(o.cbc.separate_process);
+  const milp::LpRelaxationResult interior = solver->SolveLpRelaxation(milp.lp(), o);
+  ASSERT_EQ(interior.status, milp::SolveStatus::kOptimal) << interior.detail;
+  EXPECT_NEAR(interior.objective, simplex.objective, 1e-6 * std::max(1.0, std::abs(simplex.objective)));
+  std::cerr << "interior point on this case: " << interior.detail << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(AllCases, BruteForceTest, ::testing::ValuesIn(Cases()),

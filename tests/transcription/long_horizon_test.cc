@@ -416,6 +416,9 @@ TEST(LongHorizonRun, ImprovementPassAfterAPoorIncumbent) {
   o.solve.solve.relative_gap = 0.0;
   o.solve.solve.max_nodes = 0;       // the root's incumbent only ...
   o.improve_above_gap = 1e-9;        // ... and any gap triggers the pass
+  // The passes act on CBC's gap; the problem-aware search proves this cycle
+  // optimal at once, so it is off here.
+  o.solve.search.enabled = false;
   o.improve_max_nodes = 200;
   const LongHorizonSimulation run(base, o, Simulator(), Solver());
   LongHorizonState state = run.InitialState();
@@ -544,6 +547,7 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
   o.solve.solve.relative_gap = 0.0;
   o.solve.solve.max_nodes = 0;  // the root's incumbent only (gap 4.4 %, see above)
   o.improve_above_gap = 1e-9;
+  o.solve.search.enabled = false;  // as above: CBC's gap is what the passes act on
   o.improve_max_nodes = 200;
   const CycleRecord c2 = FirstCycle(base, o, Solver());
   ASSERT_EQ(c2.attempts.size(), 3u);
@@ -720,8 +724,11 @@ class FailingSolver final : public milp::Solver {
 };
 
 TEST(LongHorizonRun, SolverFailureGivesZeroThrustAndTheRunGoesOn) {
-  const LongHorizonSimulation run(Base(), DailyCycles(2), Simulator(),
-                                  std::make_shared<FailingSolver>());
+  // The solver alone (no search, which would keep the last level's zero-thrust
+  // start itself; see SolverFailureWithTheSearchKeepsTheZeroStart).
+  LongHorizonOptions o = DailyCycles(2);
+  o.solve.search.enabled = false;
+  const LongHorizonSimulation run(Base(), o, Simulator(), std::make_shared<FailingSolver>());
   LongHorizonState s = run.InitialState();
   const CycleRecord z = run.RunCycle(&s);
   EXPECT_EQ(z.fallback, Fallback::kZeroThrust);
@@ -743,6 +750,29 @@ TEST(LongHorizonRun, SolverFailureGivesZeroThrustAndTheRunGoesOn) {
   const CycleRecord z2 = run.RunCycle(&s);
   EXPECT_EQ(z2.index, 1);
   EXPECT_EQ(z2.eci_start, z.eci_end);
+}
+
+// With the search (the default), a failing solver still errs on the first two
+// levels (LP relaxation, then the whole MILP); the last level's zero-thrust
+// start is verified by the search and kept as that level's schedule.
+TEST(LongHorizonRun, SolverFailureWithTheSearchKeepsTheZeroStart) {
+  const LongHorizonSimulation run(Base(), DailyCycles(2), Simulator(),
+                                  std::make_shared<FailingSolver>());
+  LongHorizonState s = run.InitialState();
+  const CycleRecord z = run.RunCycle(&s);
+  ASSERT_EQ(z.attempts.size(), 3u);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(z.attempts[k].status, milp::SolveStatus::kError);
+    EXPECT_NE(z.attempts[k].detail.find("failing: simulated solver failure"), std::string::npos)
+        << z.attempts[k].detail;
+  }
+  EXPECT_EQ(z.attempts[2].status, milp::SolveStatus::kFeasible);
+  EXPECT_NE(z.attempts[2].detail.find("from the given start"), std::string::npos)
+      << z.attempts[2].detail;
+  EXPECT_EQ(z.fallback, Fallback::kSoftWindowFreeTerminal);
+  EXPECT_TRUE(z.burns.empty());
+  EXPECT_EQ(z.consumption_l1_m_s, 0.0);
+  EXPECT_GT(z.time_outside_window_s, 0.0);
 }
 
 // Resume: 2 cycles, then a new simulation object continues from the saved

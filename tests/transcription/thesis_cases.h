@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 
+#include "dynamics/discretisation.h"
 #include "dynamics/models.h"
 #include "transcription/problem.h"
 

@@ -1,0 +1,47 @@
+// Number formatting and small tables shared by the sections of report.md.
+//
+//   MdTable t({"case", "time (s)"});
+//   t.Add({"geo_week_anzel4", Sec(7.46)});
+//   md << t.Str();                                  // a Markdown table
+//   md << Verdict(7.46, 10.0);                      // "met (74.6 % of the limit)"
+#ifndef THRUSTSCHED_BENCHMARKS_BENCH_REPORT_FORMAT_H_
+#define THRUSTSCHED_BENCHMARKS_BENCH_REPORT_FORMAT_H_
+
+#include <string>
+#include <vector>
+
+namespace thrustsched::bench {
+
+/// `sig` significant digits; "-" when not finite.
+std::string G(double v, int sig = 4);
+/// Seconds with a precision that suits their size; "-" for NaN, "not reached" for inf.
+std::string Sec(double v);
+/// A fraction as a percentage with two decimals ("-" when not finite).
+std::string Pct(double v);
+/// Scientific notation with three digits ("-" for NaN, "0" for 0).
+std::string Sci(double v);
+/// The median (NaN entries dropped); NaN entries count as +inf ("not
+/// reached") when `missing_is_inf`.
+double MedianOf(std::vector<double> v, bool missing_is_inf);
+/// "met (x % of the limit)" or "**missed** by ..." for a time against its limit.
+std::string Verdict(double value, double limit);
+
+/// A Markdown table; '|' inside a cell is escaped, empty cells print "-".
+class MdTable {
+ public:
+  explicit MdTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  void Add(std::vector<std::string> row) {
+    row.resize(header_.size());
+    rows_.push_back(std::move(row));
+  }
+  bool empty() const { return rows_.empty(); }
+  std::string Str() const;
+
+ private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+}  // namespace thrustsched::bench
+
+#endif  // THRUSTSCHED_BENCHMARKS_BENCH_REPORT_FORMAT_H_

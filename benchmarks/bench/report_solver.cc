@@ -1,0 +1,115 @@
+#include "benchmarks/bench/report_solver.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "benchmarks/bench/matrix.h"
+#include "benchmarks/bench/report_format.h"
+
+namespace thrustsched::bench {
+namespace {
+
+// The two arms of one case: rows of "<id>-search" and "<id>-cbc".
+struct Pair {
+  std::string id;
+  std::vector<const Row*> search, cbc;
+};
+
+std::vector<Pair> Pairs(const std::vector<Row>& rows) {
+  std::vector<Pair> out;
+  std::map<std::string, size_t> at;
+  for (const Row& r : rows) {
+    if (r.Get("section") != kSectionSolverSpeed) continue;
+    const std::string id = r.Get("case_id");
+    const bool search = r.Get("solver_path") == "search";
+    const std::string suffix = search ? "-search" : "-cbc";
+    const bool tagged = id.size() > suffix.size() &&
+                        id.compare(id.size() - suffix.size(), suffix.size(), suffix) == 0;
+    const std::string base = tagged ? id.substr(0, id.size() - suffix.size()) : id;
+    auto [it, fresh] = at.emplace(base, out.size());
+    if (fresh) out.push_back({base, {}, {}});
+    (search ? out[it->second].search : out[it->second].cbc).push_back(&r);
+  }
+  return out;
+}
+
+double MedianCol(const std::vector<const Row*>& rows, const std::string& col, bool missing_is_inf) {
+  std::vector<double> v;
+  for (const Row* r : rows) v.push_back(r->Num(col));
+  return MedianOf(v, missing_is_inf);
+}
+
+// A target's value in one run: time to a 1 % proof, to optimality, or (for
+// a gap target) the run's time if it ended within the gap, else +inf.
+double TimeToGap(const Row& r, double gap) {
+  const double g = r.Num("gap");
+  return std::isfinite(g) && g <= gap + 1e-12 ? r.Num("solve_s") : INFINITY;
+}
+
+}  // namespace
+
+void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
+  md << "## Solver speed: the search against CBC on the whole MILP\n\n";
+  const std::vector<Pair> pairs = Pairs(rows);
+  if (pairs.empty()) {
+    md << "Not run.\n\n";
+    return;
+  }
+  md << "Each case is solved by both paths in the same run, one after the other, so machine "
+        "load acts on both: `search` is what `thrustsched solve` does (interior-point LP bound "
+        "from safe duals, MILPs restricted to the slots the relaxation uses, reduced-cost "
+        "fixing, CBC on the whole MILP only when needed; `transcription/search.h`), `cbc` is "
+        "the first release's path (`--no-search`). Medians over the repeats; \"not reached\" "
+        "counts as infinite; the ratio is first release / this release (> 1: faster now).\n\n";
+  MdTable t({"case", "measure", "target (s)", "this release", "first release", "ratio",
+             "verdict (this release)", "objective (this / first)", "final gap (this / first)"});
+  for (const Pair& p : pairs) {
+    if (p.search.empty()) continue;
+    const Row& spec = *p.search.front();
+    struct Measure {
+      std::string name;
+      std::string column;  // empty: gap target
+      std::string target_column;
+    };
+    std::vector<Measure> measures;
+    if (spec.Has("target_1pct_s")) {
+      measures.push_back({"time to a proven 1 % gap", "time_to_1pct_s", "target_1pct_s"});
+    }
+    if (spec.Has("target_opt_s")) {
+      measures.push_back({"time to proven optimality", "time_to_opt_s", "target_opt_s"});
+    }
+    if (spec.Has("target_gap")) {
+      measures.push_back({"within " + Pct(spec.Num("target_gap")) + " of its bound", "", "target_gap_s"});
+    }
+    for (const Measure& m : measures) {
+      auto value = [&](const std::vector<const Row*>& arm) {
+        if (!m.column.empty()) return MedianCol(arm, m.column, true);
+        std::vector<double> v;
+        for (const Row* r : arm) v.push_back(TimeToGap(*r, spec.Num("target_gap")));
+        return MedianOf(v, true);
+      };
+      const double now = value(p.search), before = p.cbc.empty() ? NAN : value(p.cbc);
+      const double limit = spec.Num(m.target_column);
+      std::string ratio = "-";
+      if (now > 0.0 && std::isfinite(now) && !std::isnan(before)) {
+        ratio = std::isinf(before) ? "> " + G(spec.Num("time_limit_s") / now, 3) + "x"
+                                   : G(before / now, 3) + "x";
+      }
+      t.Add({p.id, m.name, G(limit, 3), Sec(now), Sec(before), ratio, Verdict(now, limit),
+             G(MedianCol(p.search, "objective", false), 8) + " / " +
+                 G(MedianCol(p.cbc, "objective", false), 8),
+             Pct(MedianCol(p.search, "gap", false)) + " / " + Pct(MedianCol(p.cbc, "gap", false))});
+    }
+  }
+  md << t.Str() << "\n";
+  md << "What the search did (first repeat of each case):\n\n";
+  for (const Pair& p : pairs) {
+    if (p.search.empty()) continue;
+    md << "- `" << p.id << "`: " << p.search.front()->Get("search_steps") << "\n";
+  }
+  md << "\n";
+}
+
+}  // namespace thrustsched::bench

@@ -1,0 +1,471 @@
+#include "transcription/search.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "milp/lp_bound.h"
+
+namespace thrustsched::transcription {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string Fmt(double v, int digits = 6) {
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
+  return buf;
+}
+
+// The schedule MILP restricted to a set of free slots, condensed over them.
+struct Restriction {
+  ScheduleMilp milp;
+  milp::LpData small;      // without its fixed columns
+  std::vector<int> kept;   // column of `milp` of each column of `small`
+  bool feasible = true;    // false: the fixed slots alone break a row
+};
+
+class Search {
+ public:
+  Search(const ScheduleMilp& milp, const milp::Solver& solver, const milp::SolveOptions& options,
+         const SearchOptions& search, SearchReport* report)
+      : milp_(milp),
+        lp_(milp.lp()),
+        solver_(solver),
+        options_(options),
+        search_(search),
+        report_(report),
+        start_(Clock::now()) {
+    step_ = options.objective_step > 0.0 ? options.objective_step : milp.objective_step();
+  }
+
+  milp::SolveResult Run(const std::vector<Eigen::VectorXd>& starts) {
+    for (const Eigen::VectorXd& x : starts) Offer(x, "the given start");
+    if (!SolveRelaxation()) {
+      // No bound from the LP (an error or a limit, not infeasibility): the
+      // solver on the whole MILP still has its own chance.
+      if (status_ != milp::SolveStatus::kInfeasible && !Stopped()) WholeMilp();
+      return Result();
+    }
+    if (!Done()) Heuristic();
+    for (int round = 0; round < 3 && !Done() && !Stopped() && has_incumbent(); ++round) {
+      if (!ExactRestricted()) break;
+    }
+    if (!Done() && !Stopped()) WholeMilp();
+    return Result();
+  }
+
+ private:
+  // ---------------------------------------------------------------- clock
+
+  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  double Remaining() const { return options_.time_limit_s - Elapsed(); }
+  bool Interrupted() const {
+    return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
+  }
+  bool Stopped() const { return Interrupted() || Remaining() <= 0.0; }
+  bool has_incumbent() const { return x_.size() > 0; }
+
+  // Options of a sub-solve: what is left of the time, the caller's interrupt,
+  // progress reported on our clock with our incumbent and bound.
+  milp::SolveOptions SubOptions(bool global_bound) const {
+    milp::SolveOptions o = options_;
+    o.time_limit_s = std::max(0.0, Remaining());
+    o.initial_solution.reset();
+    o.complete_solution = nullptr;
+    o.objective_step = step_;
+    const double offset = Elapsed();
+    o.progress = nullptr;
+    if (options_.progress) {
+      o.progress = [this, offset, global_bound](const milp::SolveProgress& sub) {
+        milp::SolveProgress p = sub;
+        p.wall_seconds += offset;
+        if (has_incumbent() && !(p.objective < objective_)) p.objective = objective_;
+        if (!global_bound || !(p.best_bound > bound_)) p.best_bound = bound_;
+        p.gap = std::isfinite(p.objective) ? milp::RelativeGap(p.objective, p.best_bound) : kNaN;
+        options_.progress(p);
+      };
+    }
+    return o;
+  }
+
+  void Report(milp::SolvePhase phase, bool new_incumbent) const {
+    if (!options_.progress) return;
+    milp::SolveProgress p;
+    p.wall_seconds = Elapsed();
+    p.phase = phase;
+    p.in_root_lp = phase == milp::SolvePhase::kRootLp;
+    p.objective = has_incumbent() ? objective_ : kNaN;
+    p.best_bound = bound_;
+    p.gap = has_incumbent() ? milp::RelativeGap(objective_, bound_) : kNaN;
+    p.new_incumbent = new_incumbent;
+    p.nodes = nodes_;
+    options_.progress(p);
+  }
+
+  void Step(const std::string& line) {
+    detail_ += (detail_.empty() ? "" : "; ") + line;
+    if (report_ != nullptr) report_->steps.push_back(line);
+  }
+
+  // ------------------------------------------------------- bound and gap
+
+  void RaiseBound(double bound) {
+    const double rounded = milp::RoundBoundToStep(lp_, bound, step_);
+    if (rounded > bound_) bound_ = rounded;
+    if (has_incumbent() && bound_ > objective_) bound_ = objective_;
+  }
+
+  bool Done() const {
+    if (!has_incumbent()) return false;
+    const double diff = std::abs(objective_ - bound_);
+    return diff <= options_.absolute_gap ||
+           milp::RelativeGap(objective_, bound_) <= options_.relative_gap;
+  }
+
+  // A point of the full MILP: verified, then the incumbent if better.
+  bool Offer(Eigen::VectorXd x, const std::string& source) {
+    if (x.size() != lp_.num_cols()) return false;
+    if (!milp_.CompleteFromPattern(&x) || lp_.MaxViolation(x) > 1e-6) return false;
+    const double obj = lp_.Objective(x);
+    if (has_incumbent() && !(obj < objective_ - 1e-12 * std::max(1.0, std::abs(obj)))) return false;
+    x_ = std::move(x);
+    objective_ = obj;
+    incumbents_.push_back({Elapsed(), objective_, bound_});
+    if (bound_ > objective_) bound_ = objective_;
+    Step("incumbent " + Fmt(objective_) + " from " + source);
+    Report(milp::SolvePhase::kPresolve, true);
+    return true;
+  }
+
+  // ---------------------------------------------------------- 1. the LP
+
+  bool SolveRelaxation() {
+    milp::SolveOptions o = SubOptions(true);
+    o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
+    const double t0 = Elapsed();
+    Report(milp::SolvePhase::kRootLp, false);
+    relaxation_ = solver_.SolveLpRelaxation(lp_, o);
+    if (report_ != nullptr) report_->lp_seconds = Elapsed() - t0;
+    if (relaxation_.status == milp::SolveStatus::kInfeasible) {
+      status_ = milp::SolveStatus::kInfeasible;
+      Step("the LP relaxation is infeasible (" + relaxation_.detail + ")");
+      return false;
+    }
+    if (relaxation_.status != milp::SolveStatus::kOptimal) {
+      Step("LP relaxation: " + std::string(milp::ToString(relaxation_.status)) + " (" +
+           relaxation_.detail + ")");
+      return false;
+    }
+    dual_ = milp::SafeDualBound(lp_, relaxation_.row_duals);
+    if (report_ != nullptr) report_->lp_bound = dual_.bound;
+    RaiseBound(dual_.bound);
+    Step("LP bound " + Fmt(dual_.bound, 8) + (bound_ > dual_.bound ? " (" + Fmt(bound_, 8) +
+                                                  " on the objective step)"
+                                            : std::string()) +
+         " by interior point in " + Fmt(Elapsed() - t0, 3) + " s");
+    Report(milp::SolvePhase::kPresolve, false);
+    return true;
+  }
+
+  // ------------------------------------------------- 2. restricted MILPs
+
+  // Slots the relaxation uses (with forced-on slots and the incumbent's),
+  // and the same thruster's within k intervals of them; `all_thrusters`
+  // frees every thruster there (a wider net when that is infeasible).
+  Eigen::MatrixXi CandidateSlots(double threshold, int k, bool all_thrusters) const {
+    const OperationalEncoding& enc = milp_.encoding();
+    const int m = enc.num_thrusters, n = enc.num_intervals;
+    Eigen::MatrixXi used = Eigen::MatrixXi::Zero(m, n);
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < n; ++j) {
+        const int c = enc.on[i][j].index();
+        if (relaxation_.x[c] > threshold || lp_.col_lower[c] > 0.5 ||
+            (has_incumbent() && x_[c] > 0.5)) {
+          used(i, j) = 1;
+        }
+      }
+    }
+    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(m, n);
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if (lp_.col_upper[enc.on[i][j].index()] < 0.5) continue;
+        bool near = false;
+        for (int d = -k; d <= k && !near; ++d) {
+          const int jj = j + d;
+          near = jj >= 0 && jj < n && (all_thrusters ? used.col(jj).any() : used(i, jj) != 0);
+        }
+        if (near) mask(i, j) = 1;
+      }
+    }
+    return mask;
+  }
+
+  Restriction Restrict(const Eigen::MatrixXi& mask) const {
+    BuildOptions bo = milp_.options();
+    bo.formulation = Formulation::kCondensed;
+    bo.free_slots = mask;
+    Restriction r{ScheduleMilp(milp_.problem(), milp_.discrete(), bo), {}, {}, true};
+    r.small = milp::RemoveFixedColumns(r.milp.lp(), &r.kept, &r.feasible);
+    r.feasible = r.feasible && r.milp.infeasibility_reasons().empty();
+    return r;
+  }
+
+  // The full MILP's point of a restricted solution (its on-off pattern).
+  Eigen::VectorXd Lift(const Restriction& r, const Eigen::VectorXd& small_x) const {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(r.milp.lp().num_cols());
+    for (size_t k = 0; k < r.kept.size(); ++k) x[r.kept[k]] = small_x[static_cast<Eigen::Index>(k)];
+    const OperationalEncoding& enc = r.milp.encoding();
+    Eigen::MatrixXi pattern = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      for (int j = 0; j < enc.num_intervals; ++j) pattern(i, j) = x[enc.on[i][j].index()] > 0.5;
+    }
+    return milp_.StartFromPattern(pattern);
+  }
+
+  static int Count(const Eigen::MatrixXi& mask) { return mask.sum(); }
+
+  // Step 2: the MILP restricted to the candidate slots, widened while it is
+  // infeasible.
+  void Heuristic() {
+    double threshold = search_.candidate_threshold;
+    int k = search_.neighbourhood;
+    for (int widening = 0; widening <= search_.max_widenings && !Stopped(); ++widening) {
+      const Eigen::MatrixXi mask = CandidateSlots(threshold, k, widening > 0);
+      const Restriction r = Restrict(mask);
+      if (report_ != nullptr) report_->candidate_slots = Count(mask);
+      const double t0 = Elapsed();
+      milp::SolveOptions o = SubOptions(false);
+      o.max_nodes = NodeLimit();
+      milp::SolveResult s;
+      if (r.feasible) s = solver_.Solve(r.small, o);
+      nodes_ += s.nodes;
+      const std::string what = "MILP restricted to " + std::to_string(Count(mask)) +
+                               " candidate slots (" + std::to_string(r.small.num_cols()) +
+                               " columns, " + std::to_string(r.small.num_rows()) + " rows)";
+      if (s.has_solution()) {
+        Step(what + ": " + std::string(milp::ToString(s.status)) + " in " +
+             Fmt(Elapsed() - t0, 3) + " s, " + std::to_string(s.nodes) + " nodes");
+        Offer(Lift(r, s.x), "the restricted MILP");
+        return;
+      }
+      Step(what + ": " + (r.feasible ? std::string(milp::ToString(s.status)) : "infeasible") +
+           ", widened");
+      k = std::max(2 * k, k + 1);
+      threshold /= 10.0;
+    }
+  }
+
+  long long NodeLimit() const {
+    return options_.max_nodes >= 0 ? std::min(options_.max_nodes, search_.restricted_max_nodes)
+                                   : search_.restricted_max_nodes;
+  }
+
+  // ------------------------------------- 4. reduced-cost fixing, exactly
+
+  // Slots that may be on in a schedule better than the incumbent (by a step).
+  Eigen::MatrixXi FreeByReducedCost() const {
+    int fixed = 0;
+    const milp::LpData reduced = milp::FixByReducedCost(lp_, dual_, objective_, step_, &fixed);
+    const OperationalEncoding& enc = milp_.encoding();
+    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      for (int j = 0; j < enc.num_intervals; ++j) {
+        const int c = enc.on[i][j].index();
+        mask(i, j) = reduced.col_upper[c] > 0.5 ? 1 : 0;
+      }
+    }
+    return mask;
+  }
+
+  // Step 4. Returns false when it cannot help (too many free slots).
+  bool ExactRestricted() {
+    if (!dual_.finite()) return false;
+    const Eigen::MatrixXi mask = FreeByReducedCost();
+    if (report_ != nullptr) report_->exact_slots = Count(mask);
+    if (Count(mask) > search_.max_exact_slots) {
+      Step(std::to_string(Count(mask)) + " slots can still improve on the incumbent (more than " +
+           std::to_string(search_.max_exact_slots) + "): the whole MILP instead");
+      return false;
+    }
+    Restriction r = Restrict(mask);
+    const double before = objective_;
+    // Only schedules better than the incumbent by a step count.
+    const double cutoff = objective_ - std::max(step_, 0.0) +
+                          1e-7 * std::max(1.0, std::abs(objective_));
+    AddObjectiveCutoff(&r.small, cutoff);
+    const double t0 = Elapsed();
+    milp::SolveResult s;
+    if (r.feasible) s = solver_.Solve(r.small, SubOptions(false));
+    nodes_ += s.nodes;
+    const std::string what = "exact MILP over the " + std::to_string(Count(mask)) +
+                             " slots reduced-cost fixing leaves free";
+    if (!r.feasible || s.status == milp::SolveStatus::kInfeasible) {
+      // No schedule better than the incumbent: it is optimal.
+      bound_ = objective_;
+      Step(what + ": no better schedule (" + Fmt(Elapsed() - t0, 3) + " s): the incumbent is "
+           "optimal");
+      return true;
+    }
+    if (s.has_solution()) Offer(Lift(r, s.x), "the exact restricted MILP");
+    // Every better schedule lies in the restriction: the bound is the
+    // smaller of the old incumbent and the restricted solve's bound.
+    const double restricted_bound = s.has_solution() || std::isfinite(s.best_bound)
+                                        ? s.best_bound
+                                        : -kInf;
+    if (s.status == milp::SolveStatus::kOptimal) {
+      bound_ = std::max(bound_, std::min(before, objective_));
+    } else if (std::isfinite(restricted_bound)) {
+      bound_ = std::max(bound_, std::min(before, restricted_bound));
+    }
+    if (bound_ > objective_) bound_ = objective_;
+    Step(what + ": " + std::string(milp::ToString(s.status)) + " in " + Fmt(Elapsed() - t0, 3) +
+         " s, bound " + Fmt(bound_, 8));
+    return s.status != milp::SolveStatus::kOptimal && objective_ < before;
+  }
+
+  // Appends the row  cost' x <= cutoff - offset.
+  static void AddObjectiveCutoff(milp::LpData* lp, double cutoff) {
+    const int m = lp->num_rows(), n = lp->num_cols();
+    std::vector<Eigen::Triplet<double, int>> t;
+    t.reserve(static_cast<size_t>(lp->num_nonzeros() + n));
+    for (int j = 0; j < n; ++j) {
+      for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp->a_matrix, j); it;
+           ++it) {
+        t.emplace_back(static_cast<int>(it.row()), j, it.value());
+      }
+      if (lp->col_cost[j] != 0.0) t.emplace_back(m, j, lp->col_cost[j]);
+    }
+    lp->a_matrix.resize(m + 1, n);
+    lp->a_matrix.setFromTriplets(t.begin(), t.end());
+    lp->a_matrix.makeCompressed();
+    lp->row_lower.conservativeResize(m + 1);
+    lp->row_upper.conservativeResize(m + 1);
+    lp->row_lower[m] = -kInf;
+    lp->row_upper[m] = cutoff - lp->objective_offset;
+    if (!lp->row_names.empty()) lp->row_names.push_back("objective_cutoff");
+  }
+
+  // --------------------------------------------------- 5. the whole MILP
+
+  void WholeMilp() {
+    milp::SolveOptions o = SubOptions(true);
+    o.complete_solution = [this](Eigen::VectorXd* x) { return milp_.CompleteFromPattern(x); };
+    if (has_incumbent()) o.initial_solution = x_;
+    const double t0 = Elapsed();
+    const milp::SolveResult s = solver_.Solve(lp_, o);
+    nodes_ += s.nodes;
+    if (report_ != nullptr) report_->whole_milp = true;
+    if ((s.status == milp::SolveStatus::kInfeasible || s.status == milp::SolveStatus::kError) &&
+        !has_incumbent()) {
+      status_ = s.status;
+    }
+    if (s.has_solution()) {
+      Offer(s.x, std::string(solver_.name()) + " on the whole MILP");
+      if (std::isfinite(s.best_bound)) RaiseBound(s.best_bound);
+    }
+    solver_detail_ = s.detail;
+    Step("whole MILP (" + std::string(solver_.name()) +
+         (has_incumbent() ? ", from the incumbent" : "") + "): " +
+         std::string(milp::ToString(s.status)) + " in " + Fmt(Elapsed() - t0, 3) + " s");
+  }
+
+  // -------------------------------------------------------------- result
+
+  milp::SolveResult Result() {
+    milp::SolveResult r;
+    r.solver_version = solver_.version();
+    r.nodes = nodes_;
+    r.incumbents = incumbents_;
+    if (has_incumbent()) {
+      r.status = Done() ? milp::SolveStatus::kOptimal : milp::SolveStatus::kFeasible;
+      r.x = x_;
+      r.objective = objective_;
+      r.best_bound = bound_;
+      r.gap = milp::RelativeGap(objective_, bound_);
+    } else if (status_ == milp::SolveStatus::kInfeasible || status_ == milp::SolveStatus::kError) {
+      r.status = status_;
+    } else {
+      r.status = milp::SolveStatus::kNoSolutionFound;
+    }
+    std::string why;
+    if (!Done()) {
+      if (Interrupted()) {
+        why = "; interrupted";
+      } else if (Remaining() <= 0.0) {
+        why = "; time limit";
+      }
+    }
+    r.detail = "search: " + detail_ + why +
+               (solver_detail_.empty() ? std::string()
+                                       : "; " + std::string(solver_.name()) + ": " + solver_detail_);
+    r.wall_seconds = Elapsed();
+    return r;
+  }
+
+  const ScheduleMilp& milp_;
+  const milp::LpData& lp_;
+  const milp::Solver& solver_;
+  const milp::SolveOptions& options_;
+  const SearchOptions& search_;
+  SearchReport* report_;
+  Clock::time_point start_;
+  double step_ = 0.0;
+
+  milp::LpRelaxationResult relaxation_;
+  milp::DualBound dual_;
+  double bound_ = -kInf;
+  Eigen::VectorXd x_;
+  double objective_ = kInf;
+  std::vector<milp::Incumbent> incumbents_;
+  long long nodes_ = 0;
+  milp::SolveStatus status_ = milp::SolveStatus::kNoSolutionFound;
+  std::string detail_;
+  std::string solver_detail_;
+};
+
+}  // namespace
+
+bool SearchOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& m) {
+    if (error != nullptr) *error = "SearchOptions: " + m;
+    return false;
+  };
+  if (!(candidate_threshold > 0.0 && candidate_threshold < 1.0)) {
+    return fail("candidate_threshold must be in (0, 1), got " + Fmt(candidate_threshold));
+  }
+  if (neighbourhood < 0) return fail("neighbourhood must be >= 0, got " + std::to_string(neighbourhood));
+  if (max_widenings < 0) return fail("max_widenings must be >= 0, got " + std::to_string(max_widenings));
+  if (restricted_max_nodes < 0) {
+    return fail("restricted_max_nodes must be >= 0, got " + std::to_string(restricted_max_nodes));
+  }
+  if (max_exact_slots < 0) return fail("max_exact_slots must be >= 0, got " + std::to_string(max_exact_slots));
+  return true;
+}
+
+milp::SolveResult SearchSchedule(const ScheduleMilp& milp, const milp::Solver& solver,
+                                 const milp::SolveOptions& options, const SearchOptions& search,
+                                 const std::vector<Eigen::VectorXd>& starts, SearchReport* report) {
+  std::string error;
+  if (milp.problem().input_mode != InputMode::kOnOff) {
+    throw std::invalid_argument("SearchSchedule: on-off problems only");
+  }
+  if (!search.IsValid(&error) || !options.IsValid(&error)) throw std::invalid_argument(error);
+  if (milp.problem().objective.kind != ObjectiveKind::kL1 &&
+      milp.problem().objective.kind != ObjectiveKind::kDeltaV &&
+      milp.problem().objective.kind != ObjectiveKind::kPropellant) {
+    throw std::invalid_argument("SearchSchedule: unknown objective");
+  }
+  Search s(milp, solver, options, search, report);
+  return s.Run(starts);
+}
+
+}  // namespace thrustsched::transcription
