@@ -24,6 +24,7 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_SCHEDULE_MILP_H_
 #define THRUSTSCHED_TRANSCRIPTION_SCHEDULE_MILP_H_
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +33,9 @@
 
 #include "dynamics/discretisation.h"
 #include "milp/model.h"
+#include "milp/solver.h"
 #include "transcription/encodings.h"
+#include "transcription/keep_out.h"
 #include "transcription/problem.h"
 
 namespace thrustsched::transcription {
@@ -49,6 +52,10 @@ struct BuildOptions {
   /// Scale state columns and rows so coefficients are near 1 (recommended;
   /// off only to demonstrate what goes wrong without it).
   bool scale = true;
+  /// Conjunctions only: if set, the keep-out big-M and pruning also use
+  /// small LPs with the terminal constraint (transcription/keep_out.h),
+  /// solved with this solver during the build. Not owned.
+  const milp::Solver* keep_out_bound_solver = nullptr;
 };
 
 struct BuildStats {
@@ -113,6 +120,9 @@ class ScheduleMilp {
   /// feasible objective values then differ by whole steps, which lets the
   /// solver prove optimality (milp::SolveOptions::objective_step). Else 0.
   double objective_step() const { return objective_step_; }
+  /// The keep-out rows of problem().conjunction (sizes, big-M range, budget);
+  /// empty without a conjunction.
+  const std::optional<KeepOutStats>& keep_out() const { return keep_out_; }
 
   /// Adds rows/columns through `edit`, then refreezes lp().
   template <typename Edit>
@@ -138,6 +148,7 @@ class ScheduleMilp {
   void BuildSparse();
   void BuildCondensed();
   void AddObjective();
+  void AddConjunction();
   std::vector<Eigen::VectorXd> PropagateDiscrete(const Eigen::MatrixXi& pattern,
                                                  const Eigen::MatrixXd& impulses) const;
 
@@ -150,6 +161,7 @@ class ScheduleMilp {
   BuildStats stats_;
   std::vector<std::string> reasons_;
   double objective_step_ = 0.0;
+  std::optional<KeepOutStats> keep_out_;
   Eigen::VectorXd scale_;                          // state scale S (ones if !scale)
   std::vector<std::vector<milp::Variable>> state_;  // sparse: [node][component], scaled
   std::vector<std::vector<milp::Variable>> dv_;     // impulsive: [thruster][node]
