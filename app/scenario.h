@@ -32,6 +32,8 @@
 #include "dynamics/geo_model.h"
 #include "milp/solver.h"
 #include "transcription/checker.h"
+#include "transcription/conjunction_check.h"
+#include "transcription/conjunction_solve.h"
 #include "transcription/problem.h"
 #include "transcription/schedule_milp.h"
 
@@ -73,6 +75,12 @@ struct Scenario {
   milp::SolveOptions solve;             // no callbacks set
   transcription::CheckOptions check;    // .nonlinear set for GEO unless disabled
   VerdictOptions verdict;
+
+  /// Verification settings of the "conjunction" section (set iff
+  /// problem.conjunction is).
+  std::optional<transcription::ConjunctionCheckOptions> conjunction_check;
+  /// Solve strategy of the "conjunction" section (budget rounds).
+  transcription::ConjunctionSolveOptions conjunction_solve;
 
   /// GEO model options (set iff model_type == kGeo).
   std::optional<dynamics::GeoModelOptions> geo;
