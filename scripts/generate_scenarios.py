@@ -221,7 +221,75 @@ def serra_cases():
         **di_common))
 
 
+def serra_avoidance(case, budget_m_s, time_limit):
+    """Serra 2015 ch. 4 risk selection (Problem 10) from data/reference/serra_avoidance.json."""
+    rs = case["risk_selection"]
+    src = "data/reference/serra_avoidance.json"
+    covariance = [list(row) for row in case["covariance_serra"]]
+    fix = case.get("covariance_correction")
+    correction = ""
+    if fix:
+        i, j = fix["entry"]
+        covariance[i][j] = covariance[j][i] = fix["used"]
+        correction = (f"The printed cov({fix['entry_names'][0]}, {fix['entry_names'][1]}) = "
+                      f"{fix['printed']} has the wrong sign (evidence in the reference file): "
+                      f"{fix['used']} is used. ")
+    name = "serra_avoidance_" + case["example"]
+    ex = case["example"][-1]
+    return {
+        "name": name,
+        "description": (
+            f"Serra 2015, ch. 4 example {ex} ({case['title']}, [S {case['lines']}]): impulsive "
+            f"collision avoidance by risk selection (Problem 10), {rs['N']} impulse dates on "
+            f"[{case['t_lo_s']}, {case['t_hi_s']}] s, {rs['N_checks']} check times, cube of R = "
+            f"{case['radius_m']} m, eps = 1e-4 over the encounter (eps' = 1e-4 s / duration), return "
+            f"to the nominal orbit. Published: {rs['cost_mm_s']} mm/s ({rs['solver']}, "
+            f"{rs['cpu_s']} s), unmanoeuvred maximum risk {case['unmanoeuvred_max_risk']}. " + correction +
+            f"The covariance {case['equation_covariance']} is not positive semi-definite as printed: "
+            f"its negative eigenvalue is clipped to zero (velocities scaled by 1/n). The cost budget "
+            f"{budget_m_s} m/s bounds the big-M. " + src),
+        "model": {"type": "yamanaka_ankersen", "mean_motion_rad_s": case["mean_motion_rad_s"],
+                  "eccentricity": case["eccentricity"], "true_anomaly_rad": case["nu0_rad"],
+                  "true_anomaly_time_s": case["t_lo_s"]},
+        "spacecraft": {"mass_kg": 1000, "isp_s": 300, "thrust_n": 10,
+                       "thrusters": {"preset": "ideal6"}},
+        "initial_state": {"hcw_position_m": [0, 0, 0], "hcw_velocity_m_s": [0, 0, 0]},
+        "horizon": {"start_s": case["t_lo_s"], "duration_s": case["t_hi_s"] - case["t_lo_s"],
+                    "num_intervals": rs["N"] - 1},
+        "input_mode": "impulsive",
+        "terminal": {"type": "fixed_state", "hcw_position_m": [0, 0, 0],
+                     "hcw_velocity_m_s": [0, 0, 0]},
+        "objective": "l1",
+        "discretisation": {"scheme": "exact_zoh"},
+        "conjunction": {
+            "frame": "serra_lvlh",
+            "secondary": {"time_s": case["t_lo_s"], "position_m": case["secondary_position_m_serra"],
+                          "velocity_m_s": case["secondary_velocity_m_s_serra"]},
+            "covariance": covariance,
+            "covariance_repair": "clip_eigenvalues",
+            "radius_m": case["radius_m"],
+            "risk_threshold": 1e-4,
+            "checks": {"count": rs["N_checks"]},
+            "polytope": "cube",
+            "cost_budget": budget_m_s,
+            "verification": {"monte_carlo_samples": 100000, "seed": 1, "nonlinear": True},
+        },
+        "solver": {"time_limit_s": time_limit, "relative_gap": 1e-4, "threads": 1},
+    }
+
+
+def serra_avoidance_cases():
+    path = os.path.join(os.path.dirname(OUT), "reference", "serra_avoidance.json")
+    with open(path) as f:
+        ref = json.load(f)
+    settings = {"ex1": (0.01, 3600), "ex2": (0.005, 3600)}  # cost budget (m/s), time limit (s)
+    for case in ref["cases"]:
+        budget, limit = settings[case["example"]]
+        write("serra_avoidance_" + case["example"], serra_avoidance(case, budget, limit))
+
+
 if __name__ == "__main__":
     thesis_tables()
     geo_weeks()
     serra_cases()
+    serra_avoidance_cases()
