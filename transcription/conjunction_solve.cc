@@ -16,12 +16,6 @@ double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-struct Start {
-  double objective = kInf;
-  Eigen::VectorXd x;
-  std::string label;
-};
-
 // At every check with a disjunction: the face the thrust-free path satisfies
 // best if it satisfies one; otherwise `face` if the check has it (any face
 // if face < 0), else the face the free path misses least.
@@ -42,14 +36,17 @@ std::string FaceLabel(int face, int num_faces) {
   return name + " face wherever the thrust-free path satisfies none";
 }
 
-// Step 1: one LP per fixed assignment of the disjunctions (impulsive mode,
-// where the keep-out binaries are the only integers).
-Start FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solver, const milp::SolveOptions& base,
-                     double time_left) {
+}  // namespace
+
+ConjunctionStart FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solver,
+                                const milp::SolveOptions& base) {
+  if (!m.keep_out()) throw std::invalid_argument("FixedFaceStart: the problem has no conjunction");
+  ConjunctionStart best;
+  if (m.problem().input_mode != InputMode::kImpulsive) return best;
   const KeepOutStats& ko = *m.keep_out();
   const int num_faces = m.problem().conjunction->EffectivePolytope().size();
   const Clock::time_point t0 = Clock::now();
-  Start best;
+  const double time_left = base.time_limit_s;
   for (int face = -1; face < num_faces; ++face) {
     milp::LpData lp = m.lp();
     for (const KeepOutGroup& g : ko.groups) {
@@ -73,6 +70,8 @@ Start FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solver, const mi
   }
   return best;
 }
+
+namespace {
 
 // The plan `x` of another build of the problem as a full start of `m`.
 Eigen::VectorXd StartFor(const ScheduleMilp& m, const Eigen::VectorXd& x) {
@@ -146,7 +145,7 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
   double best = kInf;
   Eigen::VectorXd best_x;
   if (co.fixed_face_start && first.problem().input_mode == InputMode::kImpulsive) {
-    const Start s = FixedFaceStart(first, solver, options.solve, limit);
+    const ConjunctionStart s = FixedFaceStart(first, solver, options.solve);
     out.start_seconds = Since(t0);
     if (s.x.size() > 0) {
       best = s.objective;

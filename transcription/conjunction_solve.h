@@ -64,6 +64,18 @@ struct ConjunctionSolve {
   double start_seconds = 0.0;
 };
 
+/// Step 1 alone: the cheapest plan over the fixed-face assignments (one LP
+/// each; impulsive mode, where the keep-out binaries are the only integers),
+/// as a full column vector of `milp`. Empty `x` if none is feasible or the
+/// problem is not impulsive. @throws std::invalid_argument without a conjunction.
+struct ConjunctionStart {
+  double objective = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd x;
+  std::string label;
+};
+ConjunctionStart FixedFaceStart(const ScheduleMilp& milp, const milp::Solver& solver,
+                                const milp::SolveOptions& options);
+
 /// @throws std::invalid_argument if the problem has no conjunction or the
 ///         options are invalid (and as SolveBuilt).
 ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver& solver,

@@ -9,6 +9,7 @@
 #include "transcription/conjunction_geometry.h"
 #include "transcription/internal/keep_out_bounds.h"
 #include "transcription/internal/row_buffer.h"
+#include "transcription/operations.h"
 
 namespace thrustsched::transcription {
 namespace {
@@ -35,6 +36,33 @@ void AddBudgetRow(double budget, milp::Model* model) {
     objective.AddTerm(v, cost);
   }
   model->AddConstraint(objective, -kInf, budget - model->objective_offset(), "keep_out_budget");
+}
+
+// Bounds |r_i| <= W_i that the hard window gives the local position at a
+// check on a grid node where it is enforced: an axis whose position row is a
+// multiple s of a windowed output's row (HCW/YA: y, z; GEO: y = rho lon,
+// z = rho lat) gets |s| times the planned half width. Infinite elsewhere
+// (between nodes the window is not a constraint).
+Eigen::Vector3d WindowBounds(const ScheduleProblem& p, const CheckGeometry& k) {
+  Eigen::Vector3d w = Eigen::Vector3d::Constant(kInf);
+  const WindowSpec& win = p.window;
+  const int node = k.map.interval;
+  const bool at_node = std::abs(k.t() - p.grid[node]) <= 1e-9 * (p.grid[1] - p.grid[0]);
+  if (!win.enabled() || win.soft || !at_node || node < 1 || k.t() < win.enforce_from_s - kTimeTolerance) {
+    return w;
+  }
+  const Eigen::MatrixXd c = p.model->EvaluateOutput(k.t()).c;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::RowVectorXd row = k.position.row(i);
+    for (size_t q = 0; q < win.outputs.size(); ++q) {
+      const Eigen::RowVectorXd out = c.row(win.outputs[q]);
+      const double s = row.dot(out) / out.squaredNorm();
+      if ((row - s * out).norm() <= 1e-12 * row.norm() && s != 0.0) {
+        w[i] = std::min(w[i], std::abs(s) * win.half_widths[q] * (1.0 - win.margin));
+      }
+    }
+  }
+  return w;
 }
 
 double Median(std::vector<double> v) {
@@ -88,6 +116,7 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
     const std::vector<internal::Effect> effects = internal::Effects(p, d, kick, k.map, k.position, cols, bounds);
     const Eigen::Vector3d drift_pos = k.position * k.map.drift + k.position_offset;
     const Eigen::Vector3d r_free = k.position * (k.map.phi * free[j]) + drift_pos;
+    const Eigen::Vector3d window = WindowBounds(p, k);
     struct Face {
       int f;
       double rhs, big_m;
@@ -105,7 +134,15 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
         lo = std::max(lo, lp_lo);
         hi = std::min(hi, lp_hi);
       }
-      const double low = a.dot(r_free) + lo, high = a.dot(r_free) + hi;
+      double low = a.dot(r_free) + lo, high = a.dot(r_free) + hi;
+      double reach = 0.0;  // inf unless the window bounds every axis a uses
+      for (int i = 0; i < 3; ++i) {
+        if (a[i] != 0.0) reach += std::abs(a[i]) * window[i];
+      }
+      if (std::isfinite(reach)) {
+        low = std::max(low, -reach);
+        high = std::min(high, reach);
+      }
       if (std::isinf(low)) {
         throw std::invalid_argument(
             "conjunction.cost_budget: an impulse column has no upper bound, so the keep-out big-M "

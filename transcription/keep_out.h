@@ -24,6 +24,8 @@
 // constraint (fixed state or state box), one small LP each (thrust columns
 // only): what moves the primary away must bring it back, so M roughly halves
 // and more faces are decided (transcription/internal/keep_out_bounds.h).
+// A hard window bounds the along-track and normal positions exactly at the
+// grid nodes where it is enforced; checks placed on those nodes use it too.
 // Rows are in metres divided by their largest coefficient (M included).
 //
 //   KeepOutColumns cols{...};                 // filled by ScheduleMilp
