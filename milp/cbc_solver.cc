@@ -44,6 +44,7 @@
 #include "ClpPresolve.hpp"
 #include "ClpSimplex.hpp"
 #include "ClpSolve.hpp"
+#include "CoinError.hpp"
 #include "CoinMessageHandler.hpp"
 #include "CoinTypes.hpp"
 #include "OsiClpSolverInterface.hpp"
@@ -589,6 +590,10 @@ class CbcSolverImpl final : public Solver {
   /// nothing better was found under its cutoff).
   SolveResult SolveOnce(const LpData& problem, const SolveOptions& options,
                         bool* cbc_claim = nullptr) const;
+  /// SolveOnce, repeated once without CBC's preprocessing if CBC throws while
+  /// carrying a MIP start through it.
+  SolveResult SolveOnceGuarded(const LpData& problem, const SolveOptions& options,
+                               bool* cbc_claim) const;
   SolveResult VerifyInfeasibilityClaim(const LpData& problem, const SolveOptions& options,
                                        SolveResult claimed) const;
   LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
@@ -656,10 +661,34 @@ SolveResult FromLpOutcome(const LpData& lp, const LpOutcome& o, Control* control
   return r;
 }
 
+// CBC 2.10.8's driver can throw when it carries a MIP start through its
+// preprocessing (CoinError "Illegal index N in ClpModel::getColumnName", N
+// the column count: seen on on-off models with keep-out rows). The solve is
+// then repeated once with the preprocessing and presolve off, start kept.
+SolveResult CbcSolverImpl::SolveOnceGuarded(const LpData& lp, const SolveOptions& options,
+                                            bool* cbc_claim) const {
+  const Clock::time_point start = Clock::now();
+  try {
+    return SolveOnce(lp, options, cbc_claim);
+  } catch (const CoinError& e) {
+    if (!options.initial_solution.has_value() || !options.presolve) throw;
+    SolveOptions again = options;
+    again.presolve = false;
+    if (std::isfinite(again.time_limit_s)) {
+      again.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
+    }
+    SolveResult r = SolveOnce(lp, again, cbc_claim);
+    r.detail = "CBC threw with the MIP start through its preprocessing (" + e.className() +
+               "::" + e.methodName() + ": " + e.message() + "): solved again without preprocessing; " + r.detail;
+    r.wall_seconds = Since(start);
+    return r;
+  }
+}
+
 SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options) const {
   const Clock::time_point start = Clock::now();
   bool claim = false;
-  SolveResult r = SolveOnce(lp, options, &claim);
+  SolveResult r = SolveOnceGuarded(lp, options, &claim);
   // CLP's barrier misclassifies some unbounded problems (reported optimal or
   // infeasible); an infeasible/unbounded verdict reached through it is
   // confirmed with the dual simplex, which classifies them correctly.
@@ -670,7 +699,7 @@ SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options
     if (std::isfinite(dual.time_limit_s)) {
       dual.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
     }
-    SolveResult confirmed = SolveOnce(lp, dual, &claim);
+    SolveResult confirmed = SolveOnceGuarded(lp, dual, &claim);
     confirmed.detail = "barrier verdict re-checked with dual simplex; " + confirmed.detail;
     confirmed.wall_seconds += r.wall_seconds;
     r = std::move(confirmed);
