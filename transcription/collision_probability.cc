@@ -3,24 +3,20 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 
+#include "transcription/internal/format.h"
+
 namespace thrustsched::transcription {
 namespace {
 
+using internal::FormatNumber;
+
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSqrt2 = 1.41421356237309504880;
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
 
 // Gauss-Kronrod 7-15 nodes (positive half) and weights.
 constexpr std::array<double, 8> kXk = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
@@ -148,7 +144,7 @@ double BallProbability(const Eigen::Vector3d& mean, const Eigen::Matrix3d& covar
   if (!mean.allFinite() || !covariance.allFinite() || !std::isfinite(radius)) {
     throw std::invalid_argument("BallProbability: mean, covariance and radius must be finite");
   }
-  if (radius <= 0.0) throw std::invalid_argument("BallProbability: radius must be > 0, got " + Num(radius));
+  if (radius <= 0.0) throw std::invalid_argument("BallProbability: radius must be > 0, got " + FormatNumber(radius));
   const double big = covariance.cwiseAbs().maxCoeff();
   if ((covariance - covariance.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(big, 1e-300)) {
     throw std::invalid_argument("BallProbability: the covariance is not symmetric");
@@ -157,7 +153,7 @@ double BallProbability(const Eigen::Vector3d& mean, const Eigen::Matrix3d& covar
   const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending
   if (lambda[0] < -1e-9 * std::max(lambda[2], 1e-300)) {
     throw std::invalid_argument("BallProbability: the covariance has a negative eigenvalue " +
-                                Num(lambda[0]));
+                                FormatNumber(lambda[0]));
   }
   // Largest variance outermost, smallest innermost (handled by erfc): the
   // narrowest Gaussian factor is never a quadrature variable.
@@ -206,13 +202,13 @@ double LowerQuantile(double p) {
 }  // namespace
 
 double NormalQuantile(double p) {
-  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("NormalQuantile: p must be in (0, 1), got " + Num(p));
+  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("NormalQuantile: p must be in (0, 1), got " + FormatNumber(p));
   return p <= 0.5 ? LowerQuantile(p) : -LowerQuantile(1.0 - p);
 }
 
 double NormalUpperQuantile(double q) {
   if (!(q > 0.0 && q < 1.0)) {
-    throw std::invalid_argument("NormalUpperQuantile: q must be in (0, 1), got " + Num(q));
+    throw std::invalid_argument("NormalUpperQuantile: q must be in (0, 1), got " + FormatNumber(q));
   }
   return q <= 0.5 ? -LowerQuantile(q) : LowerQuantile(1.0 - q);
 }
@@ -237,7 +233,7 @@ Eigen::MatrixXd CovarianceFactor(const Eigen::MatrixXd& covariance) {
   const Eigen::VectorXd lambda = eig.eigenvalues();
   if (lambda.size() > 0 && lambda.minCoeff() < -1e-12 * std::max(lambda.maxCoeff(), 1e-300)) {
     throw std::invalid_argument("CovarianceFactor: the matrix has a negative eigenvalue " +
-                                Num(lambda.minCoeff()));
+                                FormatNumber(lambda.minCoeff()));
   }
   return eig.eigenvectors() * lambda.cwiseMax(0.0).cwiseSqrt().asDiagonal();
 }

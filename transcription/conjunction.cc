@@ -1,26 +1,21 @@
 #include "transcription/conjunction.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
 
 #include "transcription/collision_probability.h"
+#include "transcription/internal/format.h"
 
 namespace thrustsched::transcription {
 namespace {
 
+using internal::FormatNumber;
+
 bool Fail(std::string* error, const std::string& message) {
   if (error != nullptr) *error = message;
   return false;
-}
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
 }
 
 }  // namespace
@@ -78,11 +73,11 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
   const double big = covariance.cwiseAbs().maxCoeff();
   const double asym = (covariance - covariance.transpose()).cwiseAbs().maxCoeff();
   if (asym > 1e-12 * big) {
-    return Fail(error, "conjunction.covariance is not symmetric (largest |S_ij - S_ji| = " + Num(asym) + ")");
+    return Fail(error, "conjunction.covariance is not symmetric (largest |S_ij - S_ji| = " + FormatNumber(asym) + ")");
   }
   for (int i = 0; i < 6; ++i) {
     if (covariance(i, i) < 0.0) {
-      return Fail(error, "conjunction.covariance has a negative variance " + Num(covariance(i, i)) +
+      return Fail(error, "conjunction.covariance has a negative variance " + FormatNumber(covariance(i, i)) +
                              " on the diagonal (entry " + std::to_string(i) + ")");
     }
   }
@@ -91,15 +86,15 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
     const double low = ev.minCoeff();
     if (low < -1e-12 * ev.maxCoeff()) {
       return Fail(error, "conjunction.covariance is not positive semi-definite (smallest eigenvalue " +
-                             Num(low) + "); give covariance_repair \"clip_eigenvalues\" to repair it");
+                             FormatNumber(low) + "); give covariance_repair \"clip_eigenvalues\" to repair it");
     }
   }
   if (!(radius_m > 0.0) || !std::isfinite(radius_m)) {
-    return Fail(error, "conjunction.radius_m must be finite and > 0, got " + Num(radius_m));
+    return Fail(error, "conjunction.radius_m must be finite and > 0, got " + FormatNumber(radius_m));
   }
   if (!(instantaneous_threshold > 0.0 && instantaneous_threshold < 0.5)) {
     return Fail(error, "conjunction.instantaneous_threshold must be in (0, 0.5), got " +
-                           Num(instantaneous_threshold));
+                           FormatNumber(instantaneous_threshold));
   }
   if (num_checks < 1) {
     return Fail(error, "conjunction.num_checks must be >= 1, got " + std::to_string(num_checks));
@@ -108,8 +103,8 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
     return Fail(error, "conjunction check window bounds must be finite");
   }
   if (!std::isnan(check_start_s) && !std::isnan(check_end_s) && !(check_end_s > check_start_s)) {
-    return Fail(error, "conjunction.check_end_s (" + Num(check_end_s) + ") must be after check_start_s (" +
-                           Num(check_start_s) + ")");
+    return Fail(error, "conjunction.check_end_s (" + FormatNumber(check_end_s) + ") must be after check_start_s (" +
+                           FormatNumber(check_start_s) + ")");
   }
   if (polytope.size() > 0) {
     if (polytope.faces.rows() != polytope.size() || polytope.faces.cols() != 3 ||
@@ -117,19 +112,19 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
       return Fail(error, "conjunction.polytope needs m x 3 finite face normals and m finite offsets");
     }
     if (!polytope.ContainsBall(radius_m)) {
-      return Fail(error, "conjunction.polytope does not contain the ball of radius " + Num(radius_m) +
+      return Fail(error, "conjunction.polytope does not contain the ball of radius " + FormatNumber(radius_m) +
                              " m (every face needs b_j >= R |a_j|)");
     }
   }
   if (std::isnan(cost_budget) || cost_budget <= 0.0) {
-    return Fail(error, "conjunction.cost_budget must be > 0, got " + Num(cost_budget));
+    return Fail(error, "conjunction.cost_budget must be > 0, got " + FormatNumber(cost_budget));
   }
   return true;
 }
 
 Eigen::MatrixXd EffectiveCovariance(const ConjunctionSpec& spec, double time_scale_s, double* min_eigenvalue) {
   if (!(time_scale_s > 0.0) || !std::isfinite(time_scale_s)) {
-    throw std::invalid_argument("EffectiveCovariance: time scale must be finite and > 0, got " + Num(time_scale_s));
+    throw std::invalid_argument("EffectiveCovariance: time scale must be finite and > 0, got " + FormatNumber(time_scale_s));
   }
   Eigen::VectorXd d = Eigen::VectorXd::Ones(spec.covariance.rows());
   d.tail(d.size() / 2).setConstant(time_scale_s);
@@ -154,7 +149,7 @@ Eigen::Matrix3d SerraLvlhToLocal() {
 
 double InstantaneousThreshold(double risk, double encounter_s, double t0_s) {
   if (!(risk > 0.0 && risk < 1.0)) {
-    throw std::invalid_argument("risk threshold must be in (0, 1), got " + Num(risk));
+    throw std::invalid_argument("risk threshold must be in (0, 1), got " + FormatNumber(risk));
   }
   if (!(encounter_s > 0.0) || !std::isfinite(encounter_s) || !(t0_s > 0.0) || !std::isfinite(t0_s)) {
     throw std::invalid_argument("encounter duration and T0 must be finite and > 0");

@@ -36,27 +36,79 @@ std::string FaceLabel(int face, int num_faces) {
   return name + " face wherever the thrust-free path satisfies none";
 }
 
+// Fixes every disjunction of `lp` to the face `pick(group)` (w = 0), the others relaxed.
+template <typename Pick>
+void FixFaces(const KeepOutStats& ko, Pick pick, milp::LpData* lp) {
+  for (const KeepOutGroup& g : ko.groups) {
+    if (g.binaries.empty() || g.binaries[0] < 0) continue;
+    const int chosen = pick(g);
+    for (size_t q = 0; q < g.binaries.size(); ++q) {
+      const double v = static_cast<int>(q) == chosen ? 0.0 : 1.0;
+      lp->col_lower[g.binaries[q]] = lp->col_upper[g.binaries[q]] = v;
+    }
+  }
+}
+
+// The face of `g` whose row the row activities `act` (keep-out binaries at
+// 0) satisfy best, in metres of slack.
+int LeastMissedFace(const KeepOutGroup& g, const Eigen::VectorXd& act, const milp::LpData& lp) {
+  int best = 0;
+  double best_slack = -kInf;
+  for (size_t q = 0; q < g.rows.size(); ++q) {
+    const double slack_m = (act[g.rows[q]] - lp.row_lower[g.rows[q]]) / g.row_scale[q];
+    if (slack_m > best_slack) best_slack = slack_m, best = static_cast<int>(q);
+  }
+  return best;
+}
+
+// On-off mode: the plan of the problem without its conjunction, then the
+// same MILP with every disjunction fixed to the face that plan misses least
+// (its station keeping is kept and bent just enough). Each solve gets
+// `share` of the time limit (300 s when unlimited).
+ConjunctionStart RepairedPlanStart(const ScheduleMilp& m, const milp::Solver& solver,
+                                   const milp::SolveOptions& base, double share) {
+  ConjunctionStart out;
+  const double limit = std::isfinite(base.time_limit_s) ? share * base.time_limit_s : 300.0;
+  milp::SolveOptions o = base;
+  o.initial_solution.reset();
+  o.progress = nullptr;
+  o.time_limit_s = limit;
+  ScheduleProblem plain = m.problem();
+  plain.conjunction.reset();
+  const ScheduleMilp without(plain, m.discrete(), m.options());
+  o.objective_step = without.objective_step();
+  const milp::SolveResult r0 = solver.Solve(without.lp(), o);
+  if (!r0.has_solution()) return out;
+  out.lower_bound = r0.best_bound;
+  const KeepOutStats& ko = *m.keep_out();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(m.lp().num_cols());
+  x.head(ko.first_binary_column) = r0.x.head(ko.first_binary_column);
+  const Eigen::VectorXd act = m.lp().a_matrix * x;  // keep-out binaries at 0
+  milp::LpData lp = m.lp();
+  FixFaces(ko, [&](const KeepOutGroup& g) { return LeastMissedFace(g, act, lp); }, &lp);
+  o.objective_step = m.objective_step();
+  const milp::SolveResult r = solver.Solve(lp, o);
+  if (!r.has_solution()) return out;
+  out.objective = r.objective;
+  out.x = r.x;
+  out.label = "the plan without the conjunction, repaired at its least-missed faces";
+  return out;
+}
+
 }  // namespace
 
 ConjunctionStart FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solver,
                                 const milp::SolveOptions& base) {
   if (!m.keep_out()) throw std::invalid_argument("FixedFaceStart: the problem has no conjunction");
   ConjunctionStart best;
-  if (m.problem().input_mode != InputMode::kImpulsive) return best;
+  if (m.problem().input_mode != InputMode::kImpulsive) return RepairedPlanStart(m, solver, base, 0.25);
   const KeepOutStats& ko = *m.keep_out();
   const int num_faces = m.problem().conjunction->EffectivePolytope().size();
   const Clock::time_point t0 = Clock::now();
   const double time_left = base.time_limit_s;
   for (int face = -1; face < num_faces; ++face) {
     milp::LpData lp = m.lp();
-    for (const KeepOutGroup& g : ko.groups) {
-      if (g.binaries.empty() || g.binaries[0] < 0) continue;
-      const int pick = PickFace(g, face);
-      for (size_t q = 0; q < g.binaries.size(); ++q) {
-        const double v = static_cast<int>(q) == pick ? 0.0 : 1.0;
-        lp.col_lower[g.binaries[q]] = lp.col_upper[g.binaries[q]] = v;
-      }
-    }
+    FixFaces(ko, [face](const KeepOutGroup& g) { return PickFace(g, face); }, &lp);
     milp::SolveOptions o = base;
     o.initial_solution.reset();
     o.progress = nullptr;
@@ -72,6 +124,18 @@ ConjunctionStart FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solve
 }
 
 namespace {
+
+// objective >= lower as one row (every objective term is >= 0 here, see AddKeepOut).
+void AddObjectiveFloor(double lower, milp::Model* model) {
+  milp::LinearExpr objective;
+  for (int c = 0; c < model->num_variables(); ++c) {
+    const milp::Variable v = model->variable(c);
+    const double cost = model->objective_coefficient(v);
+    if (cost != 0.0) objective.AddTerm(v, cost);
+  }
+  const double floor = lower - 1e-9 * std::abs(lower) - model->objective_offset();  // solver tolerance
+  model->AddConstraint(objective, floor, kInf, "keep_out_floor");
+}
 
 // The plan `x` of another build of the problem as a full start of `m`.
 Eigen::VectorXd StartFor(const ScheduleMilp& m, const Eigen::VectorXd& x) {
@@ -144,7 +208,7 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
   ConjunctionSolve out;
   double best = kInf;
   Eigen::VectorXd best_x;
-  if (co.fixed_face_start && first.problem().input_mode == InputMode::kImpulsive) {
+  if (co.fixed_face_start) {
     const ConjunctionStart s = FixedFaceStart(first, solver, options.solve);
     out.start_seconds = Since(t0);
     if (s.x.size() > 0) {
@@ -153,6 +217,7 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
       out.start_objective = s.objective;
       out.start_label = s.label;
     }
+    out.lower_bound = s.lower_bound;
   }
   const ScheduleMilp* current = &first;
   for (int round = 0;; ++round) {
@@ -166,7 +231,11 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
       p.conjunction->cost_budget = best * (1.0 + 1e-3) + 1e-12;
       BuildOptions b = first.options();
       if (co.lp_bounds) b.keep_out_bound_solver = &solver;
-      out.milp = std::make_shared<const ScheduleMilp>(p, first.discrete(), b);
+      auto rebuilt = std::make_shared<ScheduleMilp>(p, first.discrete(), b);
+      if (std::isfinite(out.lower_bound)) {
+        rebuilt->Modify([&](milp::Model& model) { AddObjectiveFloor(out.lower_bound, &model); });
+      }
+      out.milp = rebuilt;
       current = out.milp.get();
     }
     BudgetRound br;

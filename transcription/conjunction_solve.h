@@ -8,7 +8,11 @@
 //  1. a start: in impulsive mode, LPs with every disjunction fixed (at each
 //     check the face the thrust-free path satisfies best, or one given face
 //     for all checks where no face holds freely), one per face; the cheapest
-//     feasible plan is a MIP start and an upper bound;
+//     feasible plan is a MIP start and an upper bound. In on-off mode, the
+//     plan of the problem without its conjunction, then the MILP with every
+//     disjunction fixed to the face that plan misses least (each solve a
+//     quarter of the time limit, 300 s without one); the optimum without the
+//     conjunction is then also a lower bound, added as a row to the rounds;
 //  2. rounds: the problem is rebuilt with the best known cost as its budget
 //     (big-M and pruning bounded with the terminal constraint too, by small
 //     LPs) and solved from that plan; a round that finds a plan cheaper than
@@ -35,7 +39,7 @@
 namespace thrustsched::transcription {
 
 struct ConjunctionSolveOptions {
-  bool fixed_face_start = true;   // step 1 (impulsive mode only)
+  bool fixed_face_start = true;   // step 1 (fixed faces, or the repaired plan in on-off mode)
   bool tighten_budget = true;     // step 2; false: one solve of the model as built
   double restart_ratio = 0.9;     // in (0, 1]
   /// Rebuilt rounds bound their big-M with the terminal constraint too
@@ -62,16 +66,22 @@ struct ConjunctionSolve {
   double start_objective = std::numeric_limits<double>::quiet_NaN();  // step 1, NaN if none
   std::string start_label;             // which fixed-face assignment gave it
   double start_seconds = 0.0;
+  /// The start's lower bound, added to every rebuilt round as the row
+  /// "objective >= bound" (valid, and it tightens the LP relaxation).
+  double lower_bound = -std::numeric_limits<double>::infinity();
 };
 
-/// Step 1 alone: the cheapest plan over the fixed-face assignments (one LP
-/// each; impulsive mode, where the keep-out binaries are the only integers),
-/// as a full column vector of `milp`. Empty `x` if none is feasible or the
-/// problem is not impulsive. @throws std::invalid_argument without a conjunction.
+/// Step 1 alone, as a full column vector of `milp`: impulsive mode, the
+/// cheapest plan over the fixed-face assignments (one LP each); on-off mode,
+/// the repaired plan of the problem without its conjunction (two MILPs).
+/// Empty `x` if none is found. @throws std::invalid_argument without a conjunction.
 struct ConjunctionStart {
   double objective = std::numeric_limits<double>::infinity();
   Eigen::VectorXd x;
   std::string label;
+  /// On-off mode: the best bound of the problem without its conjunction,
+  /// also a lower bound with it (a constraint can only raise the optimum).
+  double lower_bound = -std::numeric_limits<double>::infinity();
 };
 ConjunctionStart FixedFaceStart(const ScheduleMilp& milp, const milp::Solver& solver,
                                 const milp::SolveOptions& options);

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "transcription/conjunction_geometry.h"
+#include "transcription/internal/format.h"
 #include "transcription/internal/keep_out_bounds.h"
 #include "transcription/internal/row_buffer.h"
 #include "transcription/operations.h"
@@ -14,14 +14,9 @@
 namespace thrustsched::transcription {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using internal::FormatNumber;
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(8);
-  os << v;
-  return os.str();
-}
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void AddBudgetRow(double budget, milp::Model* model) {
   milp::LinearExpr objective;
@@ -168,8 +163,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
       // Infeasible by construction; the closest face stays as a hard row so
       // that the model itself is infeasible too.
       s.infeasibility_reasons.push_back(
-          "keep-out at t = " + Num(k.t()) + " s: no face of the polytope can be left with margin within "
-          "the cost budget and thrust bounds (the closest is missed by " + Num(closest_miss) + " m)");
+          "keep-out at t = " + FormatNumber(k.t()) + " s: no face of the polytope can be left with margin within "
+          "the cost budget and thrust bounds (the closest is missed by " + FormatNumber(closest_miss) + " m)");
       faces.push_back(closest);
     }
     KeepOutGroup group;
@@ -197,8 +192,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
         rows.Coef(cols.thrust[i][j].index(), coef);
       }
       if (!w.empty()) rows.Coef(w[q].index(), faces[q].big_m);
-      rows.End(faces[q].rhs - a.dot(drift_pos), kInf,
-               "keep_out_" + std::to_string(kk) + "_" + std::to_string(faces[q].f));
+      group.row_scale.push_back(rows.End(faces[q].rhs - a.dot(drift_pos), kInf,
+                                         "keep_out_" + std::to_string(kk) + "_" + std::to_string(faces[q].f)));
       group.faces.push_back(faces[q].f);
       group.rows.push_back(s.num_rows++);  // relative to the buffered block, fixed below
       group.binaries.push_back(w.empty() ? -1 : w[q].index());

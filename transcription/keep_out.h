@@ -65,6 +65,7 @@ struct KeepOutGroup {
   std::vector<int> rows;         // row index in the model
   std::vector<int> binaries;     // column index of w (-1: single face, no binary)
   std::vector<double> free_slack_m;  // a_j^T r_p - rhs_j along the thrust-free path (m)
+  std::vector<double> row_scale;     // the row is (its value in metres) times this
 };
 
 struct KeepOutStats {

@@ -44,8 +44,8 @@ class RowBuffer {
   void Coef(int column, double value) {
     if (value != 0.0) current_.push_back({0, column, value});
   }
-  // Ends the row lo <= sum <= hi.
-  void End(double lo, double hi, std::string name) {
+  // Ends the row lo <= sum <= hi; returns the factor the row was multiplied by.
+  double End(double lo, double hi, std::string name) {
     double big = 0.0;
     for (const auto& t : current_) big = std::max(big, std::abs(t.value));
     double factor = 1.0;
@@ -58,6 +58,7 @@ class RowBuffer {
     lower_.push_back(std::isfinite(lo) ? lo * factor : lo);
     upper_.push_back(std::isfinite(hi) ? hi * factor : hi);
     names_.push_back(std::move(name));
+    return factor;
   }
   void Flush(milp::Model* model) {
     if (lower_.empty()) return;
