@@ -370,8 +370,9 @@ Published Table42(int t1_days) {
 void AddCollisionAvoidance(Builder* b, const MatrixOptions& o) {
   // Serra 2015 ch. 4 Examples 1 and 2 to proven optimality (one thread, as
   // reported next to Gurobi 5.6's 159 s and 22 s; published values are read
-  // from data/reference/serra_avoidance.json by the executor), and the on-off
-  // GEO encounter with and without its secondary. Not in --quick.
+  // from data/reference/serra_avoidance.json by the executor). Not in
+  // --quick. (The on-off GEO encounter, ten minutes, is run by the CLI:
+  // data/scenarios/README.md section 10.)
   if (o.quick) return;
   for (const char* scenario : {"serra_avoidance_ex1", "serra_avoidance_ex2"}) {
     CaseSpec c = b->Make(kSectionCollisionAvoidance, scenario, CaseKind::kConjunction);

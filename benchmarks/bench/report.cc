@@ -22,6 +22,8 @@
 #include "app/plots.h"
 #include "benchmarks/bench/accuracy.h"
 #include "benchmarks/bench/matrix.h"
+#include "benchmarks/bench/report_conjunction.h"
+#include "benchmarks/bench/report_format.h"
 #include "milp/cbc_solver.h"
 
 namespace thrustsched::bench {
@@ -46,38 +48,10 @@ int ExpectedOrder(const std::string& scheme) {
   return 0;
 }
 
-std::string G(double v, int sig = 4) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*g", sig, v);
-  return buf;
-}
-
-std::string Sec(double v) {
-  if (std::isnan(v)) return "-";
-  if (std::isinf(v)) return "not reached";
-  char buf[64];
-  if (v < 0.01) std::snprintf(buf, sizeof(buf), "%.4f", v);
-  else if (v < 1) std::snprintf(buf, sizeof(buf), "%.3g", v);
-  else if (v < 10) std::snprintf(buf, sizeof(buf), "%.2f", v);
-  else std::snprintf(buf, sizeof(buf), "%.1f", v);
-  return buf;
-}
-
-std::string Pct(double v) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.2f %%", 100.0 * v);
-  return buf;
-}
-
-std::string Sci(double v) {
-  if (std::isnan(v)) return "-";
-  if (v == 0.0) return "0";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.2e", v);
-  return buf;
-}
+using fmt::G;
+using fmt::Pct;
+using fmt::Sci;
+using fmt::Sec;
 
 class MdTable {
  public:
@@ -294,6 +268,7 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
         "[3. Formulations and encodings](#3-formulations-and-encodings) · "
         "[4. Scaling](#4-scaling) · [5. Operational constraints](#5-operational-constraints) · "
         "[6. One year](#6-one-year-of-station-keeping-thrustsched-simulate) · "
+        "[7. Collision avoidance](#7-collision-avoidance-serra-2015-ch-4) · "
         "[Method and definitions](#method-and-definitions) · "
         "[Not run or skipped](#not-run-or-skipped) · [Columns](#columns-of-resultscsv)\n\n";
 }
@@ -1419,6 +1394,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteScaling(md, idx, &plot);
   WriteOperations(md, idx);
   WriteYear(md, meta);
+  WriteCollisionAvoidance(md, rows);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);
   WriteColumns(md);
