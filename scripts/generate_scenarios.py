@@ -1,16 +1,20 @@
 #!/usr/bin/env python3
 """Writes the scenario files of data/scenarios/ that come in families
-(thesis Tables 4.1 and 4.2, the GEO weeks, the Serra rendezvous cases), so
-that they stay consistent. Hand-edit this script, not the generated files;
-run it from the repository root:
+(thesis Tables 4.1 and 4.2, the GEO weeks, the Serra rendezvous and
+collision-avoidance cases, the GEO encounter), so that they stay consistent.
+Hand-edit this script, not the generated files; run it from the repository
+root:
 
-    python3 scripts/generate_scenarios.py
+    python3 scripts/generate_scenarios.py            # write the files
+    python3 scripts/generate_scenarios.py --check    # compare only; exit 1 if any differs
 
 Every field is documented in data/scenarios/README.md; the published figures
 the scenarios reproduce are in data/reference/*.json.
 """
+import argparse
 import json
 import os
+import sys
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "scenarios")
 DAY = 86400
@@ -21,11 +25,24 @@ THESIS_RULES = {"max_simultaneous": 1, "min_burn_s": 300, "min_off_same_s": 1200
                 "min_gap_other_s": 300}
 
 
+CHECK_ONLY = False  # --check: compare with the shipped files, write nothing
+DIFFERENT = []
+
+
 def write(name, scenario):
     path = os.path.join(OUT, name + ".json")
+    text = json.dumps(scenario, indent=2) + "\n"
+    if CHECK_ONLY:
+        try:
+            with open(path) as f:
+                same = f.read() == text
+        except OSError:
+            same = False
+        if not same:
+            DIFFERENT.append(os.path.relpath(path))
+        return
     with open(path, "w") as f:
-        json.dump(scenario, f, indent=2)
-        f.write("\n")
+        f.write(text)
     print("wrote", os.path.relpath(path))
 
 
@@ -136,6 +153,61 @@ def geo_weeks():
         "geo_week_anzel4_failed_ne",
         common + "Anzel thrusters with NE failed (disabled: forced off), thesis sec. 5.3.7.",
         anzel, disabled=["NE"]))
+
+
+# The GEO encounter: two days (t = 216000 to 388800 s) of the geo_week_anzel4
+# week, from the state its plan reached at t = 216000 s (thrustsched solve
+# data/scenarios/geo_week_anzel4.json, trajectory.csv row t_s = 216000: the
+# linear model's relative equinoctial state). A secondary passes 7 m from the
+# optimal plan of those two days without conjunction (geo_2day_anzel4) at
+# t_c = 302400 s: position and velocity of that plan at t_c in the local
+# frame (x radial, y along-track, z normal; trajectory.csv of
+# `thrustsched solve data/scenarios/geo_2day_anzel4.json`, mapped by
+# HcwCoordinates) plus the offsets below.
+GEO_2DAY_START = [-468.075868490414, 3.42304066864388e-05, 8.8677186757361e-05,
+                  1.70290116533708e-05, 8.58407927206972e-05, 0.000315481510424821]
+GEO_2DAY_PLAN_AT_TC = ([-2537.3885683, 19032.7025944, -7284.48439884],
+                       [-0.0597000034064, 0.28544697203, 0.778966364793])
+GEO_TC = 302400
+
+
+def geo_2day(name, description, conjunction=None, gap=1e-4):
+    s = geo(name, description, {"preset": "anzel4", "theta_deg": 63.64, "alpha_deg": 7.03},
+            time_limit=600, gap=gap)
+    s["initial_state"] = {"relative_equinoctial": GEO_2DAY_START}
+    s["horizon"] = {"start_s": 216000, "duration_s": 2 * DAY, "step_s": 300}
+    s["window"] = {"half_width_deg": 0.05, "enforce_from_s": 216000}
+    if conjunction:
+        s["conjunction"] = conjunction
+    return s
+
+
+def geo_conjunction_cases():
+    common = ("Two days (t = 216000 to 388800 s) of GEO station keeping at 118 deg E, from the "
+              "state the geo_week_anzel4 plan reaches at t = 216000 s, Anzel thrusters, thesis "
+              "rules, +-0.05 deg window, end-of-horizon station-keeping set. ")
+    write("geo_2day_anzel4", geo_2day(
+        "geo_2day_anzel4", common + "Without conjunction: the reference of geo_2day_anzel4_conjunction."))
+    pos, vel = GEO_2DAY_PLAN_AT_TC
+    offset_m, rel_m_s = [3.0, -4.0, 5.0], [0.02, 0.2, -0.03]
+    write("geo_2day_anzel4_conjunction", geo_2day(
+        "geo_2day_anzel4_conjunction",
+        common + "A secondary passes 7 m from the optimal plan of geo_2day_anzel4 at t = 302400 s "
+        "(relative velocity 0.2 m/s along-track), with 100 m radial and normal and 1 km "
+        "along-track position uncertainty; eps = 1e-4 over +-6 h around the encounter (143 "
+        "checks on the grid nodes). The plan must keep the box, the rules and the risk.",
+        conjunction={
+            "secondary": {"time_s": GEO_TC,
+                          "position_m": [round(p + d, 3) for p, d in zip(pos, offset_m)],
+                          "velocity_m_s": [round(v + d, 6) for v, d in zip(vel, rel_m_s)]},
+            "covariance": [[1e4, 0, 0, 0, 0, 0], [0, 1e6, 0, 0, 0, 0], [0, 0, 1e4, 0, 0, 0],
+                           [0, 0, 0, 4e-6, 0, 0], [0, 0, 0, 0, 2.5e-5, 0], [0, 0, 0, 0, 0, 4e-6]],
+            "radius_m": 15,
+            "risk_threshold": 1e-4,
+            "checks": {"count": 143, "start_s": GEO_TC - 21600, "end_s": GEO_TC + 21600},
+            "cost_budget": 2.5,
+            "verification": {"monte_carlo_samples": 100000, "seed": 1},
+        }, gap=0.01))
 
 
 def serra(name, description, a_m, e, nu0, nuf, z0, vz0, zf, vzf, intervals=1000):
@@ -289,7 +361,18 @@ def serra_avoidance_cases():
 
 
 if __name__ == "__main__":
+    ap = argparse.ArgumentParser(description="Writes the generated scenario files of data/scenarios/.")
+    ap.add_argument("--check", action="store_true",
+                    help="write nothing; list the files that differ from what the script "
+                         "generates and exit 1 if any")
+    CHECK_ONLY = ap.parse_args().check
     thesis_tables()
     geo_weeks()
     serra_cases()
     serra_avoidance_cases()
+    geo_conjunction_cases()
+    if CHECK_ONLY:
+        for path in DIFFERENT:
+            print("differs:", path)
+        print("%s generated files differ" % (len(DIFFERENT) or "no"))
+        sys.exit(1 if DIFFERENT else 0)
