@@ -15,6 +15,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/conjunction_report.h"
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
@@ -312,10 +313,16 @@ int RunSolve(const SolveArgs& a) {
   }
   const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
   transcription::ScheduleResult r;
+  std::optional<transcription::ConjunctionSolve> rounds;  // budget rounds of a conjunction
   bool interrupted = false;
   {
     InterruptWatcher watcher;
-    r = transcription::SolveBuilt(milp, *solver, opt);
+    if (s.problem.conjunction) {
+      rounds = transcription::SolveConjunction(milp, *solver, opt, s.conjunction_solve);
+      r = rounds->result;
+    } else {
+      r = transcription::SolveBuilt(milp, *solver, opt);
+    }
   }
   interrupted = InterruptWatcher::interrupted();
   if (interrupted) {
@@ -341,6 +348,11 @@ int RunSolve(const SolveArgs& a) {
     }
     r.checked = true;
     r.check_seconds = Since(tc);
+  }
+  std::optional<transcription::ConjunctionCheckReport> conjunction;
+  if (r.has_schedule() && s.problem.conjunction) {
+    if (!a.quiet) err << "verifying the conjunction (computed risk, Monte Carlo)\n";
+    conjunction = VerifyConjunction(s, r.schedule.burns, r.schedule.impulses);
   }
 
   // Files.
@@ -373,6 +385,10 @@ int RunSolve(const SolveArgs& a) {
   if (!nonlinear_error.empty() && summary["check"].is_object()) {
     summary["check"]["nonlinear_error"] = nonlinear_error;
   }
+  if (s.problem.conjunction) {
+    summary["conjunction"] = ConjunctionJson(milp.keep_out(), rounds ? &*rounds : nullptr,
+                                             conjunction ? &*conjunction : nullptr);
+  }
   WriteJsonFile(dir + "/summary.json", summary);
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) err << "note: " << replaced << "\n";
@@ -383,6 +399,7 @@ int RunSolve(const SolveArgs& a) {
   out << "scenario      " << s.name << " (" << a.scenario << ")\n";
   out << "model         " << ModelLine(s) << "\n";
   out << "MILP          " << MilpLine(milp, s) << "\n";
+  if (milp.keep_out()) PrintKeepOut(out, *milp.keep_out());
   out << "status        " << StatusName(sr.status);
   if (interrupted) out << " (interrupted)";
   if (sr.has_solution()) {
@@ -390,6 +407,7 @@ int RunSolve(const SolveArgs& a) {
         << "), best bound " << F(sr.best_bound, 8) << ", gap " << Percent(sr.gap);
   }
   out << "\n";
+  if (rounds) PrintConjunctionSolve(out, *rounds);
   if (!sr.detail.empty() && !sr.has_solution()) out << "solver says   " << sr.detail << "\n";
   for (const std::string& reason : r.infeasibility_reasons) out << "reason        " << reason << "\n";
   if (r.has_schedule()) {
@@ -418,6 +436,7 @@ int RunSolve(const SolveArgs& a) {
     }
     if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
   }
+  if (conjunction) PrintConjunctionCheck(out, *conjunction);
   out << "output        " << target << " (" << JoinNames(files) << ")\n";
   out.flush();
 
@@ -470,9 +489,13 @@ int RunCheck(const CheckArgs& a) {
     out << "schedule      " << a.schedule << ": " << imp.size() << " impulses, total "
         << F(dv, 8) << " m/s\n";
     PrintImpulsiveCheck(out, s, c, v);
-    passed = v.passed;
+    const auto conjunction = VerifyConjunction(s, {}, imp);
+    if (conjunction) PrintConjunctionCheck(out, *conjunction);
+    passed = v.passed && (!conjunction || conjunction->passed());
     if (folder) {
-      WriteJsonFile(dir + "/check.json", ImpulsiveCheckJson(s, c, v, Since(tc)));
+      nlohmann::json j = ImpulsiveCheckJson(s, c, v, Since(tc));
+      if (conjunction) j["conjunction"] = ConjunctionJson(std::nullopt, nullptr, &*conjunction);
+      WriteJsonFile(dir + "/check.json", j);
       WriteImpulsesCsv(dir + "/impulses.csv", s, imp);
       WriteScheduleCsv(dir + "/schedule.csv", s, {});
       WriteImpulsiveTrajectoryCsv(dir + "/trajectory.csv", s, imp);
@@ -493,9 +516,12 @@ int RunCheck(const CheckArgs& a) {
         << " m/s, propellant " << F(sch.propellant_kg, 8) << " kg\n";
     PrintCheck(out, s, r, v);
     if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
-    passed = v.passed;
+    const auto conjunction = VerifyConjunction(s, burns, {});
+    if (conjunction) PrintConjunctionCheck(out, *conjunction);
+    passed = v.passed && (!conjunction || conjunction->passed());
     if (folder) {
       nlohmann::json j = CheckJson(s, r, v, Since(tc));
+      if (conjunction) j["conjunction"] = ConjunctionJson(std::nullopt, nullptr, &*conjunction);
       j["consumption_l1_m_s"] = sch.consumption_l1_m_s;
       j["delta_v_m_s"] = sch.delta_v_m_s;
       j["propellant_kg"] = sch.propellant_kg;
@@ -573,6 +599,7 @@ int RunValidate(const ValidateArgs& a) {
   if (a.build) {
     const transcription::ScheduleMilp milp(s.problem, s.build);
     std::cout << "MILP          " << MilpLine(milp, s) << "\n";
+    if (milp.keep_out()) PrintKeepOut(std::cout, *milp.keep_out());
     for (const std::string& reason : milp.infeasibility_reasons()) {
       std::cout << "reason        infeasible by construction: " << reason << "\n";
     }

@@ -1,5 +1,7 @@
 #include "app/scenario.h"
 
+#include "app/conjunction_section.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -164,13 +166,28 @@ void ParseModel(JsonObject m, Scenario* s) {
         Wrap(m.path(), [&] { return std::make_shared<const dynamics::DoubleIntegrator3d>(ts, l); });
   } else {
     s->model_type = ModelType::kYamanakaAnkersen;
-    const double a = m.Number("semi_major_axis_m", Bound::kPositive);
+    m.ExactlyOneOf({"semi_major_axis_m", "mean_motion_rad_s"}, /*required=*/true);
     const double e = m.Number("eccentricity", Bound::kNonNegative);
     if (e > 0.99) m.Fail("eccentricity", "must be in [0, 0.99], got " + FormatNumber(e));
     const double mu = m.OptionalNumber("mu_m3_s2", Bound::kPositive)
                           .value_or(dynamics::YamanakaAnkersenModel::kEarthMu);
-    const double nu0 = m.OptionalNumber("true_anomaly_at_epoch_rad").value_or(0.0);
+    // Serra 2015 sec. 4.4 gives the mean motion, not the semi-major axis.
+    const double a = m.Has("semi_major_axis_m")
+                         ? m.Number("semi_major_axis_m", Bound::kPositive)
+                         : std::cbrt(mu / std::pow(m.Number("mean_motion_rad_s", Bound::kPositive), 2));
     const double l = m.OptionalNumber("length_scale_m", Bound::kPositive).value_or(1000.0);
+    m.ExactlyOneOf({"true_anomaly_at_epoch_rad", "true_anomaly_rad"}, /*required=*/false);
+    double nu0 = m.OptionalNumber("true_anomaly_at_epoch_rad").value_or(0.0);
+    if (m.Has("true_anomaly_rad")) {
+      // The anomaly at another time (e.g. the horizon start): carried to the epoch.
+      const double nu = m.Number("true_anomaly_rad");
+      const double at = m.OptionalNumber("true_anomaly_time_s").value_or(0.0);
+      nu0 = Wrap(m.FieldPath("true_anomaly_rad"), [&] {
+        return dynamics::YamanakaAnkersenModel(a, e, mu, nu, l).TrueAnomalyAt(-at);
+      });
+    } else if (m.Has("true_anomaly_time_s")) {
+      m.Fail("true_anomaly_time_s", "is only used with true_anomaly_rad");
+    }
     s->problem.model = Wrap(m.path(), [&] {
       return std::make_shared<const dynamics::YamanakaAnkersenModel>(a, e, mu, nu0, l);
     });
@@ -518,6 +535,24 @@ void ParseTerminal(JsonObject t, Scenario* s) {
   t.Finish();
 }
 
+// A number (every thruster) or an object {thruster name: bound} (unlisted
+// thrusters unbounded), e.g. per-axis bounds with the ideal six thrusters.
+void ParseMaxImpulse(JsonObject& top, Scenario* s) {
+  if (!top.Raw("max_impulse_m_s").is_object()) {
+    s->problem.max_impulse_m_s = top.Number("max_impulse_m_s", Bound::kPositive);
+    return;
+  }
+  JsonObject o = top.Object("max_impulse_m_s");
+  std::vector<double> bounds(s->problem.thrusters.size(), kInf);
+  const nlohmann::json& raw = top.Raw("max_impulse_m_s");
+  for (auto it = raw.begin(); it != raw.end(); ++it) {
+    const int i = ThrusterIndex(*s, it.key(), o.FieldPath(it.key()));
+    bounds[i] = o.Number(it.key(), Bound::kNonNegative);
+  }
+  o.Finish();
+  s->problem.max_impulse_per_thruster_m_s = bounds;
+}
+
 void ParseCheck(JsonObject c, Scenario* s) {
   s->check.samples_per_interval = c.OptionalInteger("samples_per_interval", 0, 100).value_or(4);
   if (auto tol = c.OptionalNumber("propagation_tolerance", Bound::kPositive)) {
@@ -564,7 +599,7 @@ std::vector<std::string> ScenarioSections() {
   return {"name",           "description", "model",     "spacecraft",     "initial_state",
           "horizon",        "window",      "operations", "objective",     "discretisation",
           "transcription",  "solver",      "history",   "forced_off",     "terminal",
-          "input_mode",     "max_impulse_m_s", "check"};
+          "input_mode",     "max_impulse_m_s", "check",     "conjunction"};
 }
 
 Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& options) {
@@ -589,9 +624,7 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
     }
   }
   if (s.impulsive()) {
-    if (top.Has("max_impulse_m_s")) {
-      s.problem.max_impulse_m_s = top.Number("max_impulse_m_s", Bound::kPositive);
-    }
+    if (top.Has("max_impulse_m_s")) ParseMaxImpulse(top, &s);
     for (const char* key : {"operations", "history", "forced_off"}) {
       if (top.Has(key)) top.Fail(key, "is not used with \"input_mode\": \"impulsive\"");
     }
@@ -607,6 +640,7 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
   if (top.Has("transcription")) ParseTranscription(top.Object("transcription"), &s);
   if (top.Has("solver")) ParseSolver(top.Object("solver"), &s);
   if (top.Has("terminal")) ParseTerminal(top.Object("terminal"), &s);
+  if (top.Has("conjunction")) ParseConjunction(top.Object("conjunction"), &s);
 
   // Checker: GEO schedules are also replayed through the nonlinear model by default.
   if (s.model_type == ModelType::kGeo) {

@@ -33,6 +33,8 @@
 #include "dynamics/geo_model.h"
 #include "milp/solver.h"
 #include "transcription/checker.h"
+#include "transcription/conjunction_check.h"
+#include "transcription/conjunction_solve.h"
 #include "transcription/problem.h"
 #include "transcription/schedule_milp.h"
 
@@ -82,6 +84,12 @@ struct Scenario {
   /// on-off mode; false hands the whole MILP to CBC (--no-search).
   bool search = true;
   VerdictOptions verdict;
+
+  /// Verification settings of the "conjunction" section (set iff
+  /// problem.conjunction is).
+  std::optional<transcription::ConjunctionCheckOptions> conjunction_check;
+  /// Solve strategy of the "conjunction" section (budget rounds).
+  transcription::ConjunctionSolveOptions conjunction_solve;
 
   /// GEO model options (set iff model_type == kGeo).
   std::optional<dynamics::GeoModelOptions> geo;

@@ -634,6 +634,9 @@ SimulationSetup ParseSimulationText(const std::string& text, const std::string& 
         "scenario.terminal: not used by simulate; give the end-of-cycle sets in "
         "long_horizon.terminal");
   }
+  if (s.raw.contains("conjunction")) {
+    throw ScenarioError("scenario.conjunction: not used by simulate (solve the encounter with `solve`)");
+  }
   if (!s.problem.window.enabled()) {
     throw ScenarioError("scenario.window: missing (simulate keeps the satellite in a window)");
   }

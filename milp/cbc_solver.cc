@@ -28,6 +28,7 @@
 // COIN-OR (version strings only).
 #include "CbcConfig.h"
 #include "ClpConfig.h"
+#include "CoinError.hpp"
 #include "milp/internal/cbc_child.h"
 #include "milp/internal/lp_child.h"
 #include "milp/internal/cbc_driver.h"
@@ -145,6 +146,10 @@ class CbcSolverImpl final : public Solver {
   /// nothing better was found under its cutoff).
   SolveResult SolveOnce(const LpData& problem, const SolveOptions& options,
                         bool* cbc_claim = nullptr) const;
+  /// SolveOnce, repeated once without CBC's preprocessing if CBC throws while
+  /// carrying a MIP start through it.
+  SolveResult SolveOnceGuarded(const LpData& problem, const SolveOptions& options,
+                               bool* cbc_claim) const;
   SolveResult VerifyInfeasibilityClaim(const LpData& problem, const SolveOptions& options,
                                        SolveResult claimed) const;
   LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
@@ -226,10 +231,43 @@ SolveResult SolveContinuous(const LpData& lp, const SolveOptions& options, Solve
   return r;
 }
 
+// CBC 2.10.8's driver can throw when it carries a MIP start through its
+// preprocessing (CoinError "Illegal index N in ClpModel::getColumnName", N
+// the column count: seen on on-off models with keep-out rows). The solve is
+// then repeated once with the preprocessing and presolve off, start kept.
+SolveResult CbcSolverImpl::SolveOnceGuarded(const LpData& lp, const SolveOptions& options,
+                                            bool* cbc_claim) const {
+  const Clock::time_point start = Clock::now();
+  const bool may_retry = options.initial_solution.has_value() && options.presolve;
+  std::string why;
+  try {
+    SolveResult r = SolveOnce(lp, options, cbc_claim);
+    // In its child process the driver's CoinError becomes an error outcome.
+    if (!may_retry || r.status != SolveStatus::kError ||
+        r.detail.find("CoinError") == std::string::npos) {
+      return r;
+    }
+    why = r.detail;
+  } catch (const CoinError& e) {
+    if (!may_retry) throw;
+    why = "CoinError " + e.className() + "::" + e.methodName() + ": " + e.message();
+  }
+  SolveOptions again = options;
+  again.presolve = false;
+  if (std::isfinite(again.time_limit_s)) {
+    again.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
+  }
+  SolveResult r = SolveOnce(lp, again, cbc_claim);
+  r.detail = "CBC threw with the MIP start through its preprocessing (" + why +
+             "): solved again without preprocessing; " + r.detail;
+  r.wall_seconds = Since(start);
+  return r;
+}
+
 SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options) const {
   const Clock::time_point start = Clock::now();
   bool claim = false;
-  SolveResult r = SolveOnce(lp, options, &claim);
+  SolveResult r = SolveOnceGuarded(lp, options, &claim);
   // CLP's barrier misclassifies some unbounded problems (reported optimal or
   // infeasible); an infeasible/unbounded verdict reached through it is
   // confirmed with the dual simplex, which classifies them correctly.
@@ -240,7 +278,7 @@ SolveResult CbcSolverImpl::DoSolve(const LpData& lp, const SolveOptions& options
     if (std::isfinite(dual.time_limit_s)) {
       dual.time_limit_s = std::max(0.0, options.time_limit_s - Since(start));
     }
-    SolveResult confirmed = SolveOnce(lp, dual, &claim);
+    SolveResult confirmed = SolveOnceGuarded(lp, dual, &claim);
     confirmed.detail = "barrier verdict re-checked with dual simplex; " + confirmed.detail;
     confirmed.wall_seconds += r.wall_seconds;
     r = std::move(confirmed);

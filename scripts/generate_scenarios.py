@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the scenario files of data/scenarios/ that come in families
-(thesis Tables 4.1 and 4.2, the GEO weeks, the Serra rendezvous cases), so
-that they stay consistent. Hand-edit this script, not the generated files;
-run it from the repository root:
+(thesis Tables 4.1 and 4.2, the GEO weeks, the Serra rendezvous and
+collision-avoidance cases, the GEO encounter), so that they stay consistent.
+Hand-edit this script, not the generated files; run it from the repository
+root:
 
     python3 scripts/generate_scenarios.py           # rewrite them
     python3 scripts/generate_scenarios.py --check   # only compare (exit 1 if any differs)
@@ -166,6 +167,61 @@ def geo_weeks():
     write("geo_week_from_opm", from_opm)
 
 
+# The GEO encounter: two days (t = 216000 to 388800 s) of the geo_week_anzel4
+# week, from the state its plan reached at t = 216000 s (thrustsched solve
+# data/scenarios/geo_week_anzel4.json, trajectory.csv row t_s = 216000: the
+# linear model's relative equinoctial state). A secondary passes 7 m from the
+# optimal plan of those two days without conjunction (geo_2day_anzel4) at
+# t_c = 302400 s: position and velocity of that plan at t_c in the local
+# frame (x radial, y along-track, z normal; trajectory.csv of
+# `thrustsched solve data/scenarios/geo_2day_anzel4.json`, mapped by
+# HcwCoordinates) plus the offsets below.
+GEO_2DAY_START = [-468.075868490414, 3.42304066864388e-05, 8.8677186757361e-05,
+                  1.70290116533708e-05, 8.58407927206972e-05, 0.000315481510424821]
+GEO_2DAY_PLAN_AT_TC = ([-2537.3885683, 19032.7025944, -7284.48439884],
+                       [-0.0597000034064, 0.28544697203, 0.778966364793])
+GEO_TC = 302400
+
+
+def geo_2day(name, description, conjunction=None, gap=1e-4):
+    s = geo(name, description, {"preset": "anzel4", "theta_deg": 63.64, "alpha_deg": 7.03},
+            time_limit=600, gap=gap)
+    s["initial_state"] = {"relative_equinoctial": GEO_2DAY_START}
+    s["horizon"] = {"start_s": 216000, "duration_s": 2 * DAY, "step_s": 300}
+    s["window"] = {"half_width_deg": 0.05, "enforce_from_s": 216000}
+    if conjunction:
+        s["conjunction"] = conjunction
+    return s
+
+
+def geo_conjunction_cases():
+    common = ("Two days (t = 216000 to 388800 s) of GEO station keeping at 118 deg E, from the "
+              "state the geo_week_anzel4 plan reaches at t = 216000 s, Anzel thrusters, thesis "
+              "rules, +-0.05 deg window, end-of-horizon station-keeping set. ")
+    write("geo_2day_anzel4", geo_2day(
+        "geo_2day_anzel4", common + "Without conjunction: the reference of geo_2day_anzel4_conjunction."))
+    pos, vel = GEO_2DAY_PLAN_AT_TC
+    offset_m, rel_m_s = [3.0, -4.0, 5.0], [0.02, 0.2, -0.03]
+    write("geo_2day_anzel4_conjunction", geo_2day(
+        "geo_2day_anzel4_conjunction",
+        common + "A secondary passes 7 m from the optimal plan of geo_2day_anzel4 at t = 302400 s "
+        "(relative velocity 0.2 m/s along-track), with 100 m radial and normal and 1 km "
+        "along-track position uncertainty; eps = 1e-4 over +-6 h around the encounter (143 "
+        "checks on the grid nodes). The plan must keep the box, the rules and the risk.",
+        conjunction={
+            "secondary": {"time_s": GEO_TC,
+                          "position_m": [round(p + d, 3) for p, d in zip(pos, offset_m)],
+                          "velocity_m_s": [round(v + d, 6) for v, d in zip(vel, rel_m_s)]},
+            "covariance": [[1e4, 0, 0, 0, 0, 0], [0, 1e6, 0, 0, 0, 0], [0, 0, 1e4, 0, 0, 0],
+                           [0, 0, 0, 4e-6, 0, 0], [0, 0, 0, 0, 2.5e-5, 0], [0, 0, 0, 0, 0, 4e-6]],
+            "radius_m": 15,
+            "risk_threshold": 1e-4,
+            "checks": {"count": 143, "start_s": GEO_TC - 21600, "end_s": GEO_TC + 21600},
+            "cost_budget": 2.5,
+            "verification": {"monte_carlo_samples": 100000, "seed": 1},
+        }, gap=0.01))
+
+
 def serra(name, description, a_m, e, nu0, nuf, z0, vz0, zf, vzf, intervals=1000):
     # Serra's out-of-plane axis is y = -h; ours is z = +h: z = -y_Serra (costs unchanged,
     # impulse signs flipped).
@@ -249,6 +305,73 @@ def serra_cases():
         **di_common))
 
 
+def serra_avoidance(case, budget_m_s, time_limit):
+    """Serra 2015 ch. 4 risk selection (Problem 10) from data/reference/serra_avoidance.json."""
+    rs = case["risk_selection"]
+    src = "data/reference/serra_avoidance.json"
+    covariance = [list(row) for row in case["covariance_serra"]]
+    fix = case.get("covariance_correction")
+    correction = ""
+    if fix:
+        i, j = fix["entry"]
+        covariance[i][j] = covariance[j][i] = fix["used"]
+        correction = (f"The printed cov({fix['entry_names'][0]}, {fix['entry_names'][1]}) = "
+                      f"{fix['printed']} has the wrong sign (evidence in the reference file): "
+                      f"{fix['used']} is used. ")
+    name = "serra_avoidance_" + case["example"]
+    ex = case["example"][-1]
+    return {
+        "name": name,
+        "description": (
+            f"Serra 2015, ch. 4 example {ex} ({case['title']}, [S {case['lines']}]): impulsive "
+            f"collision avoidance by risk selection (Problem 10), {rs['N']} impulse dates on "
+            f"[{case['t_lo_s']}, {case['t_hi_s']}] s, {rs['N_checks']} check times, cube of R = "
+            f"{case['radius_m']} m, eps = 1e-4 over the encounter (eps' = 1e-4 s / duration), return "
+            f"to the nominal orbit. Published: {rs['cost_mm_s']} mm/s ({rs['solver']}, "
+            f"{rs['cpu_s']} s), unmanoeuvred maximum risk {case['unmanoeuvred_max_risk']}. " + correction +
+            f"The covariance {case['equation_covariance']} is not positive semi-definite as printed: "
+            f"its negative eigenvalue is clipped to zero (velocities scaled by 1/n). The cost budget "
+            f"{budget_m_s} m/s bounds the big-M. " + src),
+        "model": {"type": "yamanaka_ankersen", "mean_motion_rad_s": case["mean_motion_rad_s"],
+                  "eccentricity": case["eccentricity"], "true_anomaly_rad": case["nu0_rad"],
+                  "true_anomaly_time_s": case["t_lo_s"]},
+        "spacecraft": {"mass_kg": 1000, "isp_s": 300, "thrust_n": 10,
+                       "thrusters": {"preset": "ideal6"}},
+        "initial_state": {"hcw_position_m": [0, 0, 0], "hcw_velocity_m_s": [0, 0, 0]},
+        "horizon": {"start_s": case["t_lo_s"], "duration_s": case["t_hi_s"] - case["t_lo_s"],
+                    "num_intervals": rs["N"] - 1},
+        "input_mode": "impulsive",
+        "terminal": {"type": "fixed_state", "hcw_position_m": [0, 0, 0],
+                     "hcw_velocity_m_s": [0, 0, 0]},
+        "objective": "l1",
+        "discretisation": {"scheme": "exact_zoh"},
+        "conjunction": {
+            "frame": "serra_lvlh",
+            "secondary": {"time_s": case["t_lo_s"], "position_m": case["secondary_position_m_serra"],
+                          "velocity_m_s": case["secondary_velocity_m_s_serra"]},
+            "covariance": covariance,
+            "covariance_repair": "clip_eigenvalues",
+            "radius_m": case["radius_m"],
+            "risk_threshold": 1e-4,
+            "checks": {"count": rs["N_checks"]},
+            "polytope": "cube",
+            "cost_budget": budget_m_s,
+            "verification": {"monte_carlo_samples": 100000, "seed": 1, "nonlinear": True},
+        },
+        "solver": {"time_limit_s": time_limit, "relative_gap": 1e-4, "threads": 1},
+    }
+
+
+def serra_avoidance_cases():
+    path = os.path.join(os.path.dirname(OUT), "reference", "serra_avoidance.json")
+    with open(path) as f:
+        ref = json.load(f)
+    settings = {"ex1": (0.01, 3600), "ex2": (0.005, 3600)}  # cost budget (m/s), time limit (s)
+    for case in ref["cases"]:
+        budget, limit = settings[case["example"]]
+        write("serra_avoidance_" + case["example"], serra_avoidance(case, budget, limit))
+
+
 def main():
     parser = argparse.ArgumentParser(
         description="Rewrite the generated scenario files of data/scenarios/ (thesis Tables 4.1 "
@@ -262,6 +385,8 @@ def main():
     thesis_tables()
     geo_weeks()
     serra_cases()
+    serra_avoidance_cases()
+    geo_conjunction_cases()
     if CHECK_ONLY:
         for path in DIFFERENT:
             print("differs:", path)

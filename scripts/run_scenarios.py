@@ -8,7 +8,8 @@ file (status, objective, gap, published figure, times, check verdict).
 Without FILES, every data/scenarios/*.json is run. --time-limit overrides the
 scenarios' solver limits; --wall-timeout kills a run that overruns (CBC does
 not always honour its limit while solving the root LP). Published figures come
-from data/reference/*.json via each file's name.
+from data/reference/*.json via each file's name. The check column adds the
+conjunction verification (risk and Monte Carlo) of scenarios that have one.
 """
 import argparse
 import glob
@@ -34,6 +35,10 @@ def published():
     for case in s["cases"]:
         name = os.path.splitext(os.path.basename(case["scenario_file"]))[0]
         ref[name] = case.get("optimum_m_s", case.get("grid_optimum_derived", case.get("optimum")))
+    c = json.load(open(os.path.join(ROOT, "data/reference/serra_avoidance.json")))
+    for case in c["cases"]:  # Serra 2015 Tables 4.2 and 4.5, mm/s
+        name = os.path.splitext(os.path.basename(case["scenario_file"]))[0]
+        ref[name] = case["risk_selection"]["cost_mm_s"] * 1e-3
     return ref
 
 
@@ -76,6 +81,9 @@ def main():
         verdict = ("pass" if chk.get("passed") else "FAIL") if chk else "-"
         if chk and s.get("model") == "geo" and chk.get("max_window_violation_nonlinear_deg") is not None:
             verdict += " (nl %.2g deg)" % chk["max_window_violation_nonlinear_deg"]
+        conj = (s.get("conjunction") or {}).get("verification")
+        if conj:  # computed risk and Monte Carlo of the "conjunction" section
+            verdict += "; conjunction " + ("pass" if conj.get("passed") else "FAIL")
         n = s.get("n_impulses", s.get("n_burns"))
         print("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             name, rc, s["status"], num(s.get("objective")), ref.get(name, ""),

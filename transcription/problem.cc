@@ -176,6 +176,42 @@ bool ScheduleProblem::IsValid(std::string* error) const {
   if (std::isnan(max_impulse_m_s) || max_impulse_m_s <= 0.0) {
     return Fail(error, "problem.max_impulse_m_s must be > 0, got " + Num(max_impulse_m_s));
   }
+  if (!max_impulse_per_thruster_m_s.empty()) {
+    if (static_cast<int>(max_impulse_per_thruster_m_s.size()) != m) {
+      return Fail(error, "problem.max_impulse_per_thruster_m_s needs " + std::to_string(m) +
+                             " entries (one per thruster), got " +
+                             std::to_string(max_impulse_per_thruster_m_s.size()));
+    }
+    for (double v : max_impulse_per_thruster_m_s) {
+      if (std::isnan(v) || v < 0.0) {
+        return Fail(error, "problem.max_impulse_per_thruster_m_s entries must be >= 0, got " + Num(v));
+      }
+    }
+  }
+  if (conjunction) {
+    if (!conjunction->IsValid(error)) return false;
+    if (n != 6) {
+      return Fail(error, "conjunction: needs a model with the 6-component relative state, got " +
+                             std::to_string(n) + " states");
+    }
+    const double t0 = grid.front(), tf = grid.back();
+    const double tol = 1e-9 * (tf - t0);
+    auto inside = [&](double t) { return std::isnan(t) || (t >= t0 - tol && t <= tf + tol); };
+    if (!inside(conjunction->state_time_s)) {
+      return Fail(error, "conjunction.state_time_s " + Num(conjunction->state_time_s) +
+                             " s is outside the horizon [" + Num(t0) + ", " + Num(tf) + "] s");
+    }
+    if (!inside(conjunction->check_start_s) || !inside(conjunction->check_end_s)) {
+      return Fail(error, "conjunction check window [" + Num(conjunction->check_start_s) + ", " +
+                             Num(conjunction->check_end_s) + "] s is not inside the horizon [" +
+                             Num(t0) + ", " + Num(tf) + "] s");
+    }
+    const double a = std::isnan(conjunction->check_start_s) ? t0 : conjunction->check_start_s;
+    const double b = std::isnan(conjunction->check_end_s) ? tf : conjunction->check_end_s;
+    if (!(b > a)) {
+      return Fail(error, "conjunction check window [" + Num(a) + ", " + Num(b) + "] s is empty");
+    }
+  }
   return true;
 }
 

@@ -20,6 +20,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,7 @@
 
 #include "dynamics/linear_model.h"
 #include "dynamics/thrusters.h"
+#include "transcription/conjunction.h"
 #include "transcription/operations.h"
 
 namespace thrustsched::transcription {
@@ -110,6 +112,19 @@ struct ScheduleProblem {
   InputMode input_mode = InputMode::kOnOff;
   /// Impulsive mode: largest delta-v per thruster and node (m/s).
   double max_impulse_m_s = std::numeric_limits<double>::infinity();
+  /// Impulsive mode, optional: per-thruster bounds (m/s, one per thruster),
+  /// e.g. per-axis bounds with the ideal six thrusters; overrides
+  /// max_impulse_m_s where given. Empty: max_impulse_m_s for all.
+  std::vector<double> max_impulse_per_thruster_m_s;
+  /// A secondary object to keep out of (chance-constrained keep-out rows,
+  /// transcription/keep_out.h); sparse formulation only.
+  std::optional<ConjunctionSpec> conjunction;
+
+  /// Upper bound of thruster i's impulses (impulsive mode, m/s).
+  double MaxImpulse(int thruster) const {
+    return max_impulse_per_thruster_m_s.empty() ? max_impulse_m_s
+                                                : max_impulse_per_thruster_m_s[thruster];
+  }
 
   int num_intervals() const { return static_cast<int>(grid.size()) - 1; }
   double horizon_s() const { return grid.back() - grid.front(); }

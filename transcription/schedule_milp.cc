@@ -6,10 +6,14 @@
 #include <limits>
 #include <stdexcept>
 
+#include "transcription/internal/row_buffer.h"
+#include "transcription/partial_maps.h"
 #include "transcription/terminal_sets.h"
 
 namespace thrustsched::transcription {
 namespace {
+
+using internal::RowBuffer;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kG0 = 9.80665;  // m/s^2, standard gravity for Isp
@@ -17,67 +21,6 @@ constexpr double kG0 = 9.80665;  // m/s^2, standard gravity for Isp
 double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
-
-// Accumulates rows for one bulk AddRows call, each row divided by its
-// largest coefficient (scaling) and cleaned of negligible coefficients.
-class RowBuffer {
- public:
-  // Coefficients below this fraction of their row's largest are dropped.
-  // They are roundoff or physically negligible couplings (a radial thrust on
-  // the inclination, a 1e-9 element of a 5-min transition matrix: over a
-  // week of 2016 steps they move the scaled state by < 2016 x 1e-8 = 2e-5),
-  // but CBC 2.10 on GEO weeks with coefficients down to 1e-14 "proved"
-  // feasible models infeasible (a knapsack column cut, or strong branching on
-  // the ill-conditioned root LP); without those below 1e-8 it solves them.
-  // The independent checker re-propagates the exact model, so any effect of
-  // the dropped terms would show there.
-  static constexpr double kDropRelative = 1e-8;
-
-  explicit RowBuffer(bool scale) : scale_(scale) {}
-
-  void Begin() { current_.clear(); }
-  void Coef(int column, double value) {
-    if (value != 0.0) current_.push_back({0, column, value});
-  }
-  // Ends the row lo <= sum <= hi.
-  void End(double lo, double hi, std::string name) {
-    double big = 0.0;
-    for (const auto& t : current_) big = std::max(big, std::abs(t.value));
-    double factor = 1.0;
-    if (scale_ && big > 0.0) factor = 1.0 / big;
-    const int row = static_cast<int>(lower_.size());
-    for (const auto& t : current_) {
-      if (std::abs(t.value) <= kDropRelative * big) continue;
-      triplets_.push_back({row, t.column, t.value * factor});
-    }
-    lower_.push_back(std::isfinite(lo) ? lo * factor : lo);
-    upper_.push_back(std::isfinite(hi) ? hi * factor : hi);
-    names_.push_back(std::move(name));
-  }
-  void Flush(milp::Model* model) {
-    if (lower_.empty()) return;
-    const Eigen::Map<const Eigen::VectorXd> lo(lower_.data(), lower_.size());
-    const Eigen::Map<const Eigen::VectorXd> hi(upper_.data(), upper_.size());
-    model->AddRows(triplets_, lo, hi, "", std::move(names_));
-    triplets_.clear();
-    lower_.clear();
-    upper_.clear();
-    names_.clear();
-  }
-
- private:
-  bool scale_;
-  std::vector<milp::RowTriplet> current_, triplets_;
-  std::vector<double> lower_, upper_;
-  std::vector<std::string> names_;
-};
-
-// Map from interval start t_j to an inter-sample point: x(t) = phi x_j + gamma u_j + d.
-struct Partial {
-  double t;
-  Eigen::MatrixXd phi, gamma;
-  Eigen::VectorXd d;
-};
 
 std::string Tag(const char* what, int a, int b) {
   return std::string(what) + "_" + std::to_string(a) + "_" + std::to_string(b);
@@ -255,6 +198,7 @@ void ScheduleMilp::Build() {
     BuildCondensed();
   }
   AddObjective();
+  if (problem_.conjunction) AddConjunction();
   lp_ = model_.ToLpData();
   objective_step_ = ObjectiveStep(lp_);
   stats_.build_seconds = Seconds(t0);
@@ -266,34 +210,20 @@ void ScheduleMilp::Build() {
 
 namespace {
 
-// Partial maps from each interval start to its inter-sample points, from a
-// discretisation of the refined grid with the same scheme.
-std::vector<std::vector<Partial>> InterSampleMaps(const ScheduleProblem& p,
-                                                  const dynamics::DiscretisationOptions& opt) {
+// Partial maps from each interval start to its inter-sample points (the
+// window's intersample_points equally spaced inside each interval).
+std::vector<std::vector<PartialMap>> InterSampleMaps(const ScheduleProblem& p,
+                                                     const dynamics::DiscretisationOptions& opt) {
   const int r = p.window.intersample_points;
-  std::vector<std::vector<Partial>> out(p.num_intervals());
+  std::vector<std::vector<PartialMap>> out(p.num_intervals());
   if (r <= 0) return out;
-  std::vector<double> fine;
+  std::vector<double> times;
   for (int j = 0; j < p.num_intervals(); ++j) {
     const double h = p.grid[j + 1] - p.grid[j];
-    for (int k = 0; k <= r; ++k) fine.push_back(p.grid[j] + h * k / (r + 1));
+    for (int k = 1; k <= r; ++k) times.push_back(p.grid[j] + h * k / (r + 1));
   }
-  fine.push_back(p.grid.back());
-  const dynamics::DiscreteModel d =
-      dynamics::Discretise(*p.model, p.thrusters.AccelerationMatrix(), fine, opt);
-  for (int j = 0; j < p.num_intervals(); ++j) {
-    const int base = j * (r + 1);
-    Partial acc{0.0, d.phi[base], d.gamma[base], d.drift[base]};
-    for (int k = 1; k <= r; ++k) {
-      acc.t = fine[base + k];
-      out[j].push_back(acc);
-      if (k < r) {
-        const int s = base + k;
-        acc.gamma = d.phi[s] * acc.gamma + d.gamma[s];
-        acc.d = d.phi[s] * acc.d + d.drift[s];
-        acc.phi = d.phi[s] * acc.phi;
-      }
-    }
+  for (PartialMap& q : PartialMaps(*p.model, p.thrusters.AccelerationMatrix(), p.grid, times, opt)) {
+    out[q.interval].push_back(std::move(q));
   }
   return out;
 }
@@ -349,7 +279,7 @@ void ScheduleMilp::BuildSparse() {
     for (int i = 0; i < m; ++i) directions.col(i) = p.thrusters.thruster(i).direction;
     dv_.assign(m, {});
     for (int i = 0; i < m; ++i) {
-      const double hi = p.thrusters.thruster(i).enabled ? p.max_impulse_m_s : 0.0;
+      const double hi = p.thrusters.thruster(i).enabled ? p.MaxImpulse(i) : 0.0;
       for (int j = 0; j <= nn; ++j) {
         dv_[i].push_back(model_.AddContinuous(0.0, hi, Tag("dv", i, j)));
       }
@@ -437,12 +367,12 @@ void ScheduleMilp::BuildSparse() {
       }
       if (j == nn || impulsive) continue;
       for (size_t s = 0; s < partials[j].size(); ++s) {
-        const Partial& q = partials[j][s];
+        const PartialMap& q = partials[j][s];
         if (!WindowActive(p, j + 1, q.t)) continue;
         const Eigen::MatrixXd c = model.EvaluateOutput(q.t).c;
         for (size_t k = 0; k < p.window.outputs.size(); ++k) {
           const int o = p.window.outputs[k];
-          add_window_row(c.row(o) * q.phi, j, c.row(o) * q.gamma, j, c.row(o).dot(q.d),
+          add_window_row(c.row(o) * q.phi, j, c.row(o) * q.gamma, j, c.row(o).dot(q.drift),
                          static_cast<int>(k), j, static_cast<int>(s) + 1);
         }
       }
@@ -542,7 +472,7 @@ void ScheduleMilp::BuildCondensed() {
     if (j == nn) break;
     if (p.window.enabled()) {
       for (size_t s = 0; s < partials[j].size(); ++s) {
-        const Partial& q = partials[j][s];
+        const PartialMap& q = partials[j][s];
         if (!WindowActive(p, j + 1, q.t)) continue;
         const Eigen::MatrixXd c = model.EvaluateOutput(q.t).c;
         const Eigen::MatrixXd qg = gamma_free(q.gamma, j);
@@ -553,7 +483,7 @@ void ScheduleMilp::BuildCondensed() {
           const Eigen::RowVectorXd cphi = c.row(o) * q.phi;
           coef.head(used) = cphi * g.leftCols(used);
           coef.tail(here) = c.row(o) * qg;
-          add_window(coef, used + here, cphi.dot(base) + c.row(o).dot(q.d), static_cast<int>(k), j,
+          add_window(coef, used + here, cphi.dot(base) + c.row(o).dot(q.drift), static_cast<int>(k), j,
                      static_cast<int>(s) + 1);
         }
       }
@@ -587,6 +517,21 @@ void ScheduleMilp::BuildCondensed() {
     }
   }
   rows.Flush(&model_);
+}
+
+void ScheduleMilp::AddConjunction() {
+  if (options_.formulation != Formulation::kSparse) {
+    throw std::invalid_argument("conjunction: the keep-out rows need the sparse formulation");
+  }
+  KeepOutColumns cols;
+  cols.state = state_;
+  cols.scale = scale_;
+  cols.impulsive = problem_.input_mode == InputMode::kImpulsive;
+  cols.thrust = cols.impulsive ? dv_ : encoding_.on;
+  keep_out_ = AddKeepOut(problem_, discrete_, options_.discretisation, cols, &model_,
+                         options_.keep_out_bound_solver);
+  reasons_.insert(reasons_.end(), keep_out_->infeasibility_reasons.begin(),
+                  keep_out_->infeasibility_reasons.end());
 }
 
 void ScheduleMilp::AddObjective() {
@@ -749,6 +694,7 @@ Eigen::VectorXd ScheduleMilp::StartFromPattern(const Eigen::MatrixXi& pattern) c
       x[sl.var.index()] = need;
     }
   }
+  if (keep_out_) CompleteKeepOut(lp_, *keep_out_, &x);
   return x;
 }
 

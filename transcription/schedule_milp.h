@@ -24,6 +24,7 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_SCHEDULE_MILP_H_
 #define THRUSTSCHED_TRANSCRIPTION_SCHEDULE_MILP_H_
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +33,9 @@
 
 #include "dynamics/discretisation.h"
 #include "milp/model.h"
+#include "milp/solver.h"
 #include "transcription/encodings.h"
+#include "transcription/keep_out.h"
 #include "transcription/problem.h"
 
 namespace thrustsched::transcription {
@@ -57,6 +60,10 @@ struct BuildOptions {
   /// milp::RemoveFixedColumns, a MILP of a few thousand nonzeros per free
   /// slot instead of a week's). Empty: every slot free.
   Eigen::MatrixXi free_slots;
+  /// Conjunctions only: if set, the keep-out big-M and pruning also use
+  /// small LPs with the terminal constraint (transcription/keep_out.h),
+  /// solved with this solver during the build. Not owned.
+  const milp::Solver* keep_out_bound_solver = nullptr;
 };
 
 struct BuildStats {
@@ -121,6 +128,9 @@ class ScheduleMilp {
   /// feasible objective values then differ by whole steps, which lets the
   /// solver prove optimality (milp::SolveOptions::objective_step). Else 0.
   double objective_step() const { return objective_step_; }
+  /// The keep-out rows of problem().conjunction (sizes, big-M range, budget);
+  /// empty without a conjunction.
+  const std::optional<KeepOutStats>& keep_out() const { return keep_out_; }
 
   /// Adds rows/columns through `edit`, then refreezes lp().
   template <typename Edit>
@@ -153,6 +163,7 @@ class ScheduleMilp {
   void BuildSparse();
   void BuildCondensed();
   void AddObjective();
+  void AddConjunction();
   std::vector<Eigen::VectorXd> PropagateDiscrete(const Eigen::MatrixXi& pattern,
                                                  const Eigen::MatrixXd& impulses) const;
 
@@ -165,6 +176,7 @@ class ScheduleMilp {
   BuildStats stats_;
   std::vector<std::string> reasons_;
   double objective_step_ = 0.0;
+  std::optional<KeepOutStats> keep_out_;
   Eigen::VectorXd scale_;                          // state scale S (ones if !scale)
   std::vector<std::vector<milp::Variable>> state_;  // sparse: [node][component], scaled
   std::vector<std::vector<milp::Variable>> dv_;     // impulsive: [thruster][node]

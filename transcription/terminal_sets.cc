@@ -116,7 +116,8 @@ bool InExactStationKeepingSet(const SkSetOptions& o, const Eigen::Matrix<double,
 
 AffineMap HcwCoordinates(const dynamics::LinearModel& model, double t) {
   AffineMap m;
-  if (dynamic_cast<const dynamics::HcwModel*>(&model) != nullptr) {
+  if (dynamic_cast<const dynamics::HcwModel*>(&model) != nullptr ||
+      dynamic_cast<const dynamics::YamanakaAnkersenModel*>(&model) != nullptr) {
     m.map = Eigen::MatrixXd::Identity(6, 6);
     m.offset = Eigen::VectorXd::Zero(6);
     return m;
@@ -141,7 +142,7 @@ AffineMap HcwCoordinates(const dynamics::LinearModel& model, double t) {
     m.offset << 0.0, 0.0, 0.0, rate0(0), rho * rate0(2), rho * rate0(1);
     return m;
   }
-  throw std::invalid_argument("terminal station-keeping sets need an HCW or GEO model, got " +
+  throw std::invalid_argument("local HCW coordinates need an HCW, Yamanaka-Ankersen or GEO model, got " +
                               std::string(model.name()));
 }
 

@@ -70,7 +70,8 @@ struct AffineMap {
   Eigen::MatrixXd map;     // 6 x n
   Eigen::VectorXd offset;  // 6
 };
-/// Supported models: dynamics::HcwModel (identity) and
+/// Supported models: dynamics::HcwModel and dynamics::YamanakaAnkersenModel
+/// (identity: their state is already these coordinates) and
 /// dynamics::GeoLinearModel (outputs and rates, input-free rate).
 /// @throws std::invalid_argument for other models.
 AffineMap HcwCoordinates(const dynamics::LinearModel& model, double t);

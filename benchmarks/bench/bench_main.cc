@@ -37,6 +37,7 @@ const char* KindName(bench::CaseKind k) {
     case bench::CaseKind::kDiscretise: return "discretise";
     case bench::CaseKind::kBuild: return "build";
     case bench::CaseKind::kSolve: return "solve";
+    case bench::CaseKind::kConjunction: return "conjunction";
   }
   return "?";
 }

@@ -36,12 +36,14 @@ inline constexpr const char* kSectionScalingHorizon = "scaling_horizon";
 inline constexpr const char* kSectionScalingStep = "scaling_step";
 inline constexpr const char* kSectionOperations = "operations";
 inline constexpr const char* kSectionSolverSpeed = "solver_speed";
+inline constexpr const char* kSectionCollisionAvoidance = "collision_avoidance";
 
 enum class CaseKind {
   kAccuracy,    // every scheme vs the reference on each step of `accuracy_steps_s`
   kDiscretise,  // discretise only (and the error vs the reference)
   kBuild,       // discretise + build (sizes, build time, memory)
   kSolve,       // + LP relaxation + MILP solve + independent check
+  kConjunction, // collision avoidance: SolveConjunction + verification (conjunction_case.h)
 };
 
 struct CaseSpec {

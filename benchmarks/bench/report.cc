@@ -22,6 +22,7 @@
 #include "app/plots.h"
 #include "benchmarks/bench/accuracy.h"
 #include "benchmarks/bench/matrix.h"
+#include "benchmarks/bench/report_conjunction.h"
 #include "benchmarks/bench/report_format.h"
 #include "benchmarks/bench/report_solver.h"
 #include "milp/cbc_solver.h"
@@ -214,6 +215,7 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
         "[3. Formulations and encodings](#3-formulations-and-encodings) · "
         "[4. Scaling](#4-scaling) · [5. Operational constraints](#5-operational-constraints) · "
         "[6. One year](#6-one-year-of-station-keeping-thrustsched-simulate) · "
+        "[7. Collision avoidance](#7-collision-avoidance-serra-2015-ch-4) · "
         "[Method and definitions](#method-and-definitions) · "
         "[Not run or skipped](#not-run-or-skipped) · [Columns](#columns-of-resultscsv)\n\n";
 }
@@ -1339,6 +1341,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteScaling(md, idx, &plot);
   WriteOperations(md, idx);
   WriteYear(md, meta);
+  WriteCollisionAvoidance(md, rows);
   WriteSolverSpeed(md, rows);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);

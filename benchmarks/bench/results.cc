@@ -36,8 +36,11 @@ const std::vector<std::string>& ResultColumns() {
           "max_window_violation_nodes", "window_unit", "terminal_ok", "terminal_error",
           "published", "published_source", "ratio", "ext_cbc_status", "ext_cbc_objective",
           "ext_cbc_s", "ext_glpsol_status", "ext_glpsol_objective", "ext_glpsol_s",
-          "wall_s", "cpu_s", "load_1min", "exit", "solver_path", "search_steps", "target_1pct_s", "target_opt_s", "target_gap",
-          "target_gap_s", "note"}) {
+          "published_time_s", "start_objective", "budget_rounds", "keep_out_binaries",
+          "max_risk", "max_risk_unmanoeuvred", "published_risk_unmanoeuvred", "mc_samples",
+          "mc_collisions_linear", "mc_collisions_nonlinear", "mc_min_distance_m", "verify_s",
+          "wall_s", "cpu_s", "load_1min", "exit", "solver_path", "search_steps", "target_1pct_s",
+          "target_opt_s", "target_gap", "target_gap_s", "note"}) {
       c.push_back(name);
     }
     return c;

@@ -23,6 +23,8 @@
 #include "app/json_reader.h"
 #include "app/scenario.h"
 #include "benchmarks/bench/accuracy.h"
+#include "benchmarks/bench/case_common.h"
+#include "benchmarks/bench/conjunction_case.h"
 #include "dynamics/discretisation.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
@@ -75,43 +77,6 @@ std::string ReadFile(const std::string& path) {
 
 std::string RunFileStem(const CaseSpec& spec, int repeat, const RunContext& ctx) {
   return ctx.runs_dir + "/" + spec.id + "-r" + std::to_string(repeat);
-}
-
-app::Scenario LoadPatched(const CaseSpec& spec, const nlohmann::json& extra = {}) {
-  nlohmann::json j = app::ParseJsonText(ReadFile(spec.scenario_path), spec.scenario_path);
-  j = MergePatch(j, spec.patch);
-  if (!extra.is_null()) j = MergePatch(j, extra);
-  app::ScenarioParseOptions po;
-  po.source = spec.scenario_path;
-  app::Scenario s = app::ParseScenario(j, po);
-  s.path = spec.scenario_path;
-  return s;
-}
-
-Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
-  Row r;
-  r.Set("section", spec.section);
-  r.Set("case_id", spec.id);
-  r.Set("repeat", repeat);
-  r.Set("variant", spec.variant);
-  r.Set("scenario", spec.scenario);
-  r.Set("target_1pct_s", spec.target_1pct_s);  // NaN (not a target): empty cells
-  r.Set("target_opt_s", spec.target_opt_s);
-  r.Set("target_gap", spec.target_gap);
-  r.Set("target_gap_s", spec.target_gap_s);
-  r.Set("model", std::string(app::ToString(s.model_type)));
-  r.Set("scheme", std::string(dynamics::ToString(s.build.discretisation.scheme)));
-  r.Set("formulation", std::string(transcription::ToString(s.build.formulation)));
-  r.Set("encoding", std::string(transcription::ToString(s.build.encoding)));
-  r.Set("step_s", s.step_s);
-  r.Set("horizon_s", s.problem.horizon_s());
-  r.Set("n_thrusters", s.problem.thrusters.size());
-  if (std::isfinite(spec.published)) {
-    r.Set("published", spec.published);
-    r.Set("published_source", spec.published_source);
-  }
-  if (!spec.note.empty()) r.Set("note", spec.note);
-  return r;
 }
 
 // A fixed on-off test pattern representable on every grid of the accuracy
@@ -503,6 +468,8 @@ Row FailureRow(const CaseSpec& spec, int repeat, const std::string& status,
 }
 
 double DeadlineSeconds(const CaseSpec& spec) {
+  // A conjunction case: rounds within the time limit, then the Monte Carlo.
+  if (spec.kind == CaseKind::kConjunction) return 600.0 + 1.5 * spec.time_limit_s;
   if (spec.kind != CaseKind::kSolve) return 1800.0;
   double d = 300.0 + 2.0 * spec.time_limit_s;  // LP relaxation + MILP, each limited
   if (spec.external) d += 2.0 * (spec.external_time_limit_s + 60.0);
@@ -511,6 +478,43 @@ double DeadlineSeconds(const CaseSpec& spec) {
 
 }  // namespace
 
+app::Scenario LoadPatched(const CaseSpec& spec, const nlohmann::json& extra) {
+  nlohmann::json j = app::ParseJsonText(ReadFile(spec.scenario_path), spec.scenario_path);
+  j = MergePatch(j, spec.patch);
+  if (!extra.is_null()) j = MergePatch(j, extra);
+  app::ScenarioParseOptions po;
+  po.source = spec.scenario_path;
+  app::Scenario s = app::ParseScenario(j, po);
+  s.path = spec.scenario_path;
+  return s;
+}
+
+Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
+  Row r;
+  r.Set("section", spec.section);
+  r.Set("case_id", spec.id);
+  r.Set("repeat", repeat);
+  r.Set("variant", spec.variant);
+  r.Set("scenario", spec.scenario);
+  r.Set("target_1pct_s", spec.target_1pct_s);  // NaN (not a target): empty cells
+  r.Set("target_opt_s", spec.target_opt_s);
+  r.Set("target_gap", spec.target_gap);
+  r.Set("target_gap_s", spec.target_gap_s);
+  r.Set("model", std::string(app::ToString(s.model_type)));
+  r.Set("scheme", std::string(dynamics::ToString(s.build.discretisation.scheme)));
+  r.Set("formulation", std::string(transcription::ToString(s.build.formulation)));
+  r.Set("encoding", std::string(transcription::ToString(s.build.encoding)));
+  r.Set("step_s", s.step_s);
+  r.Set("horizon_s", s.problem.horizon_s());
+  r.Set("n_thrusters", s.problem.thrusters.size());
+  if (std::isfinite(spec.published)) {
+    r.Set("published", spec.published);
+    r.Set("published_source", spec.published_source);
+  }
+  if (!spec.note.empty()) r.Set("note", spec.note);
+  return r;
+}
+
 bool ProgramAvailable(const std::string& program) {
   const std::string cmd = "command -v '" + program + "' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
@@ -518,6 +522,7 @@ bool ProgramAvailable(const std::string& program) {
 
 std::vector<Row> ExecuteCase(const CaseSpec& spec, int repeat, const RunContext& context) {
   if (spec.kind == CaseKind::kAccuracy) return ExecuteAccuracy(spec, repeat);
+  if (spec.kind == CaseKind::kConjunction) return ExecuteConjunction(spec, repeat, context);
   return ExecuteMilp(spec, repeat, context);
 }
 

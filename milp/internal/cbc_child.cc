@@ -23,6 +23,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "CoinError.hpp"
 #include "milp/internal/pipe_io.h"
 
 namespace thrustsched::milp::internal {
@@ -147,6 +148,10 @@ double StopMargin(const DriverRequest& request, double grace_s) {
     own.clock.set_interrupt(nullptr);  // the parent's flag does not change here
     own.clock.ShortenDeadline(StopMargin(request, grace_s));
     outcome = RunDriverHere(own, &listener);
+  } catch (const CoinError& e) {  // not a std::exception
+    outcome.status = -1;
+    outcome.detail = "CBC driver failed: CoinError " + e.className() + "::" + e.methodName() +
+                     ": " + e.message();
   } catch (const std::exception& e) {
     outcome.status = -1;
     outcome.detail = std::string("CBC driver failed: ") + e.what();

@@ -1,0 +1,296 @@
+#include "transcription/conjunction_solve.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace thrustsched::transcription {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// At every check with a disjunction: the face the thrust-free path satisfies
+// best if it satisfies one; otherwise `face` if the check has it (any face
+// if face < 0), else the face the free path misses least.
+int PickFace(const KeepOutGroup& g, int face) {
+  int pick = static_cast<int>(std::max_element(g.free_slack_m.begin(), g.free_slack_m.end()) -
+                              g.free_slack_m.begin());
+  if (face < 0 || g.free_slack_m[pick] >= 0.0) return pick;
+  for (size_t q = 0; q < g.faces.size(); ++q) {
+    if (g.faces[q] == face) return static_cast<int>(q);
+  }
+  return pick;
+}
+
+std::string FaceLabel(int face, int num_faces) {
+  if (face < 0) return "least-missed face at every check";
+  static const char* kCube[] = {"+R", "-R", "+T", "-T", "+N", "-N"};
+  const std::string name = num_faces == 6 ? kCube[face] : "face " + std::to_string(face);
+  return name + " face wherever the thrust-free path satisfies none";
+}
+
+// Fixes every disjunction of `lp` to the face `pick(group)` (w = 0), the others relaxed.
+template <typename Pick>
+void FixFaces(const KeepOutStats& ko, Pick pick, milp::LpData* lp) {
+  for (const KeepOutGroup& g : ko.groups) {
+    if (g.binaries.empty() || g.binaries[0] < 0) continue;
+    const int chosen = pick(g);
+    for (size_t q = 0; q < g.binaries.size(); ++q) {
+      const double v = static_cast<int>(q) == chosen ? 0.0 : 1.0;
+      lp->col_lower[g.binaries[q]] = lp->col_upper[g.binaries[q]] = v;
+    }
+  }
+}
+
+// The face of `g` whose row the row activities `act` (keep-out binaries at
+// 0) satisfy best, in metres of slack.
+int LeastMissedFace(const KeepOutGroup& g, const Eigen::VectorXd& act, const milp::LpData& lp) {
+  int best = 0;
+  double best_slack = -kInf;
+  for (size_t q = 0; q < g.rows.size(); ++q) {
+    const double slack_m = (act[g.rows[q]] - lp.row_lower[g.rows[q]]) / g.row_scale[q];
+    if (slack_m > best_slack) best_slack = slack_m, best = static_cast<int>(q);
+  }
+  return best;
+}
+
+// On-off mode: the plan of the problem without its conjunction, then the
+// same MILP with every disjunction fixed to the face that plan misses least
+// (its station keeping is kept and bent just enough). Each solve gets
+// `share` of the time limit (300 s when unlimited).
+ConjunctionStart RepairedPlanStart(const ScheduleMilp& m, const milp::Solver& solver,
+                                   const milp::SolveOptions& base, double share) {
+  ConjunctionStart out;
+  const double limit = std::isfinite(base.time_limit_s) ? share * base.time_limit_s : 300.0;
+  milp::SolveOptions o = base;
+  o.initial_solution.reset();
+  o.progress = nullptr;
+  o.time_limit_s = limit;
+  ScheduleProblem plain = m.problem();
+  plain.conjunction.reset();
+  const ScheduleMilp without(plain, m.discrete(), m.options());
+  o.objective_step = without.objective_step();
+  const milp::SolveResult r0 = solver.Solve(without.lp(), o);
+  if (!r0.has_solution()) return out;
+  out.lower_bound = r0.best_bound;
+  const KeepOutStats& ko = *m.keep_out();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(m.lp().num_cols());
+  x.head(ko.first_binary_column) = r0.x.head(ko.first_binary_column);
+  const Eigen::VectorXd act = m.lp().a_matrix * x;  // keep-out binaries at 0
+  milp::LpData lp = m.lp();
+  FixFaces(ko, [&](const KeepOutGroup& g) { return LeastMissedFace(g, act, lp); }, &lp);
+  o.objective_step = m.objective_step();
+  const milp::SolveResult r = solver.Solve(lp, o);
+  if (!r.has_solution()) return out;
+  out.objective = r.objective;
+  out.x = r.x;
+  out.label = "the plan without the conjunction, repaired at its least-missed faces";
+  return out;
+}
+
+}  // namespace
+
+ConjunctionStart FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solver,
+                                const milp::SolveOptions& base) {
+  if (!m.keep_out()) throw std::invalid_argument("FixedFaceStart: the problem has no conjunction");
+  ConjunctionStart best;
+  if (m.problem().input_mode != InputMode::kImpulsive) return RepairedPlanStart(m, solver, base, 0.25);
+  const KeepOutStats& ko = *m.keep_out();
+  const int num_faces = m.problem().conjunction->EffectivePolytope().size();
+  const Clock::time_point t0 = Clock::now();
+  const double time_left = base.time_limit_s;
+  for (int face = -1; face < num_faces; ++face) {
+    milp::LpData lp = m.lp();
+    FixFaces(ko, [face](const KeepOutGroup& g) { return PickFace(g, face); }, &lp);
+    milp::SolveOptions o = base;
+    o.initial_solution.reset();
+    o.progress = nullptr;
+    o.time_limit_s = std::max(0.0, time_left - Since(t0));
+    const milp::LpRelaxationResult r = solver.SolveLpRelaxation(lp, o);
+    if (r.status == milp::SolveStatus::kOptimal && r.objective < best.objective) {
+      best.objective = r.objective;
+      best.x = r.x;
+      best.label = FaceLabel(face, num_faces);
+    }
+  }
+  return best;
+}
+
+namespace {
+
+// objective >= lower as one row (every objective term is >= 0 here, see AddKeepOut).
+void AddObjectiveFloor(double lower, milp::Model* model) {
+  milp::LinearExpr objective;
+  for (int c = 0; c < model->num_variables(); ++c) {
+    const milp::Variable v = model->variable(c);
+    const double cost = model->objective_coefficient(v);
+    if (cost != 0.0) objective.AddTerm(v, cost);
+  }
+  const double floor = lower - 1e-9 * std::abs(lower) - model->objective_offset();  // solver tolerance
+  model->AddConstraint(objective, floor, kInf, "keep_out_floor");
+}
+
+// The plan `x` of another build of the problem as a full start of `m`.
+Eigen::VectorXd StartFor(const ScheduleMilp& m, const Eigen::VectorXd& x) {
+  const int own = m.keep_out()->first_binary_column;
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(m.lp().num_cols());
+  out.head(own) = x.head(own);
+  CompleteKeepOut(m.lp(), *m.keep_out(), &out);
+  return out;
+}
+
+// Re-solves the LP of `m` with every integer column fixed at its value in
+// r's solution, and keeps that solution if it violates the model less. CBC
+// can return impulses of ~1e-4 m/s with bound violations near 1e-6 (its
+// tolerances are absolute); the plain LP puts nonbasic columns exactly on
+// their bounds.
+void Polish(const ScheduleMilp& m, const milp::Solver& solver, const milp::SolveOptions& base,
+            milp::SolveResult* r) {
+  milp::LpData lp = m.lp();
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    if (lp.col_type[j] == milp::VarType::kContinuous) continue;
+    lp.col_lower[j] = lp.col_upper[j] = std::round(r->x[j]);
+  }
+  milp::SolveOptions o = base;
+  o.initial_solution.reset();
+  o.progress = nullptr;
+  o.interrupt = nullptr;
+  o.time_limit_s = 60.0;
+  const milp::LpRelaxationResult lr = solver.SolveLpRelaxation(lp, o);
+  if (lr.status != milp::SolveStatus::kOptimal) return;
+  if (m.lp().MaxViolation(lr.x) >= m.lp().MaxViolation(r->x)) return;
+  r->x = lr.x;
+  r->objective = m.lp().Objective(lr.x);
+  r->gap = std::abs(r->objective - r->best_bound) / std::max(1e-10, std::abs(r->objective));
+  r->detail += "; polished by the LP with the integers fixed";
+  if (r->status == milp::SolveStatus::kOptimal && r->gap > base.relative_gap) {
+    // The bound came from a solution that leaned on the tolerances: say so.
+    r->status = milp::SolveStatus::kFeasible;
+    r->detail += " (the polished plan is above the solver's bound by more than the requested gap)";
+  }
+}
+
+// Decode and check the final plan, as SolveBuilt does when asked to.
+void DecodeAndCheck(const ScheduleMilp& m, const SolveScheduleOptions& options, ScheduleResult* r) {
+  r->schedule = m.Decode(r->solve.x);
+  if (!options.check_schedule) return;
+  const Clock::time_point t0 = Clock::now();
+  const ScheduleProblem& p = m.problem();
+  if (p.input_mode == InputMode::kOnOff) {
+    r->check = CheckSchedule(p, r->schedule.burns, options.check);
+  } else {
+    r->impulsive_check = CheckImpulses(p, r->schedule.impulses);
+  }
+  r->checked = true;
+  r->check_seconds = Since(t0);
+}
+
+}  // namespace
+
+ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver& solver,
+                                  const SolveScheduleOptions& options,
+                                  const ConjunctionSolveOptions& co) {
+  if (!first.problem().conjunction || !first.keep_out()) {
+    throw std::invalid_argument("SolveConjunction: the problem has no conjunction");
+  }
+  if (!(co.restart_ratio > 0.0 && co.restart_ratio <= 1.0) || co.max_rounds < 1) {
+    throw std::invalid_argument("SolveConjunction: restart_ratio must be in (0, 1] and max_rounds >= 1");
+  }
+  const Clock::time_point t0 = Clock::now();
+  const double limit = options.solve.time_limit_s;
+  ConjunctionSolve out;
+  double best = kInf;
+  Eigen::VectorXd best_x;
+  if (co.fixed_face_start) {
+    const ConjunctionStart s = FixedFaceStart(first, solver, options.solve);
+    out.start_seconds = Since(t0);
+    if (s.x.size() > 0) {
+      best = s.objective;
+      best_x = s.x;
+      out.start_objective = s.objective;
+      out.start_label = s.label;
+    }
+    out.lower_bound = s.lower_bound;
+  }
+  const ScheduleMilp* current = &first;
+  for (int round = 0;; ++round) {
+    const Clock::time_point tr = Clock::now();
+    const double budget = current->problem().conjunction->cost_budget;
+    if (co.tighten_budget && best < budget) {
+      // Rebuilt with the best known cost, 0.1 % above: that plan satisfies the
+      // rows only to the solver's absolute tolerances, and the exact pruning
+      // of a budget at its cost could drop a face it relies on.
+      ScheduleProblem p = current->problem();
+      p.conjunction->cost_budget = best * (1.0 + 1e-3) + 1e-12;
+      BuildOptions b = first.options();
+      if (co.lp_bounds) b.keep_out_bound_solver = &solver;
+      auto rebuilt = std::make_shared<ScheduleMilp>(p, first.discrete(), b);
+      if (std::isfinite(out.lower_bound)) {
+        rebuilt->Modify([&](milp::Model& model) { AddObjectiveFloor(out.lower_bound, &model); });
+      }
+      out.milp = rebuilt;
+      current = out.milp.get();
+    }
+    BudgetRound br;
+    br.budget = current->problem().conjunction->cost_budget;
+    br.binaries = current->keep_out()->num_binaries;
+    SolveScheduleOptions o = options;
+    o.prefix_diagnosis_s = 0.0;  // prefixes would cut the conjunction's times off
+    o.check_schedule = false;    // the final plan is polished, then checked
+    o.warm_start.clear();
+    if (best_x.size() > 0) o.solve.initial_solution = StartFor(*current, best_x);
+    o.solve.time_limit_s = std::max(0.0, limit - Since(t0));
+    std::atomic<bool> stop{false};
+    bool restart = false;
+    const bool last_round = round + 1 >= co.max_rounds;
+    const double offset = Since(t0);
+    double forwarded = -kInf;
+    o.solve.interrupt = &stop;
+    o.solve.progress_interval_s = std::min(options.solve.progress_interval_s, 1.0);
+    o.solve.progress = [&](const milp::SolveProgress& p) {
+      if (options.solve.interrupt != nullptr && options.solve.interrupt->load()) stop = true;
+      if (co.tighten_budget && !last_round && p.new_incumbent && p.objective < co.restart_ratio * br.budget) {
+        restart = true;
+        stop = true;
+      }
+      if (options.solve.progress &&
+          (p.new_incumbent || p.wall_seconds - forwarded >= options.solve.progress_interval_s)) {
+        forwarded = p.wall_seconds;
+        milp::SolveProgress q = p;
+        q.wall_seconds += offset;
+        options.solve.progress(q);
+      }
+    };
+    // The budget rounds drive CBC on the whole MILP (restarts on a new
+    // incumbent, budget-derived big-M): the problem-aware search, built for
+    // the plain schedule MILP, is not used here.
+    o.search.enabled = false;
+    ScheduleResult r = SolveBuilt(*current, solver, o);
+    br.status = r.solve.status;
+    br.objective = r.solve.objective;
+    br.best_bound = r.solve.best_bound;
+    br.seconds = Since(tr);
+    br.restarted = restart && r.has_schedule() && r.solve.objective < best;
+    out.rounds.push_back(br);
+    if (br.restarted) {
+      best = r.solve.objective;
+      best_x = r.solve.x;
+      continue;
+    }
+    if (r.has_schedule()) {
+      Polish(*current, solver, options.solve, &r.solve);
+      DecodeAndCheck(*current, options, &r);
+    }
+    out.result = std::move(r);
+    return out;
+  }
+}
+
+}  // namespace thrustsched::transcription
