@@ -220,7 +220,7 @@ class Search {
 
   Restriction Restrict(const Eigen::MatrixXi& mask) const {
     BuildOptions bo = milp_.options();
-    bo.formulation = Formulation::kCondensed;
+    bo.formulation = search_.restricted_formulation;
     bo.free_slots = mask;
     Restriction r{ScheduleMilp(milp_.problem(), milp_.discrete(), bo), {}, {}, true};
     r.small = milp::RemoveFixedColumns(r.milp.lp(), &r.kept, &r.feasible);
