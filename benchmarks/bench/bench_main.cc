@@ -1,5 +1,5 @@
 // thrustsched-bench: integration schemes x formulations x encodings on the
-// thesis scenarios, in one run, with one command (issue 6).
+// thesis scenarios, in one run, with one command.
 //
 //   thrustsched-bench [--quick] [--scenarios GLOB] [--out DIR] [--threads N]
 //                     [--time-limit S] [--repeats K] [--cases GLOB] [--merge]

@@ -117,7 +117,7 @@ class Builder {
 
 void AddAccuracy(Builder* b, bool quick) {
   // Every scheme against the reference on HCW and on the GEO model; the
-  // steps of the issue (1, 2.5, 5, 10, 30 min), 7 days (quick: 1 day, 2 steps).
+  // required steps (1, 2.5, 5, 10, 30 min), 7 days (quick: 1 day, 2 steps).
   const std::vector<double> steps =
       quick ? std::vector<double>{600, 1800} : std::vector<double>{60, 150, 300, 600, 1800};
   const double horizon = quick ? kDay : 7 * kDay;
