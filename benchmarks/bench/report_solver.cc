@@ -51,7 +51,7 @@ double TimeToGap(const Row& r, double gap) {
 }  // namespace
 
 void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
-  md << "## Solver speed: the search against CBC on the whole MILP\n\n";
+  md << "## 8. Solver speed: the search against CBC on the whole MILP\n\n";
   const std::vector<Pair> pairs = Pairs(rows);
   if (pairs.empty()) {
     md << "Not run.\n\n";
