@@ -344,6 +344,7 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
       facts.command_line = "python: thrustsched.solve";
       facts.total_seconds = out->total_seconds;
       summary = app::SummaryJson(*ctx.scenario, *milp, r, facts);
+      if (summary["check"].is_object()) summary["check"]["kind"] = "continuous";
       if (!out->checked->nonlinear_error.empty() && summary["check"].is_object()) {
         summary["check"]["nonlinear_error"] = out->checked->nonlinear_error;
       }

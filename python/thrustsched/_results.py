@@ -175,7 +175,9 @@ class SolveResult(_ScheduleView):
     def __repr__(self) -> str:
         s = f"SolveResult(status={self.status!r}"
         if self.has_schedule:
-            s += f", objective={self.objective:.8g}, gap={self.gap:.3g}, burns={self.summary.get('n_burns')}"
+            n = self.summary.get("n_impulses", self.summary.get("n_burns"))
+            what = "impulses" if "n_impulses" in self.summary else "burns"
+            s += f", objective={self.objective:.8g}, gap={self.gap:.3g}, {what}={n}"
             if self.check is not None:
                 s += f", check_passed={self.check.get('passed')}"
         return s + ")"
