@@ -13,7 +13,8 @@
 
 namespace thrustsched::app {
 
-/// Exit codes of the CLI (issue 5).
+/// Exit codes of the CLI: a contract scripts rely on (README.md,
+/// data/scenarios/README.md section 1).
 inline constexpr int kExitOk = 0;            // solved (optimal or feasible) / check passed
 inline constexpr int kExitInternal = 1;      // internal error
 inline constexpr int kExitBadInput = 2;      // bad input (scenario, files, options)

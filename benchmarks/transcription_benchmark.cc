@@ -5,7 +5,7 @@
 // BM_BuildGeoWeek/<formulation>_<encoding>  ScheduleMilp from an existing
 //     discretisation of the 7-day GEO grid (5 min, 2016 intervals, 4 Anzel
 //     thrusters, thesis rules, +-0.05 deg window, end-of-week station-keeping
-//     sets): rows, columns and freezing into LpData. Issue-6 target < 1 s.
+//     sets): rows, columns and freezing into LpData. Target < 1 s.
 // BM_BuildHcwWeek/<encoding>  the same for the thesis Table 4.2 week (HCW,
 //     6 ideal thrusters, 12 096 binaries).
 // BM_BuildGeoWeekCondensed/<days>  the condensed formulation on 1-3 days of

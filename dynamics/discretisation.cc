@@ -62,7 +62,8 @@ struct Workspace {
 // with scaling and squaring. The top-right block is linear in each column of
 // E, so every column of h E is first normalised to unit 1-norm and the result
 // column scaled back: large or tiny input/drift magnitudes then neither
-// inflate the norm (over-scaling, field-notes §2.4) nor drive the squarings.
+// inflate the norm (over-scaling: Eigen's exp() follows Higham 2005, without
+// the fix of Al-Mohy & Higham 2009) nor drive the squarings.
 void AffineExponential(const Frozen& f, double h, Workspace& ws) {
   const int n = ws.n, m1 = ws.m + 1;
   ws.aug.setZero();

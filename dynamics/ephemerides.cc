@@ -30,7 +30,8 @@ struct Ecliptic {
   double lon, lat, r_km;
 };
 
-// Rotation ecliptic -> equator, active R1(+eps) (dynamics.md §5.5.2).
+// Rotation ecliptic -> equator, active R1(+eps) (Montenbruck & Gill 2000,
+// sec. 3.3.2, write it with the passive Rx(-eps)).
 Eigen::Vector3d ToEquatorial(const Ecliptic& e, double eps) {
   const Eigen::Vector3d ecl(e.r_km * std::cos(e.lon) * std::cos(e.lat), e.r_km * std::sin(e.lon) * std::cos(e.lat),
                             e.r_km * std::sin(e.lat));

@@ -1,6 +1,7 @@
-// Low-precision analytic Sun and Moon ephemerides (Montenbruck & Gill,
-// "Satellite Orbits", §3.3.2; dynamics.md §5.5.2 and §5.8). Geocentric
-// positions in metres, time as a Julian date in TT.
+// Low-precision analytic Sun and Moon ephemerides (Montenbruck & Gill 2000,
+// "Satellite Orbits", sec. 3.3.2; the "of date" forms are those of Montenbruck
+// & Pfleger 2000, "Astronomy on the Personal Computer", MiniSun and MiniMoon).
+// Geocentric positions in metres, time as a Julian date in TT.
 //
 //   double jd_tt = dynamics::Epoch::Parse("2034-01-01T00:00:00Z").JulianDateTt();
 //   Eigen::Vector3d sun = dynamics::SunPositionMeanOfEpoch(jd_tt, jd_tt);   // of date
@@ -8,8 +9,8 @@
 //
 // Two variants:
 //  * "J2000" series: mean ecliptic and equinox J2000 with the Sun's perihelion
-//    held fixed (0.11 deg off by 2034); kept because dynamics.md §5.5.2 quotes
-//    check values for it.
+//    held fixed (0.11 deg off by 2034); kept because it is the series
+//    Montenbruck & Gill 2000 print, and the tests check values computed from it.
 //  * "of date" series (used by the GEO models): the mean longitudes include the
 //    general precession and the Sun's perihelion drift (Sun within ~0.01 deg,
 //    Moon within ~0.07 deg of ERFA in 2034). `...MeanOfEpoch(jd_tt, jd_frame_tt)`

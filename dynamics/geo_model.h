@@ -1,7 +1,7 @@
-// Linearised GEO station-keeping model (the thesis "synthesis model",
-// dynamics.md §6): relative osculating equinoctial elements about a station
-// point fixed in the Earth-fixed frame, with Earth gravity to degree and
-// order 4, Sun, Moon and solar radiation pressure.
+// Linearised GEO station-keeping model (the "synthesis model" of Gazzino
+// 2018, eqs. (1.41)-(1.44) and App. B): relative osculating equinoctial
+// elements about a station point fixed in the Earth-fixed frame, with Earth
+// gravity to degree and order 4, Sun, Moon and solar radiation pressure.
 //
 //   dynamics::GeoModelOptions opt;              // 118 E, epoch 2034-01-01T00:00:00Z
 //   dynamics::GeoLinearModel geo(opt);          // throws on invalid options
@@ -20,12 +20,14 @@
 //   x' = A(t) x + B(t) u + d(t),    y = C(t) x,    y' = C'(t) x + C(t) x'
 //   A(t) = df_L/dx (x_mp, t)   exact Jacobian (forward-mode dual numbers) of
 //          f_L(x, t) = [0,0,0,0,0, n(a) - omega_E] + G(x, t) a_nat^RTN(x, t)
-//   B(t) = G(x_mp, t)          Gauss matrix, B12 = 2 a_mp / v_mp (dynamics.md §6.3)
+//   B(t) = G(x_mp, t)          Gauss matrix, B12 = 2 a_mp / v_mp (corrected: Gazzino
+//                              2018 eq. (B.59) prints a_mp / v_mp; cf. its (B.64a))
 //   d(t) = f_L(x_mp, t)        includes the Kepler residual n(a_mp) - omega_E =
-//                              -4.14e-9 rad/s (x_mp is not an equilibrium, §3.2)
-//   C(t)  (dynamics.md (B.82)), kappa = l_mp + Theta(t):
+//                              -4.14e-9 rad/s (x_mp is not an equilibrium;
+//                              corrected: Gazzino 2018 (B.32), (B.60) assume it is)
+//   C(t)  (Gazzino 2018, eq. (B.82)), kappa = l_mp + Theta(t):
 //     [1, -a cos k, -a sin k, 0, 0, 0; 0, 0, 0, 2 sin k, -2 cos k, 0; 0, 2 sin k, -2 cos k, 0, 0, 1]
-//   C'(t) = dC/dt with dkappa/dt = omega_E (the thesis E = 2H + CA + C' is wrong, §6.6).
+//   C'(t) = dC/dt with dkappa/dt = omega_E (E = 2H + CA + C' of Gazzino 2018 (B.98) is wrong).
 // The physics, frame and time conventions are those of GeoSimulator
 // (dynamics/geo_simulator.h), which is the nonlinear reference for this model.
 #ifndef THRUSTSCHED_DYNAMICS_GEO_MODEL_H_
@@ -42,7 +44,9 @@
 
 namespace thrustsched::dynamics {
 
-/// Physical constants of the GEO models (SI). Sources: dynamics.md §1, §5.5.
+/// Physical constants of the GEO models (SI). Sources: Gazzino 2018 (a_mp, delta);
+/// standard values the thesis does not give: EGM2008 (mu_E, R_E), IERS (omega_E),
+/// JPL ephemerides (mu_S, mu_M), IAU 2012 (AU), Montenbruck & Gill 2000 sec. 3.4 (P).
 namespace geo {
 inline constexpr double kEarthMu = 3.986004418e14;        // m^3/s^2 (EGM2008 / IERS)
 inline constexpr double kEarthRadius = 6378137.0;          // m, geopotential reference radius

@@ -1,5 +1,5 @@
 // Nonlinear GEO simulation model: the judge of every station-keeping
-// schedule (the thesis "simulation model", dynamics.md §5). Cowell
+// schedule (the "simulation model" of Gazzino 2018, eqs. (1.40), (B.53)). Cowell
 // propagation of the ECI position and velocity under all enabled natural
 // forces plus on/off thrust in the satellite's own RTN frame.
 //
@@ -36,7 +36,9 @@
 //   convention, consistent between the linear model, the simulator and the
 //   geopotential.)
 //
-// FORCES (SI, dynamics.md §5.5), each switchable in GeoModelOptions:
+// FORCES (SI), each switchable in GeoModelOptions. Gazzino 2018 (sec. 1.2.2)
+//   names them but gives no model; these are standard ones (Montenbruck &
+//   Gill 2000, ch. 3):
 //   central: mu_E = 3.986004418e14 m^3/s^2.
 //   geopotential: EGM2008 normalised C_nm, S_nm to degree and order
 //     gravity_degree (<= 4), R_E = 6378137 m, evaluated in the Earth-fixed frame

@@ -185,7 +185,7 @@ Eigen::Matrix<double, 6, 6> HcwModel::TransitionMatrix(double tau) const {
   p(3, 0) = 3.0 * n * s;
   p(3, 3) = c;
   p(3, 4) = 2.0 * s;
-  p(4, 0) = -6.0 * n * omc;  // 6 n (c - 1): (I.4) prints 6 (c - 1) [C]
+  p(4, 0) = -6.0 * n * omc;  // 6 n (c - 1); corrected: Gazzino 2018 (I.4) prints 6 (c - 1)
   p(4, 3) = -2.0 * s;
   p(4, 4) = 1.0 - 4.0 * omc;  // 4 c - 3
   p(5, 2) = -n * s;
@@ -357,7 +357,7 @@ Eigen::Matrix<double, 6, 6> YamanakaAnkersenModel::TransitionMatrixFromTrueAnoma
 
 Eigen::Matrix<double, 6, 6> YamanakaAnkersenModel::TransitionMatrixImpl(double nu, double nu0,
                                                                         double dt) const {
-  // Yamanaka & Ankersen (2002) in the frame of other-seeds.md §1.8 (x_S
+  // Yamanaka & Ankersen (2002) in the LVLH frame of Serra 2015, sec. 4.1.1 (x_S
   // along-track, y_S = -normal, z_S = nadir), with the transformation
   // q~ = rho q, q~' = -e sin(nu) q + q_dot / (k2 rho) per axis, then mapped to
   // this model's (radial, along-track, normal) frame.

@@ -104,9 +104,10 @@ class HcwModel final : public LinearModel {
   double time_scale() const override { return 1.0 / n_; }
 
   double mean_motion() const { return n_; }
-  /// Phi(tau) = exp(A tau), thesis (I.4) with entry (5,1) = 6 n (cos n tau - 1)
-  /// [C]. Any finite tau (negative = backward). Cancellation-free for small
-  /// n tau. @throws std::invalid_argument if tau is not finite.
+  /// Phi(tau) = exp(A tau), Gazzino 2018 eq. (I.4) with entry (5,1) corrected
+  /// to 6 n (cos n tau - 1). Any finite tau (negative = backward).
+  /// Cancellation-free for small n tau. @throws std::invalid_argument if tau
+  /// is not finite.
   Eigen::Matrix<double, 6, 6> TransitionMatrix(double tau) const;
   /// Integral over [0, tau] of Phi(tau - s) B ds (6 x 3, s^2 on positions, s
   /// on velocities): the response to a constant RTN acceleration held for tau.

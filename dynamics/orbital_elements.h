@@ -1,6 +1,8 @@
-// Equinoctial orbital elements (thesis definition (1.17)) and exact
-// conversions to and from ECI position/velocity (dynamics.md §4, which
-// corrects the thesis's appendix D), plus the Gauss equations (§5.3).
+// Equinoctial orbital elements (Gazzino 2018, eq. (1.17)) and exact
+// conversions to and from ECI position/velocity (Broucke & Cefola 1972 with
+// those definitions; corrected: Gazzino 2018 App. D prints the equinoctial
+// basis transposed (D.27), both signs of (D.30) wrong and, in (D.38)-(D.45),
+// nu_Q ~ M_Q, 40-60 km off), plus the Gauss equations (Gazzino 2018, (B.51)).
 //
 //   #include "dynamics/geo_model.h"   // for geo::kEarthMu
 //   dynamics::EquinoctialElements el{42165765.0, 1e-4, 0.0, 0.0, 2e-4, 1.0};
@@ -29,20 +31,24 @@ struct EquinoctialElements {
   double mean_longitude_rad = 0.0;  // K = M_Q
 };
 
-/// Position and velocity (§4.1-4.2, exact: Kepler's equation solved by Newton).
+/// Position and velocity (exact: Kepler's equation in equinoctial form,
+/// Gazzino 2018 eq. (D.25), solved by Newton).
 /// @throws std::invalid_argument if a value is not finite, a <= 0, e >= 1 or mu <= 0.
 Vector6d CartesianFromEquinoctial(const EquinoctialElements& el, double mu);
 
-/// Osculating elements of an ECI state (§4.3), mean longitude in (-pi, pi].
+/// Osculating elements of an ECI state, mean longitude in (-pi, pi]; ix =
+/// -h_y/(h + h_z), iy = h_x/(h + h_z) (corrected: Gazzino 2018 (D.30) has both
+/// signs wrong).
 /// @throws std::invalid_argument if a value is not finite, the orbit is not an
 ///         ellipse (a <= 0 or e >= 1), r x v = 0 or the orbit is retrograde
 ///         equatorial (h + h_z <= 1e-12 h).
 EquinoctialElements EquinoctialFromCartesian(const Vector6d& rv, double mu);
 
 /// d(elements)/dt = G(el) a_RTN for a perturbing acceleration a_RTN (m/s^2) in
-/// the orbit's RTN frame: rows a, ex, ey, ix, iy, K; columns R, T, N (§5.3 with
-/// the corrected (6,1) entry -(2r + ab/(a+b) p1)/(n a^2)). The Keplerian
-/// mean-motion term n is not included. @throws as CartesianFromEquinoctial.
+/// the orbit's RTN frame: rows a, ex, ey, ix, iy, K; columns R, T, N (Gazzino
+/// 2018, eq. (B.51); corrected: its (6,1) entry is dimensionally wrong, it is
+/// -(2r + ab/(a+b) p1)/(n a^2)). The Keplerian mean-motion term n is not
+/// included. @throws as CartesianFromEquinoctial.
 Eigen::Matrix<double, 6, 3> GaussMatrix(const EquinoctialElements& el, double mu);
 
 /// Columns u_R = r/|r|, u_T = u_N x u_R, u_N = (r x v)/|r x v| in ECI.

@@ -8,7 +8,7 @@
 //   double l1 = anzel.L1Factor(0);                    // ||Gamma_NE||_1 = 1.44296 F/m
 //
 // Directions are unit vectors in the local RTN frame (R radial outward,
-// T along-track, N orbit normal). Anzel layout (thesis (1.73), dynamics.md §7.1):
+// T along-track, N orbit normal). Anzel layout (Gazzino 2018, eqs. (1.72)-(1.77)):
 // every thruster pushes toward the Earth; the North-located ones push South,
 // the East-located ones push West.
 #ifndef THRUSTSCHED_DYNAMICS_THRUSTERS_H_

@@ -5,11 +5,12 @@
 //   milp::WriteLpFile("week.lp", lp);                           // CPLEX LP
 //   milp::MpsOptions o; o.obfuscate_names = true;               // C000001 / R000001
 //
-// Conventions (each guards against a pitfall other readers hit, see
-// field-notes §2.3): numbers with %.17g (exact double round trip); minimisation
-// only (a maximisation model is written with negated costs, and the header
-// comment says so); a nonzero objective offset becomes a column OBJ_CONST
-// fixed to 1 with cost = offset; integer columns between quoted
+// Conventions (each guards against a pitfall some reader hits, since MPS is
+// not standardised: e.g. CBC 2.10 reads a two-line OBJSENSE MAX and still
+// minimises, glpsol rejects OBJSENSE): numbers with %.17g (exact double round
+// trip); minimisation only (a maximisation model is written with negated
+// costs, and the header comment says so); a nonzero objective offset becomes a
+// column OBJ_CONST fixed to 1 with cost = offset; integer columns between quoted
 // 'MARKER' 'INTORG'/'INTEND' lines and always with explicit LO and UP bounds
 // (binary: LO 0, UP 1); infinite bounds as MI/PL/FR; RANGES only for ranged
 // rows (finite lower < finite upper); names sanitised (no spaces or characters

@@ -107,5 +107,6 @@ for name in names:
         f'{fmt(s["median"])}/{fmt(s["p90"])}/{fmt(s["max"])}',
         f'{fmt(g["median"] and 100 * g["median"])}/{fmt(g["max"] and 100 * g["max"])}',
         f'{y["wall_seconds"] / 3600:.2f}', f'{y.get("cpu_seconds", 0) / 3600:.2f}']))
-print(f"normal delta-v reference: {normal_ref} m/s per year (+-10 %), thesis-results.md A.10.1/A.10.6")
+print(f"normal delta-v reference: {normal_ref} m/s per year (+-10 %), derived from Gazzino 2018 "
+      "sec. 5.3.1 and Table 5.6 (data/reference/thesis_chapter5.json)")
 PY

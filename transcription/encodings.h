@@ -4,8 +4,8 @@
 // Two encodings accept exactly the same binary patterns (tested exhaustively
 // against the independent checker) but differ in LP-relaxation strength:
 //
-//  kThesis  Gazzino (2018) ch. 4, corrected (thesis-results.md §F, dynamics.md
-//           §7.3) and generalised to non-uniform grids: gamma_j = sum_i on[i][j]
+//  kThesis  Gazzino (2018) sec. 4.2.1, (4.6)-(4.33), corrected as noted below and
+//           generalised to non-uniform grids: gamma_j = sum_i on[i][j]
 //           (the printed "Xi_1 F + gamma = 0" loses the minus sign);
 //           minimum burn  on[l][a] - on[l][b] - gamma_{a-1} <= 0     (4.11)
 //           same-thruster gap  on[l][a-1] - on[l][a] + on[l][b] <= 1 (4.16)

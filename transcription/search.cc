@@ -97,6 +97,15 @@ class Search {
     return o;
   }
 
+  // A restricted MILP is small and its condensed window rows are dense: the
+  // dual simplex, whatever the caller chose for the whole MILP (an interior
+  // point factors the dense A D A' of those rows, minutes on a GEO week).
+  milp::SolveOptions RestrictedOptions() const {
+    milp::SolveOptions o = SubOptions(false);
+    o.lp_algorithm = milp::LpAlgorithm::kDual;
+    return o;
+  }
+
   void Report(milp::SolvePhase phase, bool new_incumbent) const {
     if (!options_.progress) return;
     milp::SolveProgress p;
@@ -211,7 +220,7 @@ class Search {
 
   Restriction Restrict(const Eigen::MatrixXi& mask) const {
     BuildOptions bo = milp_.options();
-    bo.formulation = Formulation::kCondensed;
+    bo.formulation = search_.restricted_formulation;
     bo.free_slots = mask;
     Restriction r{ScheduleMilp(milp_.problem(), milp_.discrete(), bo), {}, {}, true};
     r.small = milp::RemoveFixedColumns(r.milp.lp(), &r.kept, &r.feasible);
@@ -243,7 +252,7 @@ class Search {
       const Restriction r = Restrict(mask);
       if (report_ != nullptr) report_->candidate_slots = Count(mask);
       const double t0 = Elapsed();
-      milp::SolveOptions o = SubOptions(false);
+      milp::SolveOptions o = RestrictedOptions();
       o.max_nodes = NodeLimit();
       milp::SolveResult s;
       if (r.feasible) s = solver_.Solve(r.small, o);
@@ -304,7 +313,7 @@ class Search {
     AddObjectiveCutoff(&r.small, cutoff);
     const double t0 = Elapsed();
     milp::SolveResult s;
-    if (r.feasible) s = solver_.Solve(r.small, SubOptions(false));
+    if (r.feasible) s = solver_.Solve(r.small, RestrictedOptions());
     nodes_ += s.nodes;
     const std::string what = "exact MILP over the " + std::to_string(Count(mask)) +
                              " slots reduced-cost fixing leaves free";

@@ -59,6 +59,9 @@ struct SearchOptions {
   /// Times an infeasible restriction is widened (neighbourhood doubled and
   /// threshold divided by 10) before giving up on it.
   int max_widenings = 2;
+  /// Formulation of the restricted MILPs: condensed (only the free slots'
+  /// columns, dense window rows) or sparse (state columns kept, sparse rows).
+  Formulation restricted_formulation = Formulation::kCondensed;
   /// Node limit of each restricted MILP solve.
   long long restricted_max_nodes = 20000;
   /// Largest number of slots left free by reduced-cost fixing for the exact

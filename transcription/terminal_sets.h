@@ -14,7 +14,7 @@
 //   along-track semi-axis 2 A_xy = sqrt(xi1^2 + xi2^2)) fits |y| <= eps_y at
 //   time t after the junction. The centre is affine in t, so imposing it at
 //   t = 0 and t = T keeps the ellipse inside on all of [0, T] (the thesis
-//   plugged the absolute date t_j^c in; thesis-results.md §A.6).
+//   plugged the absolute date t_j^c into its (5.32)-(5.35)).
 // Each round set is replaced by its inscribed regular K-gon (thesis App. K):
 //   cos(phi_k) u + sin(phi_k) v <= cos(pi/K) r,   phi_k = (2k + 1) pi / K,
 // which is (K.3)/(K.8)/(K.14) divided by 2 sin(pi/K) (tested), with

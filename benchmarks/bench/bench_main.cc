@@ -1,5 +1,5 @@
 // thrustsched-bench: integration schemes x formulations x encodings on the
-// thesis scenarios, in one run, with one command (issue 6).
+// thesis scenarios, in one run, with one command.
 //
 //   thrustsched-bench [--quick] [--scenarios GLOB] [--out DIR] [--threads N]
 //                     [--time-limit S] [--repeats K] [--cases GLOB] [--merge]
@@ -76,7 +76,9 @@ int main(int argc, char** argv) {
                "regenerate report.md and plots from DIR/results.csv and DIR/meta.json");
   app.add_flag("--list", list, "print the cases and exit");
   app.add_flag("--no-fork", no_fork, "run cases in-process (debugging; peak RSS not per case)");
-  app.add_flag("--keep-mps", keep_mps, "keep the MPS files of the external cross-check");
+  app.add_flag("--keep-mps", keep_mps,
+               "keep the MPS files of the external cross-check and the external solvers' raw "
+               "output (.sol, .log, .glpsol.txt; removed otherwise)");
   app.add_flag("--merge", merge,
                "keep the rows of DIR/results.csv whose cases are not run again (partial re-runs)");
   try {

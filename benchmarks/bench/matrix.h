@@ -1,6 +1,7 @@
 // The benchmark matrix of thrustsched-bench: which scenario is run with which
 // scheme, formulation, encoding, horizon, step, rules and solver settings,
-// grouped by the sections of the report (issue 6, "What it must show").
+// grouped by the sections of the report (accuracy, cost, formulations and
+// encodings, scaling, operational constraints, ...).
 //
 //   bench::MatrixOptions o;
 //   o.quick = false;

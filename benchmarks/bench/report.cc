@@ -222,7 +222,7 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
 
 void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m, Plotter* plot) {
   md << "## Targets\n\n";
-  md << "Issue 6 targets on this 2-core machine, medians of repeated runs (spread min-max, "
+  md << "Performance targets on this 2-core machine, medians of repeated runs (spread min-max, "
         "n = runs). A target that is missed says by how much; none is weakened.\n\n";
   // Discretise and build, 7-day GEO grid at 5 min.
   const auto cost = idx.Where([](const Group& g) {
@@ -616,10 +616,11 @@ void WriteCost(std::ostream& md, const Index& idx, Plotter* plot) {
           "reference transition matrices to ~4e-11 at 5 min and "
        << hs_vs_exact
        << ". It points to a difference in the thesis's Hermite-Simpson transcription: "
-          "its (4.52)-(4.55) carry a sign error on the drift term (corrected here, "
-          "thesis-results.md §F, dynamics/discretisation.h) and treat the input as piecewise "
-          "linear (u_m = (u_j + u_{j+1}) / 2), which is not an on-off input. A wrong drift "
-          "changes the natural motion the schedule must cancel: that matters most when the "
+          "its (4.52) prints the drift term with the wrong sign (its own (4.55) has it "
+          "right; corrected here, dynamics/discretisation.h) and (4.52)-(4.55) treat the "
+          "input as piecewise linear (u_m = (u_j + u_{j+1}) / 2), which is not an on-off "
+          "input. A wrong drift changes the natural motion the schedule must cancel: that "
+          "matters most when the "
           "final state is pinned (Table 4.3) and little when it is free (the thesis's "
           "free-final-state week, 0.2351 m/s, was the same for both methods). The yearly "
           "-0.6 % (about 0.6 slot per week) is below the 1 % gaps at which receding weekly "
@@ -1095,7 +1096,7 @@ void WriteYear(std::ostream& md, const ReportMeta& m) {
        << G(num(y["wall_seconds"]) / 3600.0, 3) << " | " << G(num(y["cpu_seconds"]) / 3600.0, 3)
        << " |\n";
   }
-  md << "\nTarget (issue 7): the nominal year (year_anzel4_fixed) in under 30 minutes of wall "
+  md << "\nTarget: the nominal year (year_anzel4_fixed) in under 30 minutes of wall "
         "time on this 2-core machine; the thesis needed about 161 s per cycle with Gurobi "
         "(about 2.4 hours). ";
   if (nominal_wall_s > 0.0) {
@@ -1190,7 +1191,7 @@ void WriteSkipped(std::ostream& md, const Index& idx, const ReportMeta& m) {
 
 void WriteColumns(std::ostream& md) {
   md << "## Columns of results.csv\n\n"
-     << "One row per run (accuracy: per scheme and step). Contract columns (issue 6): `"
+     << "One row per run (accuracy: per scheme and step). Contract columns (fixed names): `"
      << [] {
           std::string s;
           for (const std::string& c : ContractColumns()) s += (s.empty() ? "" : "`, `") + c;

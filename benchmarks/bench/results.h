@@ -22,10 +22,10 @@
 
 namespace thrustsched::bench {
 
-/// Every column of results.csv, in order. The issue-6 contract columns are a
-/// subset (ContractColumns()).
+/// Every column of results.csv, in order. The contract columns (fixed names
+/// scripts rely on) are a subset (ContractColumns()).
 const std::vector<std::string>& ResultColumns();
-/// The columns issue 6 names explicitly.
+/// The contract columns: their names and order never change.
 const std::vector<std::string>& ContractColumns();
 
 class Row {

@@ -430,7 +430,14 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
       r.Set(prefix + "_objective", e.objective);
       r.Set(prefix + "_s", e.seconds);
     }
-    if (!ctx.keep_mps) std::remove(mps.c_str());
+    if (!ctx.keep_mps) {
+      // The figures are in the row; the model and the solvers' raw output
+      // (megabytes per case) are kept only when asked for.
+      for (const std::string& f : {mps, stem + ".cbc.sol", stem + ".cbc.log", stem + ".glpsol.txt",
+                                   stem + ".glpsol.log"}) {
+        std::remove(f.c_str());
+      }
+    }
   }
   return {r};
 }

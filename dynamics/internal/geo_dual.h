@@ -1,8 +1,9 @@
 // Private helper (not installed): forward-mode dual numbers with N derivative
 // directions, used to get the exact Jacobian A(t) = df_L/dx of the GEO
-// equinoctial dynamics in one pass (dynamics.md §6.2). Only the operations the
-// GEO physics templates use are provided; comparisons look at the value only
-// (the code must not branch on derivatives).
+// equinoctial dynamics in one pass (Gazzino 2018 defines it, eq. (B.36), but
+// never prints it). Only the operations the GEO physics templates use are
+// provided; comparisons look at the value only (the code must not branch on
+// derivatives).
 //
 //   using D = internal::Dual<6>;
 //   D x = D::Variable(0.3, 0);            // value 0.3, dx/dx_0 = 1

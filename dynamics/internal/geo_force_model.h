@@ -11,7 +11,7 @@
 
 namespace thrustsched::dynamics::internal {
 
-/// EGM2008 fully normalised coefficients to degree and order 4 (dynamics.md §5.5.1).
+/// EGM2008 fully normalised coefficients to degree and order 4 (Pavlis et al. 2012).
 struct NormalisedCoefficient {
   int n, m;
   double c, s;

@@ -2,7 +2,7 @@
 // the scalar type, so that the same code gives values (double) and exact
 // first derivatives (internal::Dual<N>). Public double wrappers live in
 // dynamics/orbital_elements.h and dynamics/geo_forces.h; formulas and their
-// provenance are documented there (dynamics.md §2.4, §4, §5.3, §5.5).
+// provenance are documented there.
 // SI units throughout (m, s, rad).
 #ifndef THRUSTSCHED_DYNAMICS_INTERNAL_GEO_PHYSICS_H_
 #define THRUSTSCHED_DYNAMICS_INTERNAL_GEO_PHYSICS_H_
@@ -23,7 +23,9 @@ inline T Dot(const Vec3<T>& a, const Vec3<T>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/// Geometry of an osculating orbit in equinoctial elements (§4.1-4.2, §2.4).
+/// Geometry of an osculating orbit in equinoctial elements (Broucke & Cefola
+/// 1972; basis [f g w] = R3(W) R1(i) R3(-W), corrected: Gazzino 2018 (A.11)
+/// prints R3(-W) R1(i) R3(W)).
 template <typename T>
 struct OrbitGeometry {
   T a, ex, ey, ix, iy;
@@ -94,7 +96,8 @@ OrbitGeometry<T> Geometry(const T& a, const T& ex, const T& ey, const T& ix, con
 }
 
 /// Gauss matrix G_EOE (6 x 3, rows a, ex, ey, ix, iy, K; columns R, T, N) of
-/// dynamics.md §5.3 with the corrected (6,1) entry.
+/// Gazzino 2018, eq. (B.51), with the (6,1) entry corrected (printed
+/// dimensionally wrong).
 template <typename T>
 std::array<Vec3<T>, 6> GaussMatrix(const OrbitGeometry<T>& o) {
   const T& a = o.a;
@@ -179,7 +182,7 @@ Vec3<T> GeopotentialAccelerationEcef(const Vec3<T>& r, const GeopotentialCoeffic
   return acc;
 }
 
-/// Third-body acceleration with the indirect term (dynamics.md §5.5.2).
+/// Third-body acceleration with the indirect term (Montenbruck & Gill 2000, sec. 3.3.1).
 template <typename T>
 Vec3<T> ThirdBodyAcceleration(const Vec3<T>& r, const Vec3<double>& body, double mu_body) {
   using std::sqrt;
@@ -205,9 +208,9 @@ inline double ShadowFunction(const Vec3<double>& r, const Vec3<double>& sun, dou
   return std::sqrt(std::max(r2 - proj * proj, 0.0)) - earth_radius;
 }
 
-/// Cannonball solar-radiation-pressure acceleration in sunlight (dynamics.md
-/// §5.5.3); coefficient = P_sun * C_r * A/m (m/s^2 at 1 AU). The caller
-/// applies the shadow (ShadowFunction).
+/// Cannonball solar-radiation-pressure acceleration in sunlight (Montenbruck &
+/// Gill 2000, sec. 3.4); coefficient = P_sun * C_r * A/m (m/s^2 at 1 AU). The
+/// caller applies the shadow (ShadowFunction).
 template <typename T>
 Vec3<T> SrpAcceleration(const Vec3<T>& r, const Vec3<double>& sun, double coefficient, double au) {
   using std::sqrt;

@@ -9,15 +9,21 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "milp/internal/pipe_io.h"
 
 namespace thrustsched::milp::internal {
 namespace {
+
+constexpr char kProgressFrame = 'P';
+constexpr char kOutcomeFrame = 'O';
+static_assert(std::is_trivially_copyable<SolveProgress>::value, "frames copy SolveProgress");
 
 struct Header {
   int32_t status = 0;
@@ -35,8 +41,15 @@ struct Header {
   signal(SIGTERM, SIG_IGN);
   signal(SIGHUP, SIG_IGN);
   SolveOptions o = options;
-  o.progress = nullptr;     // the parent reports
-  o.interrupt = nullptr;    // the parent kills the child instead
+  if (options.progress) {
+    // Each report (the interior point's iterate) as a frame: 'P', then the struct.
+    o.progress = [fd](const SolveProgress& p) {
+      const char type = kProgressFrame;
+      WriteAllOrExit(fd, &type, 1);
+      WriteAllOrExit(fd, &p, sizeof(p));
+    };
+  }
+  o.interrupt = nullptr;  // the parent kills the child instead
   SolveClock clock(remaining_s, nullptr);
   LpOutcome r;
   try {
@@ -45,6 +58,8 @@ struct Header {
     r.status = SolveStatus::kError;
     r.detail = e.what();
   }
+  const char type = kOutcomeFrame;  // the outcome: 'O', then everything up to EOF
+  WriteAllOrExit(fd, &type, 1);
   Header h;
   h.status = static_cast<int32_t>(r.status);
   h.iterations = r.iterations;
@@ -114,8 +129,29 @@ LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
   close(fds[1]);
   std::vector<char> buf;
   char chunk[1 << 16];
-  double next_report = options.progress_interval_s;
+  const double offset_s = clock->Elapsed();  // the child's clock starts here
+  double next_report = offset_s + options.progress_interval_s;
   bool stopped = false;
+  bool in_outcome = false;
+  // Hands on the progress frames at the front of buf; stops at the outcome.
+  auto drain = [&]() {
+    size_t at = 0;
+    while (!in_outcome && at < buf.size()) {
+      if (buf[at] == kOutcomeFrame) {
+        in_outcome = true;
+        ++at;
+        break;
+      }
+      if (buf.size() - at < 1 + sizeof(SolveProgress)) break;
+      SolveProgress pr;
+      std::memcpy(&pr, buf.data() + at + 1, sizeof(pr));
+      at += 1 + sizeof(pr);
+      pr.wall_seconds += offset_s;
+      next_report = clock->Elapsed() + options.progress_interval_s;
+      if (options.progress) options.progress(pr);
+    }
+    buf.erase(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(at));
+  };
   for (;;) {
     pollfd p{fds[0], POLLIN, 0};
     const int ready = poll(&p, 1, 50);
@@ -124,6 +160,7 @@ LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) break;  // EOF: the child is done (or dead)
       buf.insert(buf.end(), chunk, chunk + n);
+      drain();
       continue;
     }
     if (clock->ShouldStop()) {
@@ -147,7 +184,9 @@ LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
     c.outcome.detail = clock->stopped_by_interrupt() ? "interrupted" : "time limit";
     return c;
   }
-  if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 && Parse(buf, &c.outcome)) return c;
+  if (in_outcome && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 && Parse(buf, &c.outcome)) {
+    return c;
+  }
   c.died = true;
   if (WIFSIGNALED(wstatus)) {
     c.why = "killed by signal " + std::to_string(WTERMSIG(wstatus)) + " (" +

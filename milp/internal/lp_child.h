@@ -9,9 +9,11 @@
 // costs only the attempt; the caller falls back to the simplex. The child also
 // stops at once when the clock says so (it is killed).
 //
-// The child runs SolveLpCore and sends its outcome through a pipe (status,
-// iterations, objective, x, duals, detail). Progress: the parent reports a
-// heartbeat in the root-LP phase every options.progress_interval_s.
+// The child runs SolveLpCore and sends through a pipe its progress reports
+// (the interior point's iterations and objective) and then its outcome
+// (status, iterations, objective, x, duals, detail); the parent hands the
+// reports to options.progress as they come, and adds a heartbeat in the
+// root-LP phase when the child has been silent for options.progress_interval_s.
 #ifndef THRUSTSCHED_MILP_INTERNAL_LP_CHILD_H_
 #define THRUSTSCHED_MILP_INTERNAL_LP_CHILD_H_
 

@@ -1,5 +1,6 @@
 // Scenario parser: every documented field reaches the problem/options it
-// names, and every rejection class of issue 5 produces a ScenarioError whose
+// names, and every rejection class (unknown fields, wrong types, missing
+// fields, bad durations, non-finite numbers, ...) produces a ScenarioError whose
 // message names the field (full path) and the value.
 #include "app/scenario.h"
 
@@ -19,7 +20,7 @@ namespace {
 using nlohmann::json;
 constexpr double kPi = 3.14159265358979323846;
 
-// The HCW example of the issue (Table 4.1-like), all contract fields.
+// An HCW example (Table 4.1-like) with all contract fields.
 json HcwBase() {
   return json::parse(R"({
     "name": "hcw_test",
@@ -36,7 +37,7 @@ json HcwBase() {
   })");
 }
 
-// The GEO example of the issue.
+// A GEO example (thesis Table 5.1 set-up).
 json GeoBase() {
   return json::parse(R"({
     "name": "geo_test",
@@ -375,7 +376,7 @@ TEST(ScenarioParser, HistoryForcedOffTerminalInputModeCheck) {
   EXPECT_NO_THROW(Parse(j));
 }
 
-// ---- rejections: every class of issue 5, message names the field and the value ----
+// ---- rejections: every documented class, message names the field and the value ----
 
 TEST(ScenarioParserRejects, UnknownFieldsAtEveryLevel) {
   json j = HcwBase();

@@ -247,7 +247,8 @@ TEST(Matrix, FullMatrixCoversTheIssueAndFindsEveryScenario) {
 
 TEST(Published, ThesisTablesAreSlotMultiples) {
   // Independent check of the constants: Table 4.1 and 4.2 are whole numbers of
-  // 5-min slots of 0.265 N / 4850 kg (0.016392 m/s), thesis-results.md §D.
+  // 5-min slots of 0.265 N / 4850 kg (0.016392 m/s): derived here, see
+  // data/reference/thesis_tables.json.
   const double slot = 0.265 / 4850 * 300;
   const int t41_slots[] = {1, 5, 6, 7, 8, 8, 8, 8};
   for (int d = 1; d <= 8; ++d) EXPECT_NEAR(Table41(d).value, t41_slots[d - 1] * slot, 6e-4) << d;

@@ -324,7 +324,7 @@ TEST(DiscretiseDoubleIntegratorTest, Rk4HermiteSimpsonTrapezoidAreExact) {
   // A^2 = 0: Phi = [1 h; 0 1], Gamma = [h^2/2; h] U exactly.
   const DoubleIntegrator1d di(20.0, 5.0);
   const Eigen::MatrixXd u = (Eigen::MatrixXd(1, 2) << 0.01, -0.03).finished();
-  // Steps from 0.5 s to 1 day (the 1 min .. 1 day range included).
+  // Steps from 0.5 s to 1 day (the required 1 min .. 1 day range included).
   const std::vector<double> grid = {0.0, 7.0, 100.0, 1000.0, 1000.5, 1060.5, 4660.5, 90460.5};
   for (Scheme s : {Scheme::kExactZoh, Scheme::kFrozenStart, Scheme::kFrozenMid, Scheme::kRk4,
                    Scheme::kHermiteSimpson, Scheme::kTrapezoid, Scheme::kReference}) {

@@ -102,7 +102,8 @@ TEST(OrbitalElementsTest, InclinationVectorSignsFollowTheThesisDefinition) {
 }
 
 // Gauss matrix against finite differences of the element conversion under a
-// small velocity impulse along each RTN axis (dynamics.md §12 check 4).
+// small velocity impulse along each RTN axis (the check that exposes the
+// misprinted (6,1) entry of Gazzino 2018, eq. (B.51)).
 void ExpectGaussMatchesImpulses(const EquinoctialElements& el, double rel_tol) {
   const Eigen::Matrix<double, 6, 3> g = GaussMatrix(el, kMu);
   const Vector6d rv = CartesianFromEquinoctial(el, kMu);
@@ -132,7 +133,8 @@ TEST(OrbitalElementsTest, GaussMatrixMatchesImpulseFiniteDifferences) {
 }
 
 TEST(OrbitalElementsTest, GaussMatrixAtTheStationPointIsTheThesisB) {
-  // dynamics.md §6.3: B = (1/v) [0 2a 0; s 2c 0; -c 2s 0; 0 0 c/2; 0 0 s/2; -2 0 0], kappa = 2.5 rad.
+  // Gazzino 2018 eq. (B.59) with B12 corrected to 2a (printed a), kappa = 2.5 rad:
+  // B = (1/v) [0 2a 0; s 2c 0; -c 2s 0; 0 0 c/2; 0 0 s/2; -2 0 0].
   const double a = geo::kStationRadius, k = 2.5, v = std::sqrt(kMu / a);
   const EquinoctialElements el{a, 0.0, 0.0, 0.0, 0.0, k};
   Eigen::Matrix<double, 6, 3> b;

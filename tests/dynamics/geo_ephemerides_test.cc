@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kArcsec = kDeg / 3600.0;
-constexpr double kJd2034 = 2463963.5;  // 2034-01-01 00:00 TT (check values of dynamics.md §5.5.2)
+constexpr double kJd2034 = 2463963.5;  // 2034-01-01 00:00 TT (date of the check values below)
 
 double RaDeg(const Eigen::Vector3d& v) {
   double ra = std::atan2(v.y(), v.x()) / kDeg;
@@ -46,8 +46,9 @@ Eigen::Matrix3d PrecessionJ2000ToDate(double jd_tt) {
 }
 
 TEST(EphemeridesTest, J2000SeriesMatchesTheExtractorCheckValues) {
-  // dynamics.md §5.5.2: Sun RA 280.93, Dec -23.06, r 1.47102e8 km; Moon RA 48.00,
-  // Dec +14.34, r 367957 km at 2034-01-01 00:00 TT (values printed to 0.01 deg).
+  // The series of Montenbruck & Gill 2000 (sec. 3.3.2) evaluated independently
+  // (derived here, not published values): Sun RA 280.93, Dec -23.06, r 1.47102e8 km;
+  // Moon RA 48.00, Dec +14.34, r 367957 km at 2034-01-01 00:00 TT (to 0.01 deg).
   const Eigen::Vector3d sun = SunPositionJ2000(kJd2034);
   EXPECT_NEAR(RaDeg(sun), 280.93, 0.006);
   EXPECT_NEAR(DecDeg(sun), -23.06, 0.006);
@@ -59,7 +60,8 @@ TEST(EphemeridesTest, J2000SeriesMatchesTheExtractorCheckValues) {
 }
 
 TEST(EphemeridesTest, OfDateSeriesAgreesWithErfaAfterPrecessionToJ2000) {
-  // dynamics.md §5.5.2: ERFA gives the Sun at RA 281.05 deg (J2000) on 2034-01-01;
+  // ERFA (evaluated independently, not a published value) gives the Sun at
+  // RA 281.05 deg (J2000) on 2034-01-01;
   // the of-date series (with the perihelion drift) should be within ~0.01 deg.
   const Eigen::Matrix3d p = PrecessionJ2000ToDate(kJd2034);
   const Eigen::Vector3d sun = p.transpose() * SunPositionMeanOfEpoch(kJd2034, kJd2034);

@@ -87,7 +87,8 @@ TEST(GeoForcesTest, CunninghamRecursionIsTheGradientOfTheDirectPotential) {
 }
 
 TEST(GeoForcesTest, J2ClosedFormAndDerivedCoefficients) {
-  // dynamics.md §5.5.1: J2 = -sqrt(5) C20 = 1.0826262e-3, C22 = 1.574615e-6, S22 = -9.038728e-7.
+  // Derived here from EGM2008: J2 = -sqrt(5) C20 = 1.0826262e-3, C22 = 1.574615e-6,
+  // S22 = -9.038728e-7.
   const internal::GeopotentialCoefficients cs = Coefficients(4, true, true);
   EXPECT_NEAR(-cs.c[2][0], 1.0826262e-3, 1e-10);
   EXPECT_NEAR(cs.c[2][2], 1.574615e-6, 1e-12);

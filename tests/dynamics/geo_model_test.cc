@@ -99,7 +99,7 @@ TEST(GeoLinearModelTest, Metadata) {
   EXPECT_EQ(m.state_names(), (std::vector<std::string>{"da_m", "ex", "ey", "ix", "iy", "dl_rad"}));
   EXPECT_EQ(m.output_names(), (std::vector<std::string>{"dr_m", "lat_rad", "lon_rad"}));
   const double delta = 0.05 * kDeg;
-  EXPECT_NEAR(m.state_scale()(0), delta * 42165765.0, 1e-6);  // 36.8 km (dynamics.md §1)
+  EXPECT_NEAR(m.state_scale()(0), delta * 42165765.0, 1e-6);  // 36.8 km (Gazzino 2018, sec. 4.3.3)
   EXPECT_NEAR(m.state_scale()(0), 36796.6, 0.1);
   for (int i = 1; i < 6; ++i) EXPECT_DOUBLE_EQ(m.state_scale()(i), delta);
   EXPECT_DOUBLE_EQ(m.time_scale(), 1.0 / 7.2921158553e-5);
@@ -109,7 +109,7 @@ TEST(GeoLinearModelTest, Metadata) {
 }
 
 TEST(GeoLinearModelTest, InputMatrixIsTheCorrectedThesisB) {
-  // dynamics.md §6.3, with the corrected B12 = 2 a_mp / v_mp.
+  // Gazzino 2018 eq. (B.59), corrected: the printed B12 = a_mp / v_mp is 2 a_mp / v_mp.
   const GeoLinearModel m{GeoModelOptions{}};
   const double a = geo::kStationRadius, v = std::sqrt(geo::kEarthMu / a);
   for (double t : {0.0, 3000.0, 40000.0, 6.0 * kDay}) {
@@ -124,8 +124,9 @@ TEST(GeoLinearModelTest, InputMatrixIsTheCorrectedThesisB) {
 }
 
 TEST(GeoLinearModelTest, J2OnlyMatchesTheClosedForm) {
-  // dynamics.md §6.2.1: closed-form J2 part of A(t) and d(t) at x_mp, plus the
-  // Kepler part A(6,1) = -3 n / (2 a) and the Kepler residual in d6.
+  // Closed-form J2 part of A(t) and d(t) at x_mp (derived here; the thesis prints
+  // no A(t)), plus the Kepler part A(6,1) = -3 n / (2 a) (Gazzino 2018, (B.64f))
+  // and the Kepler residual in d6.
   GeoModelOptions o;
   o.tesseral = o.sun = o.moon = o.srp = false;
   o.gravity_degree = 2;
@@ -185,8 +186,9 @@ TEST(GeoLinearModelTest, JacobianMatchesFiniteDifferencesOfTheNonlinearRate) {
 }
 
 TEST(GeoLinearModelTest, DriftMatchesTheExtractorReferenceNumbers) {
-  // dynamics.md §6.4, geopotential 4x4 only, 118 E: D1 = 1.7950e-6 km/s,
-  // D6 = 1.2821e-9 rad/s, both constant (the station point is Earth-fixed).
+  // Derived here (an independent computation, not published), geopotential 4x4
+  // only, 118 E: D1 = 1.7950e-6 km/s, D6 = 1.2821e-9 rad/s, both constant (the
+  // station point is Earth-fixed).
   GeoModelOptions geo_only;
   geo_only.sun = geo_only.moon = geo_only.srp = false;
   const GeoLinearModel m(geo_only);
@@ -195,8 +197,9 @@ TEST(GeoLinearModelTest, DriftMatchesTheExtractorReferenceNumbers) {
     EXPECT_NEAR(d(0), 1.7950e-3, 0.0001e-3);
     EXPECT_NEAR(d(5), 1.2821e-9, 0.0001e-9);
   }
-  // §3.2 / §12 check 9: over 2034 the luni-solar terms bring the mean dl/dt to
-  // about -1.4e-5 rad/day (explains a_mp = 42165.765 km), and the mean
+  // Derived here (not published): over 2034 the luni-solar terms bring the mean
+  // dl/dt to about -1.4e-5 rad/day (explains a_mp = 42165.765 km of Gazzino 2018
+  // (B.31), not Kepler-synchronous), and the mean
   // inclination-vector drift is (-1.4e-5, 1.045e-3) deg/day (thesis (ix, iy) units).
   const GeoLinearModel full{GeoModelOptions{}};
   Eigen::VectorXd mean = Eigen::VectorXd::Zero(6);

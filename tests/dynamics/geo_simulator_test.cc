@@ -50,7 +50,7 @@ TEST(GeoSimulatorTest, StationPointConversions) {
     const double kappa = 118.0 * kDeg + sim.EarthRotationAngle(t);
     EXPECT_NEAR(x(0), 42165765.0 * std::cos(kappa), 1e-6);
     EXPECT_NEAR(x(1), 42165765.0 * std::sin(kappa), 1e-6);
-    EXPECT_NEAR(x.tail<3>().norm(), 3074.6022, 1e-3);  // v_mp = 3.074602 km/s (dynamics.md §6.4)
+    EXPECT_NEAR(x.tail<3>().norm(), 3074.6022, 1e-3);  // v_mp = sqrt(mu_E / a_mp) = 3.074602 km/s
     EXPECT_GT(x.head<3>().cross(x.tail<3>())(2), 0.0);
   }
   // Relative <-> ECI round trip away from the station point.
@@ -156,7 +156,8 @@ TEST(GeoSimulatorTest, LongitudeAccelerationAt118East) {
 }
 
 TEST(GeoSimulatorTest, InclinationDriftOver2034) {
-  // dynamics.md §5.5.4: 0.764 deg/yr in 2034 (thesis (F.32): 0.758 deg/yr).
+  // About 0.76 deg/yr in 2034: Gazzino 2018 (F.32) uses 0.758 deg/yr; this force
+  // model gives 0.764 deg/yr (derived here from its mean drift, not published).
   const GeoSimulator sim{GeoModelOptions{}};
   const std::vector<double> ts = Grid(365.25 * kDay, kDay);
   const auto start = std::chrono::steady_clock::now();

@@ -1,4 +1,5 @@
-// Tests for dynamics/thrusters.h against the numbers of dynamics.md §7.1-§7.4.
+// Tests for dynamics/thrusters.h against Gazzino 2018, eqs. (1.72)-(1.80) and
+// the L1 cost (1.96)-(1.98).
 #include "dynamics/thrusters.h"
 
 #include <cmath>
@@ -21,7 +22,8 @@ constexpr double kIsp = 2005.0;    // s
 
 TEST(ThrusterSetTest, Anzel4MatchesPublishedDirections) {
   const ThrusterSet set = ThrusterSet::Anzel4(kThrust, kMass, kIsp);
-  // dynamics.md §7.1: columns NE, SE, NW, SW; rows R, T, N (6 decimals printed).
+  // Gazzino 2018 (1.73a-d) at theta 63.64 deg, alpha 7.03 deg (Table 5.1),
+  // evaluated here to 6 decimals: columns NE, SE, NW, SW; rows R, T, N.
   Eigen::Matrix<double, 3, 4> expected;
   expected << -0.889286, -0.889286, -0.889286, -0.889286,  //
       -0.109663, -0.109663, +0.109663, +0.109663,          //
@@ -40,7 +42,7 @@ TEST(ThrusterSetTest, Anzel4MatchesPublishedDirections) {
 
 TEST(ThrusterSetTest, AccelerationAndL1Factor) {
   const ThrusterSet set = ThrusterSet::Anzel4(kThrust, kMass, kIsp);
-  // dynamics.md §7.2: U_max = 0.265 / 4850 = 5.4639e-5 m/s^2.
+  // Gazzino 2018 (1.78)-(1.80) with Table 5.1: U_max = 0.265 / 4850 = 5.4639e-5 m/s^2.
   EXPECT_NEAR(set.acceleration(), 5.4639e-5, 1e-9);
   const Eigen::MatrixXd u = set.AccelerationMatrix();
   ASSERT_EQ(u.rows(), 3);
@@ -50,7 +52,7 @@ TEST(ThrusterSetTest, AccelerationAndL1Factor) {
     EXPECT_NEAR(set.L1Factor(i), kThrust / kMass * 1.442959, 1e-10);
     EXPECT_NEAR(set.L1Factor(i), u.col(i).lpNorm<1>(), 1e-18);
   }
-  // §7.4: one day of burn in the L1 metric is 6.812 m/s.
+  // One day of burn in the L1 metric of Gazzino 2018 (1.96) is 6.812 m/s (derived here).
   EXPECT_NEAR(set.L1Factor(0) * 86400.0, 6.812, 1e-3);
   EXPECT_THROW(set.L1Factor(4), std::out_of_range);
   EXPECT_THROW(set.thruster(-1), std::out_of_range);

@@ -17,8 +17,8 @@ using ::testing::ThrowsMessage;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 TEST(EpochTest, JulianDatesOfKnownInstants) {
-  // Published: J2000.0 = JD 2451545.0; 2034-01-01 0h = JD 2463963.5 (dynamics.md §5.8);
-  // 1987-04-10 0h = JD 2446895.5 (Meeus, example 12.a).
+  // Published: J2000.0 = JD 2451545.0; 1987-04-10 0h = JD 2446895.5 (Meeus,
+  // example 12.a). Derived here: 2034-01-01 0h = J2000.0 + 12418.5 d = JD 2463963.5.
   EXPECT_DOUBLE_EQ(Epoch::Parse("2000-01-01T12:00:00Z").JulianDateUtc(), 2451545.0);
   EXPECT_DOUBLE_EQ(Epoch::Parse("2034-01-01T00:00:00Z").JulianDateUtc(), 2463963.5);
   EXPECT_DOUBLE_EQ(Epoch::Parse("1987-04-10").JulianDateUtc(), 2446895.5);
@@ -99,7 +99,8 @@ TEST(GmstTest, PublishedValues) {
   EXPECT_NEAR(GmstRad(2451545.0) / kDeg, 280.46061837, 1e-8);
   // Meeus example 12.a: 1987-04-10 0h UT, GMST = 13h10m46.3668s = 197.693195 deg.
   EXPECT_NEAR(GmstRad(2446895.5) / kDeg, 197.693195, 1e-5);
-  // dynamics.md §5.8: Theta(t0) at 2034-01-01 0h = 100.7225 deg.
+  // Theta(t0) at 2034-01-01 0h = 100.7225 deg (evaluated independently from the
+  // series of Meeus eq. (12.4); not a published value).
   EXPECT_NEAR(GmstRad(Epoch::Parse("2034-01-01T00:00:00Z").JulianDateUtc()) / kDeg, 100.7225, 5e-5);
   // Sidereal rate: one solar day advances GMST by 360.98564736629 deg.
   const double d = GmstRad(2463964.5) - GmstRad(2463963.5);

@@ -1,6 +1,6 @@
 // Tests of the MPS / LP writers (model_io.h) and the CoinMpsIO reader
 // (mps_reader.h): round trips through files, exact numbers, the MPS pitfalls
-// of field-notes §2.3, golden files and every @throws.
+// other readers hit (model_io.h), golden files and every @throws.
 //
 // Golden files live in data/golden/ and are regenerated only with
 // THRUSTSCHED_UPDATE_GOLDEN=1 in the environment.
@@ -273,7 +273,7 @@ TEST(MpsWriterTest, CoinMpsIoRoundTripIsExactForOrdinaryNumbers) {
   ExpectSameNumbers(lp, back);
 }
 
-// ---- pitfalls of field-notes §2.3, one test each
+// ---- MPS pitfalls other readers hit (model_io.h), one test each
 
 TEST(MpsPitfallsTest, IntegerColumnGetsQuotedMarkersAndExplicitBounds) {
   const LpData lp = Find("integer_fractional_bound").build();
@@ -427,8 +427,8 @@ class CountingBuf : public std::streambuf {
 };
 
 TEST(MpsWriterTest, StreamsLargeModelsInChunks) {
-  // field-notes §2.3: building the whole file as one string fails for very
-  // large models; the writer must hand the stream bounded chunks.
+  // Building the whole file as one string fails for very large models (as
+  // OR-Tools' MPS export did); the writer must hand the stream bounded chunks.
   Model m("large");
   VarBlock x = m.AddVariables(20000, 0, 10, VarType::kInteger, "x");
   std::vector<RowTriplet> t;

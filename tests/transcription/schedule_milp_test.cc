@@ -1,7 +1,8 @@
 // ScheduleMilp against independent references: closed forms of the double
-// integrator (Serra 2015 §5.2, other-seeds.md §1.4.2), the published optima
-// of the thesis Table 4.1 (exact multiples of one 5-min slot), agreement of
-// formulations and encodings, and internal consistency of decoding.
+// integrator (Serra 2015 sec. 5.2.3; its on-off variant derived here), the
+// published optima of the thesis Table 4.1 (exact multiples of one 5-min
+// slot), agreement of formulations and encodings, and internal consistency of
+// decoding.
 #include <cmath>
 #include <limits>
 #include <memory>

@@ -134,7 +134,7 @@ TEST(TerminalSetsTest, MatchesThesisFacetForms) {
                             s * xip >= 0;
       // (K.14) as printed: (sin a0 - sin a1) xi1 + (cos a1 - cos a0) xi2 + sin(2 pi/K) xi- <= 0;
       // its xi1/xi2 signs are flipped relative to the cross product (a rotation
-      // by pi of the same polygon, thesis-results §A.7), so compare with the
+      // by pi of the same polygon: derived here), so compare with the
       // facet of the opposite index.
       const int g = (f + k / 2) % k;
       const bool minus = (std::sin(a0) - std::sin(a1)) * xi1 +

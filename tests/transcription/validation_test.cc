@@ -1,14 +1,15 @@
-// Validation of the transcription against published optima (issue 4):
+// Validation of the transcription against published optima:
 //
 //  1. Serra 2015 out-of-plane fixed-time minimum-fuel impulsive rendezvous
-//     (other-seeds.md §1.4.7, Tables 5.2, 5.4, 6.8, 6.9): Yamanaka-Ankersen
+//     (secs. 5.3.5, 6.5.2, Tables 5.2, 5.4, 6.8, 6.9): Yamanaka-Ankersen
 //     dynamics, impulses at the nodes of a time-uniform grid, fixed final
 //     state. The grid LP can only be worse than the continuous optimum, and
 //     must reach it within 0.1 %, with the impulses where Serra puts them.
-//  2. Serra §5.2 double integrator with on-off thrust of fixed magnitude U
-//     (other-seeds.md §1.4.2): the exact MILP optimum on a grid, derived here
-//     in closed form, and its convergence to the continuous 2.3431.
-//  3. Gazzino 2018 Table 4.2 (thesis-results.md §D.3): HCW, ideal six
+//  2. Serra 2015 sec. 5.2.3 double integrator, here with on-off thrust of
+//     fixed magnitude U: the exact MILP optimum on a grid, derived here in
+//     closed form, and its convergence to the continuous 2.3431 (also derived
+//     here; data/reference/serra_rendezvous.json).
+//  3. Gazzino 2018 Table 4.2 (sec. 4.3.3): HCW, ideal six
 //     thrusters, X0 = [0, 0, 60 km, 0, 0, 0], 7 days, window from t1 only;
 //     only the fastest case (t1 = 3 d) runs here, the others are
 //     benchmark-sized (17 s to minutes of CBC time each).
@@ -235,9 +236,10 @@ TEST(SerraOutOfPlaneTest, GtoNuf3InteriorAndFinalImpulse) {
 // ---------------------------------------------------------------------------
 // 2. Double integrator with on-off thrust of fixed magnitude U.
 //
-// Rest to rest over 1 m in 1 s with +-U along one axis (Serra §5.2 extended,
-// other-seeds.md §1.4.2): continuous optimum two end pulses of width
-// tau = (1 - sqrt(1 - 4 / U)) / 2, fuel 2 U tau (U = 8: 0.14645 s, 2.3431).
+// Rest to rest over 1 m in 1 s with +-U along one axis (Serra 2015 sec. 5.2.3,
+// extended to on-off thrust; derived here): continuous optimum two end pulses
+// of width tau = (1 - sqrt(1 - 4 / U)) / 2, fuel 2 U tau (U = 8: 0.14645 s,
+// 2.3431).
 //
 // Exact MILP optimum on N equal intervals, h = 1 / N [derived]. Thrust in
 // interval j (0-based) contributes U h^2 (N - j - 1/2) to x(1) and U h to
@@ -434,7 +436,8 @@ nlohmann::json Table42Row(double t1_days) {
 // Checks one Table 4.2 case. The objective is a whole number of 5-min slots
 // of one ideal thruster (the objective step lets CBC prove optimality, so the
 // 1e-3 gap still gives the exact optimum); it must be within 1 % of the
-// published value (the issue's criterion) and above the impulsive bound:
+// published value (the acceptance tolerance for Table 4.2) and above the
+// impulsive bound:
 // z(tf) = z0 cos(n tf) - sum_i dv_i sin(n (tf - t_i)) / n must reach the window at
 // tf, so sum_i dv_i >= n (z0 cos(n tf) - delta) whatever the burns.
 // Returns the number of slots.
