@@ -99,7 +99,7 @@ def test_no_solution_is_a_status_not_an_exception():
 
 def test_progress_callback_receives_dicts_in_this_thread():
     seen = []
-    res = ts.solve(SCENARIOS / "hcw_table41_1d.json", search=False, progress=seen.append, progress_interval_s=0.05)
+    res = ts.solve(SCENARIOS / "hcw_table41_1d.json", progress=seen.append, progress_interval_s=0.05)
     assert res.status == "optimal"
     assert seen, "no progress event"
     assert all(isinstance(d, dict) and "phase" in d for d in seen)
