@@ -457,8 +457,8 @@ void WriteJsonFile(const std::string& path, const nlohmann::json& json) {
   WriteTextFile(path, json.dump(2) + "\n");
 }
 
-void WriteScheduleCsv(const std::string& path, const Scenario& s,
-                      const std::vector<transcription::Burn>& burns, const ReplayLeg* replay) {
+std::string ScheduleCsvText(const Scenario& s, const std::vector<transcription::Burn>& burns,
+                            const ReplayLeg* replay) {
   std::ostringstream os;
   os << "thruster,start_s,end_s,duration_s";
   std::vector<BurnFacts> facts;
@@ -479,11 +479,16 @@ void WriteScheduleCsv(const std::string& path, const Scenario& s,
     }
     os << "\n";
   }
-  WriteTextFile(path, os.str());
+  return os.str();
 }
 
-void WriteImpulsesCsv(const std::string& path, const Scenario& s,
-                      const std::vector<transcription::Impulse>& impulses) {
+void WriteScheduleCsv(const std::string& path, const Scenario& s,
+                      const std::vector<transcription::Burn>& burns, const ReplayLeg* replay) {
+  WriteTextFile(path, ScheduleCsvText(s, burns, replay));
+}
+
+std::string ImpulsesCsvText(const Scenario& s,
+                            const std::vector<transcription::Impulse>& impulses) {
   std::ostringstream os;
   os << "thruster,node,time_s,delta_v_m_s\n";
   const std::vector<std::string> names = s.thruster_names();
@@ -492,7 +497,12 @@ void WriteImpulsesCsv(const std::string& path, const Scenario& s,
     std::snprintf(dv, sizeof(dv), "%.17g", i.delta_v_m_s);
     os << names.at(i.thruster) << "," << i.node << "," << Fmt(i.time_s) << "," << dv << "\n";
   }
-  WriteTextFile(path, os.str());
+  return os.str();
+}
+
+void WriteImpulsesCsv(const std::string& path, const Scenario& s,
+                      const std::vector<transcription::Impulse>& impulses) {
+  WriteTextFile(path, ImpulsesCsvText(s, impulses));
 }
 
 std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const Scenario& s) {
@@ -580,9 +590,8 @@ std::vector<std::string> TrajectoryColumns(const Scenario& s, bool with_nonlinea
   return c;
 }
 
-void WriteTrajectoryCsv(const std::string& path, const Scenario& s,
-                        const transcription::CheckReport& r,
-                        const std::vector<transcription::Burn>& burns) {
+std::string TrajectoryCsvText(const Scenario& s, const transcription::CheckReport& r,
+                              const std::vector<transcription::Burn>& burns) {
   const bool nl = s.model_type == ModelType::kGeo && r.nonlinear_checked &&
                   r.nonlinear_eci.size() == r.sample_times.size();
   const std::vector<std::string> cols = TrajectoryColumns(s, nl);
@@ -617,11 +626,17 @@ void WriteTrajectoryCsv(const std::string& path, const Scenario& s,
     for (int f : OnFlags(s, burns, t)) os << "," << f;
     os << "\n";
   }
-  WriteTextFile(path, os.str());
+  return os.str();
 }
 
-void WriteImpulsiveTrajectoryCsv(const std::string& path, const Scenario& s,
-                                 const std::vector<transcription::Impulse>& impulses) {
+void WriteTrajectoryCsv(const std::string& path, const Scenario& s,
+                        const transcription::CheckReport& r,
+                        const std::vector<transcription::Burn>& burns) {
+  WriteTextFile(path, TrajectoryCsvText(s, r, burns));
+}
+
+std::string ImpulsiveTrajectoryCsvText(const Scenario& s,
+                                       const std::vector<transcription::Impulse>& impulses) {
   const transcription::ScheduleProblem& p = s.problem;
   const dynamics::LinearModel& model = *p.model;
   const int nn = p.num_intervals();
@@ -671,7 +686,12 @@ void WriteImpulsiveTrajectoryCsv(const std::string& path, const Scenario& s,
     for (int k = 0; k < q; ++k) write_row(samples[k], xs[k], none);
     x = xs.back();
   }
-  WriteTextFile(path, os.str());
+  return os.str();
+}
+
+void WriteImpulsiveTrajectoryCsv(const std::string& path, const Scenario& s,
+                                 const std::vector<transcription::Impulse>& impulses) {
+  WriteTextFile(path, ImpulsiveTrajectoryCsvText(s, impulses));
 }
 
 }  // namespace thrustsched::app

@@ -75,9 +75,16 @@ void WriteJsonFile(const std::string& path, const nlohmann::json& json);
 void WriteScheduleCsv(const std::string& path, const Scenario& scenario,
                       const std::vector<transcription::Burn>& burns,
                       const ReplayLeg* replay = nullptr);
+/// The text WriteScheduleCsv writes (for callers that keep it in memory,
+/// e.g. the Python package's DataFrames).
+std::string ScheduleCsvText(const Scenario& scenario, const std::vector<transcription::Burn>& burns,
+                            const ReplayLeg* replay = nullptr);
 /// Header "thruster,node,time_s,delta_v_m_s", one row per impulse (impulsive mode).
 void WriteImpulsesCsv(const std::string& path, const Scenario& scenario,
                       const std::vector<transcription::Impulse>& impulses);
+/// The text WriteImpulsesCsv writes.
+std::string ImpulsesCsvText(const Scenario& scenario,
+                            const std::vector<transcription::Impulse>& impulses);
 
 /// Reads a schedule written by WriteScheduleCsv or by hand (duration_s and
 /// the GEO columns optional; blank lines and lines starting with '#' ignored).
@@ -99,10 +106,16 @@ std::vector<std::string> TrajectoryColumns(const Scenario& scenario, bool with_n
 void WriteTrajectoryCsv(const std::string& path, const Scenario& scenario,
                         const transcription::CheckReport& report,
                         const std::vector<transcription::Burn>& burns);
+/// The text WriteTrajectoryCsv writes.
+std::string TrajectoryCsvText(const Scenario& scenario, const transcription::CheckReport& report,
+                              const std::vector<transcription::Burn>& burns);
 /// Impulsive mode: free motion between nodes with the impulses applied at the
 /// nodes, `samples_per_interval` inner samples per interval.
 void WriteImpulsiveTrajectoryCsv(const std::string& path, const Scenario& scenario,
                                  const std::vector<transcription::Impulse>& impulses);
+/// The text WriteImpulsiveTrajectoryCsv writes.
+std::string ImpulsiveTrajectoryCsvText(const Scenario& scenario,
+                                       const std::vector<transcription::Impulse>& impulses);
 
 /// The thesis drift term 2x + vy/n (m) of an HCW state (Table 4.1), NaN for
 /// other models.

@@ -978,7 +978,9 @@ void PrepareFolder(const std::string& dir, const SimulateArgs& a, std::ostream& 
 
 int RunSimulate(const SimulateArgs& a) {
   const Clock::time_point t_run = Clock::now();
-  SimulationSetup setup = LoadSimulation(a.scenario);
+  SimulationSetup setup = a.scenario_text.empty() ? LoadSimulation(a.scenario)
+                                                  : ParseSimulationText(a.scenario_text, a.scenario);
+  if (!a.scenario_text.empty()) setup.scenario.path = a.scenario;
   const std::string dir =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
   std::ostream& err = std::cerr;
@@ -996,7 +998,10 @@ int RunSimulate(const SimulateArgs& a) {
                            setup.options.start_s + setup.options.duration_s);
 
   // Ctrl-C stops the running solve; that unfinished cycle is not recorded.
-  setup.options.solve.solve.interrupt = InterruptWatcher::flag();
+  setup.options.solve.solve.interrupt = a.interrupt != nullptr ? a.interrupt : InterruptWatcher::flag();
+  auto stop_requested = [&a] {
+    return a.interrupt != nullptr ? a.interrupt->load() : InterruptWatcher::interrupted();
+  };
   if (std::getenv("THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT") != nullptr) {
     setup.options.solve.solve.progress = InterruptForTestAtIncumbent;
   }
@@ -1052,7 +1057,8 @@ int RunSimulate(const SimulateArgs& a) {
   double this_run_cycles_wall = 0;
   int this_run_cycles = 0;
   {
-    InterruptWatcher watcher;
+    std::optional<InterruptWatcher> watcher;
+    if (a.interrupt == nullptr) watcher.emplace();
     while (state.next_cycle < target) {
       const int k = state.next_cycle;
       if (!a.quiet) {
@@ -1095,7 +1101,7 @@ int RunSimulate(const SimulateArgs& a) {
       }
       // Ctrl-C during the solve: the cycle is incomplete and not recorded.
       // Ctrl-C after it (replay): the cycle is complete and recorded.
-      interrupted = rec.interrupted || InterruptWatcher::interrupted();
+      interrupted = rec.interrupted || stop_requested();
       if (rec.interrupted) break;
       // Files of the finished cycle, then the checkpoint.
       const ReplayLeg leg = CycleReplayLeg(rec, setup.options.step_s);
@@ -1118,6 +1124,7 @@ int RunSimulate(const SimulateArgs& a) {
       WriteAtomically(checkpoint, CheckpointJson(setup, state, cycles).dump(1) + "\n");
       // The totals so far ("complete": false until the last cycle).
       WriteAtomically(dir + "/year.json", YearJson(setup, cycles, total, Since(t_run)).dump(2) + "\n");
+      if (a.on_cycle) a.on_cycle(cycles.back(), state.next_cycle, target);
       if (!a.quiet) {
         const double per = this_run_cycles_wall / this_run_cycles;
         err << ProgressLine(cycles.back(), total, epoch, consumed, per * (target - state.next_cycle))
@@ -1171,6 +1178,7 @@ int RunSimulate(const SimulateArgs& a) {
     if (!p.message.empty()) err << "note: " << p.message << "\n";
   }
 
+  if (!a.print_summary) return interrupted ? kExitNoSolution : kExitOk;
   std::ostream& out = std::cout;
   const transcription::LongHorizonSummary sum = transcription::Summarise(cycles, s.problem.thrusters);
   out << "scenario      " << s.name << " (" << a.scenario << ")\n"

@@ -18,6 +18,8 @@
 #ifndef THRUSTSCHED_APP_SIMULATE_H_
 #define THRUSTSCHED_APP_SIMULATE_H_
 
+#include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,21 @@ struct SimulateArgs {
   bool no_plots = false; // write the gnuplot scripts but do not run gnuplot
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers: the whole run's replay and burns
+
+  // For callers other than the CLI (the Python package):
+  /// Non-empty: the scenario's JSON text, parsed instead of reading `scenario`
+  /// (which still names it in messages, resolves its relative paths and gives
+  /// the default output folder).
+  std::string scenario_text;
+  /// Set: the stop request (the solve of the running cycle stops and the run
+  /// ends as on Ctrl-C); no signal watcher is installed. Null: the CLI's
+  /// watcher (app/interrupt.h).
+  const std::atomic<bool>* interrupt = nullptr;
+  /// Called after each finished cycle (from the calling thread) with its
+  /// record, the number of cycles done and the number this run will reach.
+  std::function<void(const transcription::CycleRecord&, int done, int target)> on_cycle;
+  /// False: nothing is written to stdout (the human summary).
+  bool print_summary = true;
 };
 
 /// Exit codes: 0 every requested cycle ran (fallbacks included: see year.json),

@@ -12,6 +12,8 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   coinor-cbc glpk-utils python3-scipy gnuplot-nox
+  # the Python package (python/) and its tests
+  pybind11-dev python3-dev python3-numpy python3-pandas python3-matplotlib python3-pytest
 )
 
 # THRUSTSCHED_DEPS_PACKAGES (space-separated) replaces the list: used by the

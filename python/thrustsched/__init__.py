@@ -1,0 +1,35 @@
+"""thrustsched: minimum-fuel firing schedules for spacecraft with on-off thrusters (MILP, CBC).
+
+    import thrustsched as ts
+    scn = ts.Scenario.load("data/scenarios/hcw_table41_2d.json")
+    res = ts.solve(scn, time_limit_s=60, threads=2)     # GIL released while CBC runs
+    res.status, res.objective, res.gap, res.check.operational_ok
+    res.schedule, res.trajectory                          # pandas DataFrames
+    res.plot()                                            # matplotlib figures
+    ts.check(scn, res.schedule).passed                    # the independent checker
+    ts.export(scn, "two_days.mps")                        # MPS / LP for other solvers
+
+Also: ts.ScheduleProblem (your own Phi, Gamma, drift as numpy arrays),
+ts.dynamics (the shipped models and their discretisation), ts.milp (build,
+solve and write MILPs; extend a schedule MILP from ts.build), ts.simulate
+(the year loop). Every object is the C++ library's (thrustsched._core); the
+CLI's documentation (data/scenarios/README.md) describes the scenario fields
+and the output columns.
+"""
+from . import _core
+from . import dynamics, milp
+from ._api import build, check, export, solve
+from ._problem import BuiltSchedule, ScheduleProblem
+from ._results import CheckResult, Report, SolveResult
+from ._scenario import Scenario, ScenarioError
+from ._simulate import SimulationResult, simulate
+
+ThrusterSet = _core.dynamics.ThrusterSet
+__version__ = _core.__version__
+solver_version = _core.solver_version
+
+__all__ = [
+    "Scenario", "ScenarioError", "solve", "check", "export", "build", "simulate",
+    "SolveResult", "CheckResult", "Report", "SimulationResult", "ScheduleProblem", "BuiltSchedule",
+    "ThrusterSet", "dynamics", "milp", "solver_version", "__version__",
+]
