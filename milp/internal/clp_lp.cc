@@ -49,8 +49,14 @@ class LpStopHandler : public ClpEventHandler {
                           options_->lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
     if (!interior && (count_ & 15) != 0) return -1;
     Progress();
+    // CLP's interior point does not detect infeasibility: it iterates until
+    // a limit (tens of seconds on a one-day HCW problem). A converging solve
+    // of our models takes 40-120 iterations (a GEO week: about 70); past the cap the caller's
+    // simplex fallback classifies the LP.
+    if (interior && count_ > kMaxInteriorIterations) return 0;
     return clock_->ShouldStop() ? 0 : -1;
   }
+  static constexpr unsigned kMaxInteriorIterations = 250;
   ClpEventHandler* clone() const override { return new LpStopHandler(*this); }
 
  private:
@@ -296,8 +302,8 @@ LpOutcome SolveLpCore(const LpData& lp, const CoinArrays& arrays, const SolveOpt
   }
   out.iterations = model.numberIterations();
   const int status = model.status();
-  if (status != 0 && status != 3 && status != 5 &&
-      options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover) {
+  if (status != 0 && options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover &&
+      ((status != 3 && status != 5) || !clock->ShouldStop())) {
     // The interior point does not classify infeasible or unbounded LPs well:
     // the simplex says what they are (primal: the dual simplex has called
     // feasible schedule LPs infeasible).
