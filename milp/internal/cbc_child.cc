@@ -207,7 +207,8 @@ T Take(const std::vector<char>& buf, size_t* offset) {
 
 Eigen::VectorXd TakeVector(const std::vector<char>& buf, size_t* offset, long long size) {
   Eigen::VectorXd x(size);
-  std::memcpy(x.data(), buf.data() + *offset, sizeof(double) * static_cast<size_t>(size));
+  // memcpy's pointers must not be null, even for zero bytes (an empty x has none).
+  if (size > 0) std::memcpy(x.data(), buf.data() + *offset, sizeof(double) * static_cast<size_t>(size));
   *offset += sizeof(double) * static_cast<size_t>(size);
   return x;
 }

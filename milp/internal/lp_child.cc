@@ -87,10 +87,16 @@ bool Parse(const std::vector<char>& buf, LpOutcome* out) {
   out->iterations = h.iterations;
   out->min_objective = h.min_objective;
   out->x.resize(h.num_x);
-  std::memcpy(out->x.data(), buf.data() + at, sizeof(double) * static_cast<size_t>(h.num_x));
+  // memcpy's pointers must not be null, even for zero bytes (an empty vector has none).
+  if (h.num_x > 0) {
+    std::memcpy(out->x.data(), buf.data() + at, sizeof(double) * static_cast<size_t>(h.num_x));
+  }
   at += sizeof(double) * static_cast<size_t>(h.num_x);
   out->duals.resize(h.num_duals);
-  std::memcpy(out->duals.data(), buf.data() + at, sizeof(double) * static_cast<size_t>(h.num_duals));
+  if (h.num_duals > 0) {
+    std::memcpy(out->duals.data(), buf.data() + at,
+                sizeof(double) * static_cast<size_t>(h.num_duals));
+  }
   at += sizeof(double) * static_cast<size_t>(h.num_duals);
   out->detail.assign(buf.data() + at, static_cast<size_t>(h.detail_size));
   return true;

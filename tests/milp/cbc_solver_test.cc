@@ -440,6 +440,12 @@ TEST(CbcSolverTest, WaitingForTheDriverDoesNotSpendTheTimeLimit) {
 // for each other, and each gives the answer it gives alone (node limit, one
 // thread: deterministic).
 TEST(CbcSolverTest, ChildProcessSolvesRunInParallel) {
+#if defined(__SANITIZE_ADDRESS__)
+  // Three threads fork at once: a child can inherit a lock of ASan's own
+  // allocator held by another thread at that moment and wait for it forever
+  // (glibc's malloc, which the other builds use, resets its locks at fork).
+  GTEST_SKIP() << "concurrent fork under AddressSanitizer can deadlock in its allocator";
+#endif
   std::vector<LpData> models;
   for (unsigned seed = 11; seed <= 13; ++seed) models.push_back(RandomKnapsack(400, 20, seed));
   SolveOptions o;
