@@ -4,6 +4,7 @@
 //   thrustsched-bench [--quick] [--scenarios GLOB] [--out DIR] [--threads N]
 //                     [--time-limit S] [--repeats K] [--cases GLOB] [--merge]
 //                     [--report-only] [--list] [--year-results DIR]
+//                     [--external-time-limit S] [--keep-mps]
 //
 // Writes DIR/results.csv, DIR/report.md, DIR/*.svg, DIR/meta.json and
 // DIR/runs/ (one JSON result file and one solver trace per run). Each run is
@@ -65,6 +66,12 @@ int main(int argc, char** argv) {
                  "time limit (s) of each matrix solve; the target cases keep their own "
                  "(600 s and 120 s); the constrained-final-state week uses max(S, 120)")
       ->check(CLI::PositiveNumber);
+  double external_time_limit = 0.0;
+  app.add_option("--external-time-limit", external_time_limit,
+                 "time limit (s) of each external cross-check solver (cbc, glpsol, HiGHS); "
+                 "default min(30, --time-limit), --quick 600 (a guard: quick runs stop at a "
+                 "node limit)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--repeats", repeats, "repeats of the timing-target cases")
       ->check(CLI::Range(1, 20));
   app.add_option("--data-dir", data_dir, "data directory (scenarios/ inside)");
@@ -78,7 +85,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-fork", no_fork, "run cases in-process (debugging; peak RSS not per case)");
   app.add_flag("--keep-mps", keep_mps,
                "keep the MPS files of the external cross-check and the external solvers' raw "
-               "output (.sol, .log, .glpsol.txt; removed otherwise)");
+               "output (.sol, .log, .glpsol.txt, .highs.txt; removed otherwise)");
   app.add_flag("--merge", merge,
                "keep the rows of DIR/results.csv whose cases are not run again (partial re-runs)");
   try {
@@ -104,6 +111,7 @@ int main(int argc, char** argv) {
     mo.threads = threads;
     mo.time_limit_s = time_limit;
     mo.timing_repeats = repeats;
+    mo.external_time_limit_s = external_time_limit;
     std::vector<bench::CaseSpec> cases;
     for (bench::CaseSpec& c : bench::BuildMatrix(mo)) {
       if (fnmatch(case_glob.c_str(), c.id.c_str(), 0) == 0) cases.push_back(std::move(c));

@@ -1,11 +1,13 @@
 // Pieces shared by the case executors of thrustsched-bench (runner.cc,
-// conjunction_case.cc): the case's scenario with its merge patch applied, and
-// the columns every row of a case carries.
+// conjunction_case.cc, external_solvers.cc): the case's scenario with its
+// merge patch applied, the columns every row of a case carries, file reading.
 //
 //   app::Scenario s = bench::LoadPatched(spec);
 //   bench::Row r = bench::BaseRow(spec, repeat, s);
 #ifndef THRUSTSCHED_BENCHMARKS_BENCH_CASE_COMMON_H_
 #define THRUSTSCHED_BENCHMARKS_BENCH_CASE_COMMON_H_
+
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +23,8 @@ app::Scenario LoadPatched(const CaseSpec& spec, const nlohmann::json& extra = {}
 /// section, case_id, repeat, variant, scenario, model, scheme, formulation,
 /// encoding, step, horizon, thruster count, published value and note.
 Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s);
+/// The whole file as text. @throws std::runtime_error naming the path.
+std::string ReadTextFile(const std::string& path);
 
 }  // namespace thrustsched::bench
 

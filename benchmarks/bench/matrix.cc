@@ -65,7 +65,9 @@ class Builder {
     c.kind = kind;
     c.threads = o_.threads;
     c.time_limit_s = o_.time_limit_s;
-    c.external_time_limit_s = o_.quick ? 10.0 : std::min(30.0, o_.time_limit_s);
+    c.external_time_limit_s = o_.external_time_limit_s > 0.0 ? o_.external_time_limit_s
+                              : o_.quick                      ? 10.0
+                                                              : std::min(30.0, o_.time_limit_s);
     return c;
   }
 
@@ -313,6 +315,9 @@ void AddFormulations(Builder* b, const MatrixOptions& o) {
     c.patch = Transcription("sparse", encoding);
     bound_by_dual(&c);
     c.variant = std::string("sparse, ") + encoding;
+    // The operational problem's size (36k columns): where the external
+    // solvers stand on the model the year simulation solves every week.
+    c.external = std::string(encoding) == "tight";
     b->Add(c, std::string("sparse-") + encoding);
   }
 }
@@ -498,7 +503,7 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
       c.max_nodes = kQuickMaxNodes;
       c.time_limit_s = kQuickGuardSeconds;
       c.lp_relaxation_time_limit_s = kQuickGuardSeconds;
-      c.external_time_limit_s = kQuickGuardSeconds;
+      if (options.external_time_limit_s <= 0.0) c.external_time_limit_s = kQuickGuardSeconds;
     }
   }
   return cases;

@@ -103,6 +103,7 @@ struct MatrixOptions {
   int threads = 2;                         // CBC threads of matrix solves (targets fixed)
   double time_limit_s = 60.0;              // per matrix solve (targets fixed)
   int timing_repeats = 3;                  // repeats of the timing-target cases
+  double external_time_limit_s = 0.0;      // cross-check solvers; 0: min(30 s, time_limit_s)
 };
 
 /// The cases, in run order. Scenario files are located but not parsed.

@@ -21,6 +21,7 @@
 
 #include "app/plots.h"
 #include "benchmarks/bench/accuracy.h"
+#include "benchmarks/bench/external_solvers.h"
 #include "benchmarks/bench/matrix.h"
 #include "benchmarks/bench/report_conjunction.h"
 #include "benchmarks/bench/report_format.h"
@@ -766,15 +767,19 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
   }
 
   md << "### 3.2 Cross-check with other solvers\n\n";
-  md << "Where the `cbc` program or `glpsol` is installed, the exported free-MPS file of each "
-        "Table 4.1/4.2 case (sparse, tight) is solved by it with the same time limit as ours "
-        "(external limit "
-     << "shown in seconds); its objective is the model's objective, so it compares directly "
+  md << "Where the `cbc` program, `glpsol` or HiGHS (npm `highs`, its WebAssembly build, one "
+        "thread; scripts/install-highs.sh) is installed, the exported free-MPS file of each "
+        "Table 4.1/4.2 case and of the GEO week (sparse, tight) is solved by it with the external "
+        "time limit of the run (`--external-time-limit`, default min(30 s, `--time-limit`)); "
+        "times are wall clock of the whole process, model reading included; its objective is the model's objective, so it compares directly "
         "with ours.\n\n";
-  MdTable x({"scenario", "ours", "cbc program", "glpsol", "agreement"});
+  MdTable x({"scenario", "ours", "cbc program", "glpsol", "HiGHS", "agreement"});
   bool any = false;
   for (const Group* g : f) {
-    if (!g->first().Has("ext_cbc_status") && !g->first().Has("ext_glpsol_status")) continue;
+    if (!g->first().Has("ext_cbc_status") && !g->first().Has("ext_glpsol_status") &&
+        !g->first().Has("ext_highs_status")) {
+      continue;
+    }
     any = true;
     const double ours = g->Num("objective");
     // A CBC "no integer solution - continuous used" value is an LP bound, not
@@ -787,13 +792,16 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
     auto cell = [&](const std::string& p) {
       std::string st = g->Get("ext_" + p + "_status");
       if (st == "no solution file (exit 31744)") st = "killed by `timeout` (root LP ignores `sec`)";
+      if (st.empty() && p == "highs") return std::string("HiGHS not run (row older than HiGHS)");
+      if (st.rfind("skipped", 0) == 0) return "HiGHS " + st;
       return st + ", " + G(ext_obj(p), 6) + " in " + Sec(g->Num("ext_" + p + "_s")) + " s";
     };
     std::string agree;
-    for (const char* p : {"cbc", "glpsol"}) {
+    for (const std::string& p : ExternalSolverNames()) {
       const double o = ext_obj(p);
-      const std::string st = g->Get(std::string("ext_") + p + "_status");
-      if ((st.find("EMPTY") != std::string::npos || st.rfind("Infeasible", 0) == 0) &&
+      const std::string st = g->Get("ext_" + p + "_status");
+      if ((st.find("EMPTY") != std::string::npos || st.rfind("Infeasible", 0) == 0 ||
+           st == "infeasible") &&
           std::isfinite(ours)) {
         agree += std::string(agree.empty() ? "" : "; ") + p +
                  " **claims infeasible**, but our schedule passes the independent checker";
@@ -804,9 +812,11 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
                       ? "equal"
                       : "differs by " + G(o - ours, 3));
       }
+      const std::string beats = ExternalBeatsOptimum(g->first(), p);
+      if (!beats.empty()) agree += std::string(agree.empty() ? "" : "; ") + "**" + beats + "**";
     }
     x.Add({g->Get("scenario"), StatusCell(*g) + ", " + G(ours, 6), cell("cbc"), cell("glpsol"),
-           agree});
+           cell("highs"), agree});
   }
   if (any) {
     md << x.Str() << "\n";
@@ -1203,8 +1213,10 @@ void WriteColumns(std::ostream& md) {
         "`objective_step` (0 = off), `global_rel_err`, `observed_order_phi/gamma` (accuracy "
         "rows), `nodes`, `time_to_opt_s`, `time_within_1pct_of_opt_s`, `operational_ok`, "
         "`max_window_violation_nodes`, `window_unit`, `terminal_ok`, `terminal_error`, "
-        "`published`, `published_source`, `ratio` (objective / published), `ext_cbc_*` and "
-        "`ext_glpsol_*` (status, objective, seconds of the external cross-check), `wall_s` "
+        "`published`, `published_source`, `ratio` (objective / published), `ext_cbc_*`, "
+        "`ext_glpsol_*` and `ext_highs_*` (status, objective, seconds of the external "
+        "cross-check; HiGHS also `ext_highs_bound` and `ext_highs_gap`, its mip_dual_bound and "
+        "mip_gap), `wall_s` "
         "(whole child run), `exit` (child exit code), `note`. Times are wall-clock seconds; "
         "empty cells = not applicable or not reached.\n";
 }
@@ -1263,6 +1275,7 @@ ReportMeta CollectMeta(int argc, char** argv, bool quick) {
   ext += cbc.empty() ? "cbc program not found" : "cbc program (" + cbc + ")";
   ext += ", ";
   ext += glp.empty() ? "glpsol not found" : glp;
+  ext += ", " + HighsVersionNote();
   m.external = ext;
   m.build_type = THRUSTSCHED_BUILD_TYPE;
   return m;

@@ -40,7 +40,11 @@ const std::vector<std::string>& ResultColumns() {
           "max_risk", "max_risk_unmanoeuvred", "published_risk_unmanoeuvred", "mc_samples",
           "mc_collisions_linear", "mc_collisions_nonlinear", "mc_min_distance_m", "verify_s",
           "wall_s", "cpu_s", "load_1min", "exit", "solver_path", "search_steps", "target_1pct_s",
-          "target_opt_s", "target_gap", "target_gap_s", "note"}) {
+          "target_opt_s", "target_gap", "target_gap_s", "note",
+          // Added after the first published results.csv: appended, so that
+          // every earlier column keeps its position.
+          "ext_highs_status", "ext_highs_objective", "ext_highs_s", "ext_highs_bound",
+          "ext_highs_gap"}) {
       c.push_back(name);
     }
     return c;

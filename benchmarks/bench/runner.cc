@@ -25,6 +25,7 @@
 #include "benchmarks/bench/accuracy.h"
 #include "benchmarks/bench/case_common.h"
 #include "benchmarks/bench/conjunction_case.h"
+#include "benchmarks/bench/external_solvers.h"
 #include "dynamics/discretisation.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
@@ -65,14 +66,6 @@ double LoadAverage1Min() {
   double load = std::numeric_limits<double>::quiet_NaN();
   in >> load;
   return load;
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 std::string RunFileStem(const CaseSpec& spec, int repeat, const RunContext& ctx) {
@@ -160,94 +153,6 @@ struct TracePoint {
 double GapOf(double objective, double bound) {
   if (!std::isfinite(objective) || !std::isfinite(bound)) return kNaN;
   return std::abs(objective - bound) / std::max(1e-10, std::abs(objective));
-}
-
-// External cross-check: the other program solves the exported MPS file.
-struct ExternalResult {
-  std::string status = "not run";
-  double objective = kNaN;
-  double seconds = kNaN;
-};
-
-std::string FirstLineContaining(const std::string& text, const std::string& needle) {
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.find(needle) != std::string::npos) return line;
-  }
-  return "";
-}
-
-std::string Trim(std::string s) {
-  const auto b = s.find_first_not_of(" \t");
-  const auto e = s.find_last_not_of(" \t\r");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
-
-ExternalResult RunCbcProgram(const std::string& mps, const std::string& stem, double limit) {
-  ExternalResult r;
-  const std::string sol = stem + ".cbc.sol", log = stem + ".cbc.log";
-  std::remove(sol.c_str());
-  const std::string cmd = "timeout " + std::to_string(static_cast<int>(limit) + 60) + " cbc '" +
-                          mps + "' sec " + std::to_string(limit) + " threads 1 solve solu '" +
-                          sol + "' > '" + log + "' 2>&1";
-  const auto t0 = Clock::now();
-  const int rc = std::system(cmd.c_str());
-  r.seconds = Since(t0);
-  std::ifstream in(sol);
-  std::string first;
-  if (!in || !std::getline(in, first)) {
-    const int code = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    r.status = code == 124 ? "killed by `timeout` after " + FormatValue(std::round(r.seconds)) +
-                                 " s (the root LP ignores `sec`)"
-                           : "no solution file (exit " + std::to_string(code) + ")";
-    return r;
-  }
-  // e.g. "Optimal - objective value 0.08195883" or "Stopped on time - objective value 1.75"
-  const auto dash = first.find(" - objective value");
-  r.status = Trim(dash == std::string::npos ? first : first.substr(0, dash));
-  if (dash != std::string::npos) {
-    r.objective = std::strtod(first.c_str() + dash + 18, nullptr);
-  }
-  // "Stopped on time (no integer solution - continuous used)": the value is
-  // the LP relaxation's, not a schedule's.
-  if (r.status.rfind("Infeasible", 0) == 0 || r.status.find("no solution") != std::string::npos ||
-      r.status.find("no integer solution") != std::string::npos) {
-    r.objective = kNaN;
-  }
-  return r;
-}
-
-ExternalResult RunGlpsol(const std::string& mps, const std::string& stem, double limit) {
-  ExternalResult r;
-  const std::string out = stem + ".glpsol.txt", log = stem + ".glpsol.log";
-  std::remove(out.c_str());
-  const std::string cmd = "timeout " + std::to_string(static_cast<int>(limit) + 60) +
-                          " glpsol --freemps '" + mps + "' --tmlim " +
-                          std::to_string(static_cast<int>(std::ceil(limit))) + " -o '" + out +
-                          "' > '" + log + "' 2>&1";
-  const auto t0 = Clock::now();
-  const int rc = std::system(cmd.c_str());
-  r.seconds = Since(t0);
-  std::string text;
-  try {
-    text = ReadFile(out);
-  } catch (const std::exception&) {
-    const int code = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    r.status = code == 124 ? "killed by `timeout` after " + FormatValue(std::round(r.seconds)) + " s"
-                           : "no output (exit " + std::to_string(code) + ")";
-    return r;
-  }
-  // "Status:     INTEGER OPTIMAL" / "INTEGER NON-OPTIMAL" / "INTEGER UNDEFINED" / "INTEGER EMPTY"
-  const std::string status = FirstLineContaining(text, "Status:");
-  r.status = Trim(status.empty() ? "unknown" : status.substr(status.find(':') + 1));
-  const std::string obj = FirstLineContaining(text, "Objective:");
-  const auto eq = obj.find('=');
-  if (eq != std::string::npos && r.status.find("UNDEFINED") == std::string::npos &&
-      r.status.find("EMPTY") == std::string::npos) {
-    r.objective = std::strtod(obj.c_str() + eq + 1, nullptr);
-  }
-  return r;
 }
 
 std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext& ctx) {
@@ -417,26 +322,12 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
     const std::string mps = stem + ".mps";
     milp::WriteMpsFile(mps, milp->lp());
     milp.reset();
-    for (const char* program : {"cbc", "glpsol"}) {
-      const std::string prefix = std::string("ext_") + program;
-      if (!ProgramAvailable(program)) {
-        r.Set(prefix + "_status", "not installed");
-        continue;
-      }
-      const ExternalResult e = std::string(program) == "cbc"
-                                   ? RunCbcProgram(mps, stem, spec.external_time_limit_s)
-                                   : RunGlpsol(mps, stem, spec.external_time_limit_s);
-      r.Set(prefix + "_status", e.status);
-      r.Set(prefix + "_objective", e.objective);
-      r.Set(prefix + "_s", e.seconds);
-    }
+    RunExternalSolvers(mps, stem, spec.external_time_limit_s, &r);
     if (!ctx.keep_mps) {
       // The figures are in the row; the model and the solvers' raw output
       // (megabytes per case) are kept only when asked for.
-      for (const std::string& f : {mps, stem + ".cbc.sol", stem + ".cbc.log", stem + ".glpsol.txt",
-                                   stem + ".glpsol.log"}) {
-        std::remove(f.c_str());
-      }
+      std::remove(mps.c_str());
+      for (const std::string& f : ExternalOutputFiles(stem)) std::remove(f.c_str());
     }
   }
   return {r};
@@ -451,7 +342,7 @@ void WriteRowsJson(const std::string& path, const std::vector<Row>& rows) {
 }
 
 std::vector<Row> ReadRowsJson(const std::string& path) {
-  const nlohmann::json j = nlohmann::json::parse(ReadFile(path));
+  const nlohmann::json j = nlohmann::json::parse(ReadTextFile(path));
   std::vector<Row> rows;
   for (const auto& obj : j) {
     Row r;
@@ -479,14 +370,17 @@ double DeadlineSeconds(const CaseSpec& spec) {
   if (spec.kind == CaseKind::kConjunction) return 600.0 + 1.5 * spec.time_limit_s;
   if (spec.kind != CaseKind::kSolve) return 1800.0;
   double d = 300.0 + 2.0 * spec.time_limit_s;  // LP relaxation + MILP, each limited
-  if (spec.external) d += 2.0 * (spec.external_time_limit_s + 60.0);
+  // Each external solver is killed at its limit + 60 s (external_solvers.cc).
+  if (spec.external) {
+    d += static_cast<double>(ExternalSolverNames().size()) * (spec.external_time_limit_s + 60.0);
+  }
   return d;
 }
 
 }  // namespace
 
 app::Scenario LoadPatched(const CaseSpec& spec, const nlohmann::json& extra) {
-  nlohmann::json j = app::ParseJsonText(ReadFile(spec.scenario_path), spec.scenario_path);
+  nlohmann::json j = app::ParseJsonText(ReadTextFile(spec.scenario_path), spec.scenario_path);
   j = MergePatch(j, spec.patch);
   if (!extra.is_null()) j = MergePatch(j, extra);
   app::ScenarioParseOptions po;
@@ -520,6 +414,14 @@ Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
   }
   if (!spec.note.empty()) r.Set("note", spec.note);
   return r;
+}
+
+std::string ReadTextFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 bool ProgramAvailable(const std::string& program) {
