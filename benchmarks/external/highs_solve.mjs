@@ -10,8 +10,10 @@
 // Output (stdout, one line):
 //   {"solver":"highs","version":"1.15.3","status":"Optimal","has_solution":true,
 //    "objective":0.0163,"bound":0.0163,"gap":0,"solve_s":1.2,"read_s":0.1}
-// or, when the package cannot be loaded or the model not read,
-//   {"solver":"highs","status":"skipped","reason":"..."}   (exit code 3).
+// or, when the package cannot be loaded,
+//   {"solver":"highs","status":"skipped","reason":"..."}   (exit code 3),
+// or, when HiGHS fails on the model (e.g. out of WebAssembly memory),
+//   {"solver":"highs","status":"error","reason":"..."}     (exit code 0).
 // status is HiGHS' model status name (highs.constants.modelStatus), e.g.
 // "optimal", "timeLimit", "infeasible"; objective/bound/gap are null when
 // HiGHS has none (bound = info mip_dual_bound, gap = info mip_gap).
@@ -111,9 +113,10 @@ try {
   // legacy highs.solve() takes LP text only.
   model = highs.createModel({ format: args.format, data: new Uint8Array(data) });
 } catch (e) {
-  // A model too large for the 32-bit WebAssembly memory (at most 4 GiB in
-  // this build's settings) fails here or in run(): a result, not a crash.
-  skip(`cannot load the model: ${e.message ?? e}`);
+  // A model too large for the WebAssembly memory (this build grows it to
+  // 2 GiB at most) fails here or in run(): a result, not a crash.
+  print({ solver: "highs", version, status: "error", reason: `cannot load the model: ${e.message ?? e}` });
+  process.exit(0);
 }
 const readS = (performance.now() - t0) / 1000;
 try {
