@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "common/constants.h"
+
 namespace thrustsched::app {
 namespace {
 
@@ -145,7 +147,7 @@ dynamics::Epoch ParseCcsdsEpoch(std::string_view text, dynamics::TimeScale scale
     throw std::invalid_argument("day of year " + std::to_string(day) + " not in 1.." + std::to_string(days_in_year));
   }
   const dynamics::Epoch jan1 = dynamics::Epoch::Parse(s.substr(0, 4) + "-01-01T" + s.substr(9));
-  return dynamics::UtcFromScale(jan1.PlusSeconds((day - 1) * 86400.0), scale);
+  return dynamics::UtcFromScale(jan1.PlusSeconds((day - 1) * common::kSecondsPerDay), scale);
 }
 
 dynamics::Epoch KvnEpoch(const std::string& source, const KvnLine& line, dynamics::TimeScale scale) {

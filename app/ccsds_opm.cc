@@ -4,11 +4,12 @@
 #include <sstream>
 
 #include "app/ccsds_kvn.h"
+#include "common/constants.h"
 
 namespace thrustsched::app {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = common::kDegToRad;
 
 // Logical blocks of an OPM, in the order §3.2 prescribes.
 enum Block { kHeader, kMetadata, kState, kKeplerian, kSpacecraft, kCovariance, kManeuver, kUserDefined };

@@ -21,26 +21,26 @@
 #include "app/plots.h"
 #include "app/run_folder.h"
 #include "app/solution_import.h"
+#include "common/format.h"
+#include "common/timing.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::app {
+
+using common::FormatG;
+using common::Since;
+
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using common::Clock;
 
 std::string F(double v, int digits = 6) {
   if (std::isnan(v)) return "n/a";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[48];
-  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-  return buf;
+  return FormatG(v, digits);
 }
 
 std::string Secs(double v) {
@@ -111,24 +111,15 @@ std::string ModelFileExtension(const std::string& path, const std::string& optio
   return ext;
 }
 
-// The model file of a scenario: its NAME is the scenario's name.
-void WriteModelFile(const std::string& path, const milp::LpData& model, const std::string& name,
-                    bool obfuscate) {
+// The model file of a scenario: its NAME is the scenario's name; every
+// failure is bad input (exit code 2).
+void WriteScenarioModelFile(const std::string& path, const milp::LpData& model, const std::string& name,
+                            bool obfuscate) {
   milp::LpData lp = model;
   lp.name = name;
-  const std::string ext = ModelFileExtension(path);
+  ModelFileExtension(path);  // a ScenarioError for a name ending in neither .mps nor .lp
   try {
-    if (ext == ".mps") {
-      milp::MpsOptions o;
-      o.obfuscate_names = obfuscate;
-      milp::WriteMpsFile(path, lp, o);
-    } else if (ext == ".lp") {
-      milp::LpFormatOptions o;
-      o.obfuscate_names = obfuscate;
-      milp::WriteLpFile(path, lp, o);
-    } else {
-      throw ScenarioError(path + ": the model file must end in .mps or .lp");
-    }
+    WriteModelFile(path, lp, obfuscate);
   } catch (const std::runtime_error& e) {
     throw ScenarioError(e.what());
   }
@@ -282,26 +273,26 @@ int RunSolve(const SolveArgs& a) {
   for (const std::string& reason : milp.infeasibility_reasons()) {
     err << "note: infeasible by construction: " << reason << "\n";
   }
-  if (!a.export_mps.empty()) WriteModelFile(a.export_mps, milp.lp(), s.name, false);
-  if (!a.export_lp.empty()) WriteModelFile(a.export_lp, milp.lp(), s.name, false);
+  if (!a.export_mps.empty()) WriteScenarioModelFile(a.export_mps, milp.lp(), s.name, false);
+  if (!a.export_lp.empty()) WriteScenarioModelFile(a.export_lp, milp.lp(), s.name, false);
 
   // Solve (progress on stderr once the solve has run for a few seconds).
   transcription::SolveScheduleOptions opt{};
   opt.build = s.build;
-  opt.solve = s.solve;
+  opt.milp = s.solve;
   opt.check_schedule = false;  // checked below, with its own timing and messages
   opt.search.enabled = s.search;
   const bool quiet = a.quiet;
   // The best incumbent seen so far: progress reports between incumbents may
   // carry NaN for it, and the line should still show it.
   auto best = std::make_shared<double>(std::nan(""));
-  opt.solve.progress = [quiet, best, &err](const milp::SolveProgress& p) {
+  opt.milp.progress = [quiet, best, &err](const milp::SolveProgress& p) {
     InterruptForTestAtIncumbent(p);
     if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
     if (quiet || p.wall_seconds < 3.0) return;
     err << "  [" << Secs(p.wall_seconds) << "] " << ProgressLine(p, *best) << "\n";
   };
-  opt.solve.interrupt = InterruptWatcher::flag();
+  opt.milp.interrupt = InterruptWatcher::flag();
   opt.prefix_diagnosis_s = s.diagnosis_time_limit_s;
   opt.announce = [quiet, &err](const std::string& what) {
     if (!quiet) err << what << " (--no-diagnose skips this)\n";
@@ -458,7 +449,7 @@ int RunSolve(const SolveArgs& a) {
 int RunExport(const ExportArgs& a) {
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   const transcription::ScheduleMilp milp(s.problem, s.build);
-  WriteModelFile(a.file, milp.lp(), s.name, a.obfuscate_names);
+  WriteScenarioModelFile(a.file, milp.lp(), s.name, a.obfuscate_names);
   std::cout << "wrote " << a.file << ": " << MilpLine(milp, s) << "\n"
             << "objective: " << ToString(s.problem.objective.kind)
             << (s.problem.objective.kind == transcription::ObjectiveKind::kPropellant ? " (kg)"

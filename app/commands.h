@@ -20,6 +20,11 @@ inline constexpr int kExitInternal = 1;      // internal error
 inline constexpr int kExitBadInput = 2;      // bad input (scenario, files, options)
 inline constexpr int kExitInfeasible = 3;    // proven infeasible
 inline constexpr int kExitNoSolution = 4;    // no solution within the limits
+/// `simulate` stopped by a signal before every requested cycle ran (continue
+/// with --resume). The same number as kExitNoSolution because the documented
+/// contract gives 4 to both (data/scenarios/README.md section 1); a name of its
+/// own so that the code says which case it means.
+inline constexpr int kExitInterrupted = 4;
 inline constexpr int kExitCheckFailed = 5;   // `check`: the schedule fails the checks
 
 struct SolveArgs {

@@ -5,20 +5,19 @@
 #include <string>
 
 #include "app/outputs.h"
+#include "common/format.h"
 
 namespace thrustsched::app {
+
+using common::FormatG;
+
 namespace {
 
 std::string G(double v, int digits = 4) {
   if (std::isnan(v)) return "n/a";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[48];
-  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-  return buf;
+  return FormatG(v, digits);
 }
-
-// JSON has no NaN or infinity: null instead.
-nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace
 
@@ -89,12 +88,12 @@ nlohmann::json ConjunctionJson(const std::optional<transcription::KeepOutStats>&
       rounds.push_back({{"budget", b.budget},
                         {"keep_out_binaries", b.binaries},
                         {"status", StatusName(b.status)},
-                        {"objective", Number(b.objective)},
-                        {"best_bound", Number(b.best_bound)},
+                        {"objective", FiniteOrNull(b.objective)},
+                        {"best_bound", FiniteOrNull(b.best_bound)},
                         {"seconds", b.seconds},
                         {"restarted", b.restarted}});
     }
-    j["solve"] = {{"start_objective", Number(cs->start_objective)},
+    j["solve"] = {{"start_objective", FiniteOrNull(cs->start_objective)},
                   {"start_label", cs->start_label},
                   {"start_seconds", cs->start_seconds},
                   {"rounds", rounds}};
@@ -110,10 +109,10 @@ nlohmann::json ConjunctionJson(const std::optional<transcription::KeepOutStats>&
                      {"faces_impossible", k.faces_impossible},
                      {"num_binaries", k.num_binaries},
                      {"num_rows", k.num_rows},
-                     {"big_m_min_m", Number(k.big_m_min_m)},
-                     {"big_m_median_m", Number(k.big_m_median_m)},
-                     {"big_m_max_m", Number(k.big_m_max_m)},
-                     {"cost_budget", Number(k.cost_budget)},
+                     {"big_m_min_m", FiniteOrNull(k.big_m_min_m)},
+                     {"big_m_median_m", FiniteOrNull(k.big_m_median_m)},
+                     {"big_m_max_m", FiniteOrNull(k.big_m_max_m)},
+                     {"cost_budget", FiniteOrNull(k.cost_budget)},
                      {"instantaneous_threshold", k.threshold},
                      {"quantile", k.quantile},
                      {"margin_max_m", k.margin_max_m},
@@ -130,21 +129,21 @@ nlohmann::json ConjunctionJson(const std::optional<transcription::KeepOutStats>&
   j["verification"] = {{"passed", v->passed()},
                        {"threshold", v->threshold},
                        {"max_risk", v->max_risk},
-                       {"max_risk_time_s", Number(v->max_risk_time_s)},
+                       {"max_risk_time_s", FiniteOrNull(v->max_risk_time_s)},
                        {"max_risk_unmanoeuvred", v->max_risk_unmanoeuvred},
-                       {"max_risk_unmanoeuvred_time_s", Number(v->max_risk_unmanoeuvred_time_s)},
-                       {"min_mean_distance_m", Number(v->min_mean_distance_m)},
-                       {"min_mean_distance_time_s", Number(v->min_mean_distance_time_s)},
-                       {"min_mean_distance_unmanoeuvred_m", Number(v->min_mean_distance_unmanoeuvred_m)},
+                       {"max_risk_unmanoeuvred_time_s", FiniteOrNull(v->max_risk_unmanoeuvred_time_s)},
+                       {"min_mean_distance_m", FiniteOrNull(v->min_mean_distance_m)},
+                       {"min_mean_distance_time_s", FiniteOrNull(v->min_mean_distance_time_s)},
+                       {"min_mean_distance_unmanoeuvred_m", FiniteOrNull(v->min_mean_distance_unmanoeuvred_m)},
                        {"monte_carlo_samples", v->samples},
                        {"monte_carlo_step_s", v->step_s},
                        {"collisions_linear", v->collisions_linear},
                        {"collisions_unmanoeuvred_linear", v->collisions_unmanoeuvred_linear},
-                       {"min_distance_linear_m", Number(v->min_distance_linear_m)},
+                       {"min_distance_linear_m", FiniteOrNull(v->min_distance_linear_m)},
                        {"nonlinear_checked", v->nonlinear_checked},
                        {"nonlinear_note", v->nonlinear_note},
                        {"collisions_nonlinear", v->collisions_nonlinear},
-                       {"min_distance_nonlinear_m", Number(v->min_distance_nonlinear_m)},
+                       {"min_distance_nonlinear_m", FiniteOrNull(v->min_distance_nonlinear_m)},
                        {"seconds", v->seconds}};
   return j;
 }

@@ -6,13 +6,14 @@
 #include <sstream>
 
 #include "app/ccsds_opm.h"
+#include "common/constants.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/keplerian.h"
 
 namespace thrustsched::app {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = common::kDegToRad;
 // Orbits further than this from the station point are not GEO station
 // keeping: the linearised model of the thesis would be meaningless there.
 constexpr double kMaxRelativeA = 0.05;     // |a - a_mp| / a_mp

@@ -1,5 +1,6 @@
 #include "app/outputs.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,29 +11,28 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/constants.h"
+#include "common/format.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
 #include "dynamics/propagation.h"
 #include "dynamics/time.h"
+#include "milp/model_io.h"
 
 namespace thrustsched::app {
+
+using common::FormatG;
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // JSON number or null for non-finite values (nlohmann writes NaN/inf as null anyway;
 // being explicit keeps the intent visible).
-nlohmann::json Num(double v) {
-  if (!std::isfinite(v)) return nullptr;
-  return v;
-}
-
 std::string Fmt(double v) {
   if (std::isnan(v)) return "nan";
-  char buf[40];
-  std::snprintf(buf, sizeof(buf), "%.15g", v);
-  return buf;
+  return FormatG(v, 15);
 }
 
 std::string Trim(const std::string& s) {
@@ -183,6 +183,11 @@ std::vector<int> OnFlags(const Scenario& s, const std::vector<transcription::Bur
 
 }  // namespace
 
+nlohmann::json FiniteOrNull(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  return v;
+}
+
 std::string StatusName(milp::SolveStatus status) {
   switch (status) {
     case milp::SolveStatus::kOptimal:
@@ -271,16 +276,16 @@ nlohmann::json CheckJson(const Scenario& s, const transcription::CheckReport& r,
                        {"thruster", v.thruster >= 0 && v.thruster < static_cast<int>(names.size())
                                         ? nlohmann::json(names[v.thruster])
                                         : nlohmann::json(nullptr)},
-                       {"time_s", Num(v.time_s)},
+                       {"time_s", FiniteOrNull(v.time_s)},
                        {"message", v.message}});
   }
   j["rule_violations"] = msgs;
   j["rule_violation_details"] = details;
   j["window_unit"] = s.window_unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.window_unit);
-  j["window_tolerance"] = s.problem.window.enabled() ? Num(s.verdict.window_tolerance) : nullptr;
+  j["window_tolerance"] = s.problem.window.enabled() ? FiniteOrNull(s.verdict.window_tolerance) : nullptr;
   j["max_window_violation"] = OutputToWindow(s, r.max_window_violation);
   j["max_window_violation_nodes"] = OutputToWindow(s, r.max_window_violation_at_nodes);
-  j["worst_time_s"] = Num(r.worst_time_s);
+  j["worst_time_s"] = FiniteOrNull(r.worst_time_s);
   j["worst_output"] = r.worst_output >= 0 ? nlohmann::json(OutputName(s, r.worst_output)) : nullptr;
   j["samples"] = r.sample_times.size();
   j["samples_per_interval"] = s.check.samples_per_interval;
@@ -289,16 +294,16 @@ nlohmann::json CheckJson(const Scenario& s, const transcription::CheckReport& r,
   std::vector<double> fs(r.final_state.data(), r.final_state.data() + r.final_state.size());
   j["final_state"] = fs;
   if (s.model_type == ModelType::kHcw && r.final_state.size() == 6) {
-    j["final_drift_term_m"] = Num(HcwDriftTerm(s, r.final_state));
+    j["final_drift_term_m"] = FiniteOrNull(HcwDriftTerm(s, r.final_state));
   }
   if (s.model_type == ModelType::kGeo) {
     j["nonlinear_checked"] = r.nonlinear_checked;
-    j["max_window_violation_nonlinear_deg"] = Num(r.max_window_violation_nonlinear_deg);
-    j["worst_time_nonlinear_s"] = Num(r.worst_time_nonlinear_s);
-    j["max_abs_lat_deg"] = Num(r.max_abs_lat_deg);
-    j["max_abs_lon_deg"] = Num(r.max_abs_lon_deg);
+    j["max_window_violation_nonlinear_deg"] = FiniteOrNull(r.max_window_violation_nonlinear_deg);
+    j["worst_time_nonlinear_s"] = FiniteOrNull(r.worst_time_nonlinear_s);
+    j["max_abs_lat_deg"] = FiniteOrNull(r.max_abs_lat_deg);
+    j["max_abs_lon_deg"] = FiniteOrNull(r.max_abs_lon_deg);
     j["time_outside_window_nonlinear_s"] =
-        r.nonlinear_checked ? Num(r.time_outside_window_nonlinear_s) : nullptr;
+        r.nonlinear_checked ? FiniteOrNull(r.time_outside_window_nonlinear_s) : nullptr;
   }
   j["check_seconds"] = check_seconds;
   return j;
@@ -338,14 +343,14 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   j["solver_version"] = sr.solver_version;
   j["interrupted"] = facts.interrupted;
   j["objective_kind"] = std::string(transcription::ToString(s.problem.objective.kind));
-  j["objective"] = sr.has_solution() ? Num(sr.objective) : nullptr;
-  j["best_bound"] = Num(sr.best_bound);
-  j["gap"] = Num(sr.gap);
+  j["objective"] = sr.has_solution() ? FiniteOrNull(sr.objective) : nullptr;
+  j["best_bound"] = FiniteOrNull(sr.best_bound);
+  j["gap"] = FiniteOrNull(sr.gap);
   j["nodes"] = sr.nodes;
   const bool has = r.has_schedule();
-  j["consumption_l1_m_s"] = has ? Num(sch.consumption_l1_m_s) : nullptr;
-  j["delta_v_m_s"] = has ? Num(sch.delta_v_m_s) : nullptr;
-  j["propellant_kg"] = has ? Num(sch.propellant_kg) : nullptr;
+  j["consumption_l1_m_s"] = has ? FiniteOrNull(sch.consumption_l1_m_s) : nullptr;
+  j["delta_v_m_s"] = has ? FiniteOrNull(sch.delta_v_m_s) : nullptr;
+  j["propellant_kg"] = has ? FiniteOrNull(sch.propellant_kg) : nullptr;
   nlohmann::json burns = nlohmann::json::array();
   for (const transcription::Burn& b : sch.burns) {
     burns.push_back({{"thruster", names[b.thruster]},
@@ -380,20 +385,20 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   j["solve_seconds"] = sr.wall_seconds;
   j["check_seconds"] = r.check_seconds;
   j["time_to_first_s"] = sr.incumbents.empty() ? nlohmann::json(nullptr)
-                                               : Num(sr.incumbents.front().wall_seconds);
+                                               : FiniteOrNull(sr.incumbents.front().wall_seconds);
   j["total_seconds"] = facts.total_seconds;
   nlohmann::json inc = nlohmann::json::array();
   for (const milp::Incumbent& c : sr.incumbents) {
     inc.push_back({{"wall_seconds", c.wall_seconds},
-                   {"objective", Num(c.objective)},
-                   {"best_bound", Num(c.best_bound)}});
+                   {"objective", FiniteOrNull(c.objective)},
+                   {"best_bound", FiniteOrNull(c.best_bound)}});
   }
   j["incumbents"] = inc;
   j["scheme"] = std::string(dynamics::ToString(s.build.discretisation.scheme));
   j["formulation"] = std::string(transcription::ToString(s.build.formulation));
   j["encoding"] = std::string(transcription::ToString(s.build.encoding));
   j["threads"] = s.solve.threads;
-  j["time_limit_s"] = Num(s.solve.time_limit_s);
+  j["time_limit_s"] = FiniteOrNull(s.solve.time_limit_s);
   j["relative_gap"] = s.solve.relative_gap;
   j["grid"] = {{"start_s", s.problem.grid.front()},
                {"end_s", s.problem.grid.back()},
@@ -404,7 +409,7 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
                    {"half_widths", s.window_half_widths},
                    {"outputs", {OutputName(s, s.problem.window.outputs[0]),
                                 OutputName(s, s.problem.window.outputs[1])}},
-                   {"enforce_from_s", Num(s.problem.window.enforce_from_s)},
+                   {"enforce_from_s", FiniteOrNull(s.problem.window.enforce_from_s)},
                    {"soft", s.problem.window.soft}};
   } else {
     j["window"] = nullptr;
@@ -423,14 +428,14 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
         {"requested", {{"min_burn_s", rules.min_burn_s},
                        {"min_off_same_s", rules.min_off_same_s},
                        {"min_gap_other_s", rules.min_gap_other_s},
-                       {"max_burn_s", Num(rules.max_burn_s)},
+                       {"max_burn_s", FiniteOrNull(rules.max_burn_s)},
                        {"max_burns_per_thruster", rules.max_burns_per_thruster}}}};
   }
   j["infeasibility_reasons"] = r.infeasibility_reasons;
   if (has && !sch.states.empty()) {
     const Eigen::VectorXd& xf = sch.states.back();
     j["final_state_discrete"] = std::vector<double>(xf.data(), xf.data() + xf.size());
-    if (s.model_type == ModelType::kHcw) j["final_drift_term_m"] = Num(HcwDriftTerm(s, xf));
+    if (s.model_type == ModelType::kHcw) j["final_drift_term_m"] = FiniteOrNull(HcwDriftTerm(s, xf));
   }
   if (r.checked) {
     if (s.impulsive()) {
@@ -443,6 +448,23 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
     j["check"] = nullptr;
   }
   return j;
+}
+
+void WriteModelFile(const std::string& path, const milp::LpData& lp, bool obfuscate_names) {
+  const size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".mps") {
+    milp::MpsOptions o;
+    o.obfuscate_names = obfuscate_names;
+    milp::WriteMpsFile(path, lp, o);
+  } else if (ext == ".lp") {
+    milp::LpFormatOptions o;
+    o.obfuscate_names = obfuscate_names;
+    milp::WriteLpFile(path, lp, o);
+  } else {
+    throw std::invalid_argument(path + ": the model file must end in .mps or .lp");
+  }
 }
 
 void WriteTextFile(const std::string& path, const std::string& text) {
@@ -493,9 +515,8 @@ std::string ImpulsesCsvText(const Scenario& s,
   os << "thruster,node,time_s,delta_v_m_s\n";
   const std::vector<std::string> names = s.thruster_names();
   for (const transcription::Impulse& i : impulses) {
-    char dv[40];
-    std::snprintf(dv, sizeof(dv), "%.17g", i.delta_v_m_s);
-    os << names.at(i.thruster) << "," << i.node << "," << Fmt(i.time_s) << "," << dv << "\n";
+    os << names.at(i.thruster) << "," << i.node << "," << Fmt(i.time_s) << "," << FormatG(i.delta_v_m_s, 17)
+       << "\n";
   }
   return os.str();
 }

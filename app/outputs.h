@@ -63,9 +63,19 @@ nlohmann::json SummaryJson(const Scenario& scenario, const transcription::Schedu
 /// no_solution, error.
 std::string StatusName(milp::SolveStatus status);
 
+/// `v` as a JSON number, or null when it is not finite (JSON has no NaN or
+/// infinity): the rule of every JSON file the CLI writes.
+nlohmann::json FiniteOrNull(double v);
+
 /// @throws std::runtime_error naming the path on I/O failure.
 void WriteTextFile(const std::string& path, const std::string& text);
 void WriteJsonFile(const std::string& path, const nlohmann::json& json);
+/// Writes `lp` as free MPS (a name ending in .mps, any case) or CPLEX LP
+/// (.lp): the one model-file writer of the CLI's `export`/`--export-*` and of
+/// Python's `milp.write`.
+/// @throws std::invalid_argument naming the path if the name ends in neither;
+/// std::runtime_error naming the path on I/O failure.
+void WriteModelFile(const std::string& path, const milp::LpData& lp, bool obfuscate_names);
 
 /// Header "thruster,start_s,end_s,duration_s", one row per burn. GEO
 /// scenarios append "start_utc,end_utc,dir_r,dir_t,dir_n,delta_v_m_s" (UTC

@@ -11,8 +11,13 @@
 #include <stdexcept>
 
 #include "app/outputs.h"
+#include "common/constants.h"
+#include "common/format.h"
 
 namespace thrustsched::app {
+
+using common::FormatG;
+
 namespace {
 
 // 1-based gnuplot column of `name` in trajectory.csv.
@@ -20,12 +25,6 @@ int Col(const std::vector<std::string>& cols, const std::string& name) {
   auto it = std::find(cols.begin(), cols.end(), name);
   if (it == cols.end()) throw std::logic_error("plots: no trajectory column " + name);
   return static_cast<int>(it - cols.begin()) + 1;
-}
-
-std::string G(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof(buf), "%.10g", v);
-  return buf;
 }
 
 // Escapes a string for a gnuplot double-quoted literal.
@@ -45,7 +44,7 @@ struct TimeAxis {
 };
 
 TimeAxis ChooseTimeAxis(double duration_s) {
-  if (duration_s >= 2 * 86400.0) return {86400.0, "time since t_0 (days)"};
+  if (duration_s >= 2 * common::kSecondsPerDay) return {common::kSecondsPerDay, "time since t_0 (days)"};
   if (duration_s >= 2 * 3600.0) return {3600.0, "time since t_0 (h)"};
   return {1.0, "time since t_0 (s)"};
 }
@@ -75,7 +74,7 @@ std::string WindowScript(const Scenario& s, bool nl) {
     os << "set xlabel 'longitude - station longitude (deg)'\n"
        << "set ylabel 'latitude (deg)'\n";
     if (w > 0) {
-      os << "w = " << G(w) << "\n"
+      os << "w = " << FormatG(w, 10) << "\n"
          << "set object 1 rect from -w,-w to w,w fillstyle empty border lc rgb 'red' lw 2\n"
          << "# show at least the box (plus 15 %), more if the trajectory leaves it\n"
          << "set xrange [*<-1.15*w:1.15*w<*]\nset yrange [*<-1.15*w:1.15*w<*]\n";
@@ -94,7 +93,7 @@ std::string WindowScript(const Scenario& s, bool nl) {
     os << "set xlabel 'y, along-track (km)'\n"
        << "set ylabel 'z, normal (km)'\n";
     if (w > 0) {
-      os << "w = " << G(w) << "\n"
+      os << "w = " << FormatG(w, 10) << "\n"
          << "set object 1 rect from -w,-w to w,w fillstyle empty border lc rgb 'red' lw 2\n"
          << "# show at least the box (plus 15 %), more if the trajectory leaves it\n"
          << "set xrange [*<-1.15*w:1.15*w<*]\nset yrange [*<-1.15*w:1.15*w<*]\n";
@@ -118,14 +117,14 @@ std::string TimelineScript(const Scenario& s) {
   const TimeAxis ax = ChooseTimeAxis(tf - t0);
   std::ostringstream os;
   os << Header("timeline.svg", 1000, 150 + 45 * m, s);
-  os << "t0 = " << G(t0) << "\nunit = " << G(ax.divisor) << "\n";
+  os << "t0 = " << FormatG(t0, 10) << "\nunit = " << FormatG(ax.divisor, 10) << "\n";
   os << "colors = \"#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #8c564b #e377c2 #7f7f7f #bcbd22 #17becf\"\n";
   os << "color(i) = word(colors, (i - 1) % 10 + 1)\n";
   os << "names = \"";
   for (int i = 0; i < m; ++i) os << (i ? " " : "") << names[i];
   os << "\"\n";
   os << "set xlabel " << Quote(ax.label) << "\n";
-  os << "set xrange [0:" << G((tf - t0) / ax.divisor) << "]\n";
+  os << "set xrange [0:" << FormatG((tf - t0) / ax.divisor, 10) << "]\n";
   os << "set key off\n";
   if (s.impulsive()) {
     os << "set title " << Quote(s.name + ": impulses (delta-v per thruster)") << "\n"
@@ -157,7 +156,7 @@ std::string OutputsScript(const Scenario& s, bool nl) {
   const TimeAxis ax = ChooseTimeAxis(s.problem.grid.back() - t0);
   std::ostringstream os;
   os << Header("outputs.svg", 1000, 900, s);
-  os << "t0 = " << G(t0) << "\nunit = " << G(ax.divisor) << "\n";
+  os << "t0 = " << FormatG(t0, 10) << "\nunit = " << FormatG(ax.divisor, 10) << "\n";
   os << "set key top right\n";
   os << "set multiplot layout 3,1 title " << Quote(s.name + ": outputs against time") << "\n";
   const std::string x = "(($1-t0)/unit)";
@@ -203,8 +202,8 @@ std::string OutputsScript(const Scenario& s, bool nl) {
          << " with lines lw 1 lc rgb '#ff7f0e' title 'nonlinear replay'";
     }
     if (p.bound > 0 && s.problem.window.enabled()) {
-      os << ", \\\n     " << G(p.bound) << " with lines lc rgb 'red' dt 2 title 'window', \\\n     "
-         << G(-p.bound) << " with lines lc rgb 'red' dt 2 notitle";
+      os << ", \\\n     " << FormatG(p.bound, 10) << " with lines lc rgb 'red' dt 2 title 'window', \\\n     "
+         << FormatG(-p.bound, 10) << " with lines lc rgb 'red' dt 2 notitle";
     }
     os << "\n";
   }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/constants.h"
 #include "dynamics/discretisation.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
@@ -17,7 +18,7 @@
 namespace thrustsched::app {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounds that keep every model and grid well defined (documented in the README).
 constexpr double kMaxAbsTime = 1e10;      // s, |start_s| and |end|
@@ -412,7 +413,7 @@ std::vector<std::string> SchemeNames() {
 }
 
 void ParseDiscretisation(JsonObject d, Scenario* s) {
-  dynamics::DiscretisationOptions& o = s->build.discretisation;
+  dynamics::DiscretizationOptions& o = s->build.discretisation;
   if (d.Has("scheme")) o.scheme = dynamics::ParseScheme(d.Choice("scheme", SchemeNames()));
   o.rk4_substeps = d.OptionalInteger("rk4_substeps", 1, 1000).value_or(1);
   if (auto tol = d.OptionalNumber("reference_tolerance", Bound::kPositive)) {

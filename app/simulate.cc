@@ -20,37 +20,33 @@
 #include "app/outputs.h"
 #include "app/plots.h"
 #include "app/run_folder.h"
+#include "common/constants.h"
+#include "common/format.h"
+#include "common/timing.h"
 #include "dynamics/time.h"
 #include "milp/cbc_solver.h"
 
 namespace thrustsched::app {
+
+using common::FormatG;
+using common::Since;
+
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
+using common::Clock;
 using transcription::CycleRecord;
 using transcription::Fallback;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+using common::kRadToDeg;
 constexpr const char* kCheckpointFormat = "thrustsched-year-checkpoint-1";
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 std::string G(double v, int digits = 12) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[48];
-  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-  return buf;
-}
-
-nlohmann::json Num(double v) {
-  if (!std::isfinite(v)) return nullptr;
-  return v;
+  return FormatG(v, digits);
 }
 
 std::string Hms(double seconds) {
@@ -170,7 +166,13 @@ class InProgressGuard {
   std::string path_;
 };
 
+// A status of checkpoint.json. The checkpoint writes milp::ToString's names
+// ("no_solution_found"), summary.json and cycles.csv write StatusName's
+// ("no_solution"): both are contracts with outside readers, so neither file
+// changes; this reader accepts both spellings instead, so a checkpoint edited
+// or produced with the summary's names still resumes.
 milp::SolveStatus ParseStatus(const std::string& name, const std::string& path) {
+  if (name == StatusName(milp::SolveStatus::kNoSolutionFound)) return milp::SolveStatus::kNoSolutionFound;
   for (milp::SolveStatus s :
        {milp::SolveStatus::kOptimal, milp::SolveStatus::kFeasible, milp::SolveStatus::kInfeasible,
         milp::SolveStatus::kUnbounded, milp::SolveStatus::kNoSolutionFound,
@@ -212,7 +214,7 @@ std::vector<double> GetNumbers(const nlohmann::json& j, const char* key, const s
 
 nlohmann::json VectorJson(const Eigen::VectorXd& v) {
   nlohmann::json a = nlohmann::json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(Num(v(i)));
+  for (int i = 0; i < v.size(); ++i) a.push_back(FiniteOrNull(v(i)));
   return a;
 }
 
@@ -284,7 +286,7 @@ void ParseLongHorizon(SimulationSetup* setup) {
   // Solver settings per cycle: the scenario's solver section, with the cycle
   // limits of this section.
   o.solve.build = s.build;
-  o.solve.solve = s.solve;
+  o.solve.milp = s.solve;
   o.solve.check = s.check;
   o.solve.check.nonlinear.reset();  // the driver replays from the true state
   o.solve.check_schedule = true;
@@ -292,18 +294,18 @@ void ParseLongHorizon(SimulationSetup* setup) {
   const nlohmann::json* solver = s.raw.contains("solver") ? &s.raw.at("solver") : nullptr;
   const bool solver_time = solver != nullptr && solver->contains("time_limit_s");
   const bool solver_gap = solver != nullptr && solver->contains("relative_gap");
-  o.solve.solve.time_limit_s = lh.OptionalNumber("cycle_time_limit_s", Bound::kPositive)
+  o.solve.milp.time_limit_s = lh.OptionalNumber("cycle_time_limit_s", Bound::kPositive)
                                    .value_or(solver_time ? s.solve.time_limit_s : 30.0);
-  o.solve.solve.relative_gap = lh.OptionalNumber("cycle_relative_gap", Bound::kNonNegative)
+  o.solve.milp.relative_gap = lh.OptionalNumber("cycle_relative_gap", Bound::kNonNegative)
                                    .value_or(solver_gap ? s.solve.relative_gap : 0.02);
-  if (auto th = lh.OptionalInteger("cycle_threads", 1, 64)) o.solve.solve.threads = *th;
+  if (auto th = lh.OptionalInteger("cycle_threads", 1, 64)) o.solve.milp.threads = *th;
   if (auto nodes = lh.OptionalInteger("cycle_max_nodes", 0, 2000000000)) {
-    o.solve.solve.max_nodes = *nodes;
+    o.solve.milp.max_nodes = *nodes;
   }
   const std::string lp =
       lh.Has("cycle_lp_algorithm") ? lh.Choice("cycle_lp_algorithm", {"barrier", "primal", "dual"})
                                    : std::string("barrier");
-  o.solve.solve.lp_algorithm = lp == "barrier"  ? milp::LpAlgorithm::kBarrier
+  o.solve.milp.lp_algorithm = lp == "barrier"  ? milp::LpAlgorithm::kBarrier
                                : lp == "primal" ? milp::LpAlgorithm::kPrimal
                                                 : milp::LpAlgorithm::kDual;
   o.soft_penalty = lh.OptionalNumber("soft_penalty", Bound::kPositive).value_or(o.soft_penalty);
@@ -388,7 +390,7 @@ std::string TrajectoryRows(const SimulationSetup& setup, const CycleRecord& c, b
     const double q = std::hypot(x(3), x(4));
     const double incl = 2.0 * std::atan(q);
     const double ix = q > 0 ? incl * x(3) / q : 0.0, iy = q > 0 ? incl * x(4) / q : 0.0;
-    os << G(t, 15) << "," << G((t - t0) / 86400.0, 10) << "," << G(y(1) * kRadToDeg, 10) << ","
+    os << G(t, 15) << "," << G((t - t0) / common::kSecondsPerDay, 10) << "," << G(y(1) * kRadToDeg, 10) << ","
        << G(y(2) * kRadToDeg, 10) << "," << G(y(0) / 1000.0, 10) << "," << G(x(1), 10) << ","
        << G(x(2), 10) << "," << G(ix * kRadToDeg, 10) << "," << G(iy * kRadToDeg, 10) << ","
        << G(x(5) * kRadToDeg, 10) << "\n";
@@ -506,7 +508,7 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
        << "names = \"";
     for (int i = 0; i < m; ++i) os << (i ? " " : "") << names[i];
     os << "\"\nset xlabel 'days since the cycle start'\n"
-       << "set xrange [0:" << G((c.applied_end_s - c.start_s) / 86400.0) << "]\n"
+       << "set xrange [0:" << G((c.applied_end_s - c.start_s) / common::kSecondsPerDay) << "]\n"
        << "set yrange [0.4:" << m << ".6]\nset ytics (";
     for (int i = 0; i < m; ++i) os << (i ? ", " : "") << "'" << names[i] << "' " << i + 1;
     os << ")\nset grid noytics\nset key off\n"
@@ -547,7 +549,7 @@ nlohmann::json CheckpointJson(const SimulationSetup& setup, const transcription:
   j["time_s"] = st.time_s;
   j["eci"] = VectorJson(st.eci);
   nlohmann::json last = nlohmann::json::array();
-  for (double e : st.last_burn_end_s) last.push_back(Num(e));  // null = never fired
+  for (double e : st.last_burn_end_s) last.push_back(FiniteOrNull(e));  // null = never fired
   j["last_burn_end_s"] = last;
   nlohmann::json c = nlohmann::json::array();
   for (const CycleRecord& r : cycles) c.push_back(CycleRecordJson(r));
@@ -682,12 +684,12 @@ nlohmann::json CycleRecordJson(const CycleRecord& r) {
                         {"detail", a.detail}});
   }
   j["attempts"] = attempts;
-  j["objective"] = Num(r.objective);
-  j["best_bound"] = Num(r.best_bound);
-  j["gap"] = Num(r.gap);
+  j["objective"] = FiniteOrNull(r.objective);
+  j["best_bound"] = FiniteOrNull(r.best_bound);
+  j["gap"] = FiniteOrNull(r.gap);
   j["nodes"] = r.nodes;
   j["solve_seconds"] = r.solve_seconds;
-  j["first_solution_seconds"] = Num(r.first_solution_seconds);
+  j["first_solution_seconds"] = FiniteOrNull(r.first_solution_seconds);
   j["build_seconds"] = r.build_seconds;
   j["check_seconds"] = r.check_seconds;
   j["replay_seconds"] = r.replay_seconds;
@@ -706,14 +708,14 @@ nlohmann::json CycleRecordJson(const CycleRecord& r) {
   j["on_time_s"] = r.on_time_s;
   j["checked"] = r.checked;
   j["rules_ok"] = r.rules_ok;
-  j["linear_window_violation_deg"] = Num(r.linear_window_violation_deg);
-  j["soft_violation_deg"] = Num(r.soft_violation_deg);
+  j["linear_window_violation_deg"] = FiniteOrNull(r.linear_window_violation_deg);
+  j["soft_violation_deg"] = FiniteOrNull(r.soft_violation_deg);
   j["max_abs_lat_deg"] = r.max_abs_lat_deg;
   j["max_abs_lon_deg"] = r.max_abs_lon_deg;
   j["max_window_violation_deg"] = r.max_window_violation_deg;
-  j["worst_time_s"] = Num(r.worst_time_s);
+  j["worst_time_s"] = FiniteOrNull(r.worst_time_s);
   j["time_outside_window_s"] = r.time_outside_window_s;
-  j["prediction_error_deg"] = Num(r.prediction_error_deg);
+  j["prediction_error_deg"] = FiniteOrNull(r.prediction_error_deg);
   j["eci_start"] = VectorJson(r.eci_start);
   j["eci_end"] = VectorJson(r.eci_end);
   j["initial_state"] = VectorJson(r.initial_state);
@@ -832,7 +834,7 @@ std::string CyclesCsvRow(const CycleRecord& r, const std::string& epoch) {
 nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRecord>& cycles,
                         int cycles_total, double this_run_wall_seconds) {
   const dynamics::ThrusterSet& thr = setup.scenario.problem.thrusters;
-  const transcription::LongHorizonSummary s = transcription::Summarise(cycles, thr);
+  const transcription::LongHorizonSummary s = transcription::Summarize(cycles, thr);
   const transcription::LongHorizonOptions& o = setup.options;
   const std::string epoch = setup.scenario.geo->epoch;
   nlohmann::json j;
@@ -843,7 +845,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   j["cycles_total"] = cycles_total;
   j["mode"] = std::string(transcription::ToString(o.mode));
   j["start_utc"] = Utc(epoch, o.start_s);
-  j["simulated_days"] = s.simulated_s / 86400.0;
+  j["simulated_days"] = s.simulated_s / common::kSecondsPerDay;
   j["consumption_l1_m_s"] = s.consumption_l1_m_s;
   j["delta_v_m_s"] = s.delta_v_m_s;
   j["propellant_kg"] = s.propellant_kg;
@@ -866,7 +868,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   j["max_abs_lat_deg"] = s.max_abs_lat_deg;
   j["max_abs_lon_deg"] = s.max_abs_lon_deg;
   j["max_window_violation_deg"] = s.max_window_violation_deg;
-  j["worst_time_s"] = Num(s.worst_time_s);
+  j["worst_time_s"] = FiniteOrNull(s.worst_time_s);
   j["worst_time_utc"] = std::isfinite(s.worst_time_s) ? nlohmann::json(Utc(epoch, s.worst_time_s))
                                                       : nlohmann::json(nullptr);
   j["box_held"] = s.max_window_violation_deg <= 0.0;
@@ -894,8 +896,9 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   j["uncontrollable"] = {{"cycles", s.uncontrollable_cycles}, {"list", unctl}};
   j["time_limited_cycles"] = s.time_limited_cycles;
   auto dist = [](const transcription::Distribution& d) {
-    return nlohmann::json{{"median", Num(d.median)}, {"p90", Num(d.p90)},  {"max", Num(d.max)},
-                          {"mean", Num(d.mean)},     {"count", d.count}};
+    return nlohmann::json{{"median", FiniteOrNull(d.median)}, {"p90", FiniteOrNull(d.p90)},
+                          {"max", FiniteOrNull(d.max)},       {"mean", FiniteOrNull(d.mean)},
+                          {"count", d.count}};
   };
   j["solve_seconds"] = dist(s.solve_seconds);
   j["gap"] = dist(s.gap);
@@ -910,7 +913,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
     fails.push_back({{"thrusters", f.thrusters},
                      {"from_s", f.from_s},
                      {"from_utc", Utc(epoch, f.from_s)},
-                     {"until_s", Num(f.until_s)},
+                     {"until_s", FiniteOrNull(f.until_s)},
                      {"opposite_also_off", f.opposite_also_off},
                      {"switched_off", f.switched_off}});
   }
@@ -925,12 +928,12 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
       {"control_s", o.mode == transcription::HorizonMode::kReceding ? o.control_s : o.cycle_s},
       {"step_s", o.step_s},
       {"duration_s", o.duration_s},
-      {"cycle_time_limit_s", Num(o.solve.solve.time_limit_s)},
-      {"cycle_relative_gap", o.solve.solve.relative_gap},
-      {"threads", o.solve.solve.threads},
-      {"cycle_max_nodes", o.solve.solve.max_nodes >= 0 ? nlohmann::json(o.solve.solve.max_nodes)
+      {"cycle_time_limit_s", FiniteOrNull(o.solve.milp.time_limit_s)},
+      {"cycle_relative_gap", o.solve.milp.relative_gap},
+      {"threads", o.solve.milp.threads},
+      {"cycle_max_nodes", o.solve.milp.max_nodes >= 0 ? nlohmann::json(o.solve.milp.max_nodes)
                                                        : nlohmann::json(nullptr)},
-      {"lp_algorithm", std::string(milp::ToString(o.solve.solve.lp_algorithm))},
+      {"lp_algorithm", std::string(milp::ToString(o.solve.milp.lp_algorithm))},
       {"scheme", std::string(dynamics::ToString(o.solve.build.discretisation.scheme))},
       {"terminal", o.terminal.kind == transcription::TerminalKind::kStationKeepingSets
                        ? nlohmann::json{{"type", "station_keeping"},
@@ -944,8 +947,8 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
       {"cycle_improve_above_gap", o.improve_above_gap},
       {"cycle_improve_max_nodes", o.improve_max_nodes >= 0
                                       ? nlohmann::json(o.improve_max_nodes)
-                                      : (o.solve.solve.max_nodes >= 0
-                                             ? nlohmann::json(5 * std::max(o.solve.solve.max_nodes, 1LL))
+                                      : (o.solve.milp.max_nodes >= 0
+                                             ? nlohmann::json(5 * std::max(o.solve.milp.max_nodes, 1LL))
                                              : nlohmann::json(nullptr))},
       {"cycle_retry_without_preprocessing", o.retry_without_preprocessing},
       {"replay_samples_per_step", o.replay_samples_per_step}};
@@ -998,12 +1001,12 @@ int RunSimulate(const SimulateArgs& a) {
                            setup.options.start_s + setup.options.duration_s);
 
   // Ctrl-C stops the running solve; that unfinished cycle is not recorded.
-  setup.options.solve.solve.interrupt = a.interrupt != nullptr ? a.interrupt : InterruptWatcher::flag();
+  setup.options.solve.milp.interrupt = a.interrupt != nullptr ? a.interrupt : InterruptWatcher::flag();
   auto stop_requested = [&a] {
     return a.interrupt != nullptr ? a.interrupt->load() : InterruptWatcher::interrupted();
   };
   if (std::getenv("THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT") != nullptr) {
-    setup.options.solve.solve.progress = InterruptForTestAtIncumbent;
+    setup.options.solve.milp.progress = InterruptForTestAtIncumbent;
   }
   auto simulator = std::make_shared<const dynamics::GeoSimulator>(*s.geo);
   const std::shared_ptr<const milp::Solver> solver(milp::MakeCbcSolver().release());
@@ -1034,13 +1037,13 @@ int RunSimulate(const SimulateArgs& a) {
   }
   if (!a.quiet) {
     err << s.name << ": " << total << " " << transcription::ToString(setup.options.mode)
-        << " cycles of " << G(setup.options.cycle_s / 86400.0, 4) << " d"
+        << " cycles of " << G(setup.options.cycle_s / common::kSecondsPerDay, 4) << " d"
         << (setup.options.mode == transcription::HorizonMode::kReceding
-                ? " (applied " + G(setup.options.control_s / 86400.0, 4) + " d)"
+                ? " (applied " + G(setup.options.control_s / common::kSecondsPerDay, 4) + " d)"
                 : std::string())
         << " at " << G(setup.options.step_s) << " s, time limit "
-        << G(setup.options.solve.solve.time_limit_s) << " s, gap "
-        << G(setup.options.solve.solve.relative_gap) << " per cycle; running cycles "
+        << G(setup.options.solve.milp.time_limit_s) << " s, gap "
+        << G(setup.options.solve.milp.relative_gap) << " per cycle; running cycles "
         << state.next_cycle + 1 << ".." << target << "; Ctrl-C stops (finished cycles are kept, "
         << "continue with --resume)\n";
   }
@@ -1089,7 +1092,7 @@ int RunSimulate(const SimulateArgs& a) {
         if (retry) {
           // The same cycle with CBC's preprocessing and presolve off.
           transcription::LongHorizonOptions safe = setup.options;
-          safe.solve.solve.presolve = false;
+          safe.solve.milp.presolve = false;
           rec = transcription::LongHorizonSimulation(s.problem, safe, simulator, solver)
                     .RunCycle(&state);
           rec.note += std::string(rec.note.empty() ? "" : "; ") +
@@ -1178,12 +1181,12 @@ int RunSimulate(const SimulateArgs& a) {
     if (!p.message.empty()) err << "note: " << p.message << "\n";
   }
 
-  if (!a.print_summary) return interrupted ? kExitNoSolution : kExitOk;
+  if (!a.print_summary) return interrupted ? kExitInterrupted : kExitOk;
   std::ostream& out = std::cout;
-  const transcription::LongHorizonSummary sum = transcription::Summarise(cycles, s.problem.thrusters);
+  const transcription::LongHorizonSummary sum = transcription::Summarize(cycles, s.problem.thrusters);
   out << "scenario      " << s.name << " (" << a.scenario << ")\n"
       << "cycles        " << sum.cycles << "/" << total << " ("
-      << transcription::ToString(setup.options.mode) << ", " << G(sum.simulated_s / 86400.0, 6)
+      << transcription::ToString(setup.options.mode) << ", " << G(sum.simulated_s / common::kSecondsPerDay, 6)
       << " days simulated)" << (interrupted ? ", interrupted" : "") << "\n"
       << "consumption   " << G(sum.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
       << G(sum.delta_v_m_s, 6) << " m/s, normal delta-v " << G(sum.normal_delta_v_m_s, 5)
@@ -1215,7 +1218,7 @@ int RunSimulate(const SimulateArgs& a) {
   for (size_t i = 0; i < files.size(); ++i) out << (i ? ", " : "") << files[i];
   out << ")\n";
   out.flush();
-  return interrupted ? kExitNoSolution : kExitOk;
+  return interrupted ? kExitInterrupted : kExitOk;
 }
 
 }  // namespace thrustsched::app

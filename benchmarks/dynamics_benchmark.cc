@@ -70,11 +70,11 @@ std::vector<double> WeekGrid(bool jitter) {
 
 void RunDiscretise(benchmark::State& state, const LinearModel& model, const Eigen::MatrixXd& u,
                    const std::vector<double>& grid) {
-  DiscretisationOptions opt;
+  DiscretizationOptions opt;
   opt.scheme = AllSchemes().at(state.range(0));
   state.SetLabel(std::string(ToString(opt.scheme)));
   for (auto _ : state) {
-    DiscreteModel dm = Discretise(model, u, grid, opt);
+    DiscreteModel dm = Discretize(model, u, grid, opt);
     benchmark::DoNotOptimize(dm.phi.back().data());
   }
   state.counters["intervals"] = static_cast<double>(grid.size() - 1);

@@ -4,7 +4,7 @@
 //
 // BM_GeoEvaluate          one GeoLinearModel::Evaluate (A, B, d at one t; target < 20 us)
 // BM_GeoEvaluateOutput    one C, C' evaluation
-// BM_DiscretiseGeoWeek/S  Discretise on the 7-day, 5-min grid (2016 intervals) with the
+// BM_DiscretiseGeoWeek/S  Discretize on the 7-day, 5-min grid (2016 intervals) with the
 //                         4 Anzel thrusters, for every scheme except "reference"
 //                         (target < 0.2 s per scheme)
 // BM_GeoSimulateWeek      nonlinear propagation of 7 days, samples every 5 min, one burn a day
@@ -14,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "common/constants.h"
 #include "dynamics/discretisation.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/geo_simulator.h"
@@ -22,7 +23,7 @@
 namespace thrustsched::dynamics {
 namespace {
 
-constexpr double kDay = 86400.0;
+constexpr double kDay = common::kSecondsPerDay;
 
 void BM_GeoEvaluate(benchmark::State& state) {
   const GeoLinearModel model{GeoModelOptions{}};
@@ -51,10 +52,10 @@ void BM_DiscretiseGeoWeek(benchmark::State& state, Scheme scheme) {
   const GeoLinearModel model{GeoModelOptions{}};
   const Eigen::MatrixXd u = ThrusterSet::Anzel4(0.265, 4850, 2005).AccelerationMatrix();
   const std::vector<double> grid = UniformGrid(0.0, 7 * kDay, 2016);
-  DiscretisationOptions options;
+  DiscretizationOptions options;
   options.scheme = scheme;
   for (auto _ : state) {
-    DiscreteModel dm = Discretise(model, u, grid, options);
+    DiscreteModel dm = Discretize(model, u, grid, options);
     benchmark::DoNotOptimize(dm);
   }
   state.counters["intervals"] = 2016;

@@ -15,6 +15,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "common/constants.h"
 #include "dynamics/discretisation.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/models.h"
@@ -24,7 +25,7 @@
 namespace thrustsched::transcription {
 namespace {
 
-constexpr double kDay = 86400.0;
+constexpr double kDay = common::kSecondsPerDay;
 
 ScheduleProblem GeoProblem(double days) {
   ScheduleProblem p;
@@ -57,7 +58,7 @@ ScheduleProblem HcwWeek() {
 }
 
 void RunBuild(benchmark::State& state, const ScheduleProblem& p, const BuildOptions& opt) {
-  const dynamics::DiscreteModel dm = dynamics::Discretise(
+  const dynamics::DiscreteModel dm = dynamics::Discretize(
       *p.model, p.thrusters.AccelerationMatrix(), p.grid, opt.discretisation);
   long long nonzeros = 0;
   for (auto _ : state) {

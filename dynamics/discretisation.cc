@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "common/error.h"
+#include "common/format.h"
 #include "dynamics/internal/adaptive_integrator.h"
 #include "dynamics/internal/scaled_model.h"
 
@@ -17,6 +19,7 @@ namespace {
 using internal::ScaledModel;
 using Frozen = ScaledModel::Frozen;
 
+// Error messages keep the name they always had (scripts may match them).
 constexpr const char* kWhere = "Discretise";
 
 // Largest 1-norm of h*M handed to Eigen's Pade approximant; larger arguments
@@ -30,7 +33,7 @@ constexpr double kMaxExpNorm = 5.371920351148152;
 // from doubles has lengths differing by a few ulps).
 constexpr double kLtiReuseTolerance = 1e-13;
 
-// All per-interval work buffers, allocated once per Discretise call.
+// All per-interval work buffers, allocated once per Discretize call.
 struct Workspace {
   Workspace(int n, int m)
       : n(n),
@@ -200,17 +203,9 @@ void ValidateGrid(const std::vector<double>& grid) {
   }
 }
 
-void ValidateOptions(const DiscretisationOptions& options) {
-  if (options.rk4_substeps < 1) {
-    throw std::invalid_argument(std::string(kWhere) + ": rk4_substeps must be >= 1, got " +
-                                std::to_string(options.rk4_substeps));
-  }
-  const double tol = options.reference_tolerance;
-  if (!std::isfinite(tol) || tol <= 0.0 || tol > 1e-3) {
-    std::ostringstream msg;
-    msg << kWhere << ": reference_tolerance must be in (0, 1e-3], got " << tol;
-    throw std::invalid_argument(msg.str());
-  }
+void ValidateOptions(const DiscretizationOptions& options) {
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(std::string(kWhere) + ": " + error);
 }
 
 }  // namespace
@@ -235,6 +230,17 @@ std::string_view ToString(Scheme scheme) {
       return "reference";
   }
   return "unknown";
+}
+
+bool DiscretizationOptions::IsValid(std::string* error) const {
+  if (rk4_substeps < 1) {
+    return common::Fail(error, "rk4_substeps must be >= 1, got " + std::to_string(rk4_substeps));
+  }
+  const double tol = reference_tolerance;
+  if (!std::isfinite(tol) || tol <= 0.0 || tol > 1e-3) {
+    return common::Fail(error, "reference_tolerance must be in (0, 1e-3], got " + common::FormatG(tol, 6));
+  }
+  return true;
 }
 
 std::vector<Scheme> AllSchemes() {
@@ -270,8 +276,8 @@ std::vector<double> UniformGrid(double t0, double t1, int num_intervals) {
   return grid;
 }
 
-DiscreteModel Discretise(const LinearModel& model, const Eigen::MatrixXd& input_columns,
-                         const std::vector<double>& grid, const DiscretisationOptions& options) {
+DiscreteModel Discretize(const LinearModel& model, const Eigen::MatrixXd& input_columns,
+                         const std::vector<double>& grid, const DiscretizationOptions& options) {
   ValidateGrid(grid);
   ValidateOptions(options);
   ScaledModel sm(model, input_columns, kWhere);

@@ -7,9 +7,9 @@
 // ThrusterSet::AccelerationMatrix()) is the acceleration of input i when on,
 // so Gamma_j = "integral of Phi(t_{j+1}, s) B(s) ds" times U.
 //
-//   dynamics::DiscretisationOptions opt;
+//   dynamics::DiscretizationOptions opt;
 //   opt.scheme = dynamics::Scheme::kHermiteSimpson;
-//   dynamics::DiscreteModel dm = dynamics::Discretise(model, thrusters.AccelerationMatrix(),
+//   dynamics::DiscreteModel dm = dynamics::Discretize(model, thrusters.AccelerationMatrix(),
 //                                                     dynamics::UniformGrid(0, 604800, 2016), opt);
 //   Eigen::VectorXd x1 = dm.phi[0] * x0 + dm.gamma[0] * u0 + dm.drift[0];
 //
@@ -84,10 +84,14 @@ std::string_view ToString(Scheme scheme);
 Scheme ParseScheme(std::string_view name);
 std::vector<Scheme> AllSchemes();
 
-struct DiscretisationOptions {
+struct DiscretizationOptions {
   Scheme scheme = Scheme::kExactZoh;
   int rk4_substeps = 1;
   double reference_tolerance = 1e-12;
+
+  /// rk4_substeps >= 1; reference_tolerance finite and in (0, 1e-3]. On
+  /// failure `*error` (if given) names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct DiscreteModel {
@@ -112,8 +116,16 @@ std::vector<double> UniformGrid(double t0, double t1, int num_intervals);
 /// @throws std::runtime_error if the reference integration (kReference, or
 ///         kExactZoh on a time-varying model) cannot meet the tolerance (step
 ///         size underflow, e.g. a tolerance far below 1e-15).
-DiscreteModel Discretise(const LinearModel& model, const Eigen::MatrixXd& input_columns,
-                         const std::vector<double>& grid, const DiscretisationOptions& options);
+DiscreteModel Discretize(const LinearModel& model, const Eigen::MatrixXd& input_columns,
+                         const std::vector<double>& grid, const DiscretizationOptions& options);
+
+// The names before the C++ API settled on -ize (as Minimize, Canonicalize).
+using DiscretisationOptions [[deprecated("renamed DiscretizationOptions")]] = DiscretizationOptions;
+[[deprecated("renamed Discretize")]] inline DiscreteModel Discretise(
+    const LinearModel& model, const Eigen::MatrixXd& input_columns, const std::vector<double>& grid,
+    const DiscretizationOptions& options) {
+  return Discretize(model, input_columns, grid, options);
+}
 
 }  // namespace thrustsched::dynamics
 

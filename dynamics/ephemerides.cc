@@ -4,12 +4,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/constants.h"
 #include "dynamics/time.h"
 
 namespace thrustsched::dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kArcsecPerTurn = 1296000.0;
 constexpr double kArcsecPerRad = 206264.806;

@@ -4,10 +4,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/constants.h"
+
 namespace thrustsched::dynamics {
 namespace {
 
-constexpr double kArcsec = 3.14159265358979323846 / (180.0 * 3600.0);
+constexpr double kArcsec = common::kPi / (180.0 * 3600.0);
 
 // Passive (frame) rotations: the coordinates of a fixed vector in axes turned
 // by `a` about x, y or z.

@@ -2,13 +2,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/constants.h"
 #include "dynamics/ephemerides.h"
 #include "dynamics/internal/geo_force_model.h"
 #include "dynamics/time.h"
 
 namespace thrustsched::dynamics::internal {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 
 double Factorial(int k) {
   double f = 1.0;
@@ -17,7 +18,7 @@ double Factorial(int k) {
 }
 }  // namespace
 
-double NormalisationFactor(int n, int m) {
+double NormalizationFactor(int n, int m) {
   return std::sqrt((m == 0 ? 1.0 : 2.0) * (2.0 * n + 1.0) * Factorial(n - m) / Factorial(n + m));
 }
 
@@ -30,11 +31,11 @@ GeoForceModel::GeoForceModel(const GeoModelOptions& options) : options_(options)
   theta0_ = GmstRad(epoch.JulianDateUtc());  // UT1 ~ UTC
   if (options_.srp) srp_coefficient_ = geo::kSolarPressure * options_.reflectivity_cr * options_.area_to_mass_m2_kg;
   coefficients_.degree = (options_.j2 || options_.tesseral) ? options_.gravity_degree : 0;
-  for (const NormalisedCoefficient& k : kEgm2008) {
+  for (const NormalizedCoefficient& k : kEgm2008) {
     if (k.n > coefficients_.degree) continue;
     if (k.m == 0 && !options_.j2) continue;
     if (k.m > 0 && !options_.tesseral) continue;
-    const double f = NormalisationFactor(k.n, k.m);
+    const double f = NormalizationFactor(k.n, k.m);
     coefficients_.c[k.n][k.m] = f * k.c;
     coefficients_.s[k.n][k.m] = f * k.s;
   }

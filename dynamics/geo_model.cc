@@ -6,28 +6,26 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/error.h"
+#include "common/format.h"
 #include "dynamics/internal/geo_dual.h"
 #include "dynamics/internal/geo_force_model.h"
 #include "dynamics/internal/geo_physics.h"
 #include "dynamics/time.h"
 
 namespace thrustsched::dynamics {
+
+using common::FormatG;
+
 namespace {
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
+// common::Fail with this struct's name in front of the message.
 bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = "GeoModelOptions: " + message;
-  return false;
+  return common::Fail(error, "GeoModelOptions: " + message);
 }
 
 void CheckTime(double t, const char* where) {
-  if (!std::isfinite(t)) throw std::invalid_argument(std::string(where) + ": t must be finite, got " + Num(t));
+  if (!std::isfinite(t)) throw std::invalid_argument(std::string(where) + ": t must be finite, got " + FormatG(t, 17));
 }
 
 void CheckState(const Eigen::VectorXd& x, const char* where) {
@@ -37,7 +35,7 @@ void CheckState(const Eigen::VectorXd& x, const char* where) {
   }
   if (!x.allFinite()) throw std::invalid_argument(std::string(where) + ": state x must be finite");
   if (!(geo::kStationRadius + x(0) > 0.0)) {
-    throw std::invalid_argument(std::string(where) + ": da_m must be > -a_mp, got " + Num(x(0)));
+    throw std::invalid_argument(std::string(where) + ": da_m must be > -a_mp, got " + FormatG(x(0), 17));
   }
   if (!(x(1) * x(1) + x(2) * x(2) < 1.0)) {
     throw std::invalid_argument(std::string(where) + ": eccentricity |(ex, ey)| must be < 1");
@@ -105,7 +103,8 @@ bool ParseInt(std::string_view v, int* out) {
 
 bool GeoModelOptions::IsValid(std::string* error) const {
   if (!std::isfinite(station_longitude_deg) || station_longitude_deg < -180.0 || station_longitude_deg > 360.0) {
-    return Fail(error, "station_longitude_deg must be finite and in [-180, 360], got " + Num(station_longitude_deg));
+    return Fail(error, "station_longitude_deg must be finite and in [-180, 360], got " +
+                           FormatG(station_longitude_deg, 17));
   }
   try {
     Epoch::Parse(epoch);
@@ -116,10 +115,10 @@ bool GeoModelOptions::IsValid(std::string* error) const {
     return Fail(error, "gravity_degree must be in 2..4, got " + std::to_string(gravity_degree));
   }
   if (!std::isfinite(area_to_mass_m2_kg) || area_to_mass_m2_kg < 0.0) {
-    return Fail(error, "area_to_mass_m2_kg must be finite and >= 0, got " + Num(area_to_mass_m2_kg));
+    return Fail(error, "area_to_mass_m2_kg must be finite and >= 0, got " + FormatG(area_to_mass_m2_kg, 17));
   }
   if (!std::isfinite(reflectivity_cr) || reflectivity_cr < 0.0 || reflectivity_cr > 2.0) {
-    return Fail(error, "reflectivity_cr must be finite and in [0, 2], got " + Num(reflectivity_cr));
+    return Fail(error, "reflectivity_cr must be finite and in [0, 2], got " + FormatG(reflectivity_cr, 17));
   }
   return true;
 }

@@ -40,6 +40,7 @@
 
 #include <Eigen/Core>
 
+#include "common/constants.h"
 #include "dynamics/linear_model.h"
 
 namespace thrustsched::dynamics {
@@ -56,7 +57,7 @@ inline constexpr double kMoonMu = 4.902800066e12;          // m^3/s^2
 inline constexpr double kAstronomicalUnit = 1.495978707e11;  // m
 inline constexpr double kSolarPressure = 4.56e-6;          // N/m^2 at 1 AU
 inline constexpr double kStationRadius = 42165765.0;       // m, a_mp (thesis (B.31))
-inline constexpr double kWindowHalfWidthRad = 0.05 * 3.14159265358979323846 / 180.0;  // delta
+inline constexpr double kWindowHalfWidthRad = 0.05 * common::kPi / 180.0;  // delta
 }  // namespace geo
 
 struct GeoModelOptions {

@@ -19,9 +19,13 @@
 
 #include <Eigen/Geometry>
 
+#include "common/format.h"
 #include "dynamics/internal/geo_force_model.h"
 
 namespace thrustsched::dynamics {
+
+using common::FormatG;
+
 namespace {
 
 namespace odeint = boost::numeric::odeint;
@@ -43,15 +47,8 @@ constexpr double kMaxStep = 1800.0;
 constexpr int kShadowProbes = 4;
 constexpr double kShadowTimeTolerance = 1e-4;  // s
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
 void CheckTime(double t, const char* where) {
-  if (!std::isfinite(t)) throw std::invalid_argument(std::string(where) + ": t must be finite, got " + Num(t));
+  if (!std::isfinite(t)) throw std::invalid_argument(std::string(where) + ": t must be finite, got " + FormatG(t, 17));
 }
 
 // Cowell right-hand side on the scaled state [r / L, v / V].
@@ -110,7 +107,7 @@ struct PulseEvent {
 GeoSimulator::GeoSimulator(const GeoModelOptions& options, double tolerance)
     : forces_(std::make_shared<const internal::GeoForceModel>(options)), tolerance_(tolerance) {
   if (!(tolerance >= 1e-14 && tolerance <= 1e-10)) {
-    throw std::invalid_argument("GeoSimulator: tolerance must be in [1e-14, 1e-10], got " + Num(tolerance));
+    throw std::invalid_argument("GeoSimulator: tolerance must be in [1e-14, 1e-10], got " + FormatG(tolerance, 17));
   }
 }
 
@@ -201,22 +198,22 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
                                   std::to_string(accel_rtn.cols()) + ")");
     }
     if (!std::isfinite(p.start_s) || !std::isfinite(p.end_s)) {
-      throw std::invalid_argument(id + ": start_s and end_s must be finite, got " + Num(p.start_s) + ", " +
-                                  Num(p.end_s));
+      throw std::invalid_argument(id + ": start_s and end_s must be finite, got " + FormatG(p.start_s, 17) + ", " +
+                                  FormatG(p.end_s, 17));
     }
     if (p.end_s < p.start_s) {
-      throw std::invalid_argument(id + ": end_s " + Num(p.end_s) + " < start_s " + Num(p.start_s));
+      throw std::invalid_argument(id + ": end_s " + FormatG(p.end_s, 17) + " < start_s " + FormatG(p.start_s, 17));
     }
   }
   for (std::size_t k = 0; k < sample_times.size(); ++k) {
     const double s = sample_times[k];
     if (!std::isfinite(s)) {
       throw std::invalid_argument("GeoSimulator::Propagate: sample_times[" + std::to_string(k) +
-                                  "] must be finite, got " + Num(s));
+                                  "] must be finite, got " + FormatG(s, 17));
     }
     if (s < t0) {
-      throw std::invalid_argument("GeoSimulator::Propagate: sample_times[" + std::to_string(k) + "] = " + Num(s) +
-                                  " is before t0 = " + Num(t0));
+      throw std::invalid_argument("GeoSimulator::Propagate: sample_times[" + std::to_string(k) +
+                                  "] = " + FormatG(s, 17) + " is before t0 = " + FormatG(t0, 17));
     }
     if (k > 0 && s < sample_times[k - 1]) {
       throw std::invalid_argument("GeoSimulator::Propagate: sample_times must be non-decreasing (index " +
@@ -290,7 +287,7 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
     long steps = 0;
     while (t < t_b) {
       if (++steps > kMaxStepsPerSegment || !(dt > 1e-6)) {
-        throw std::runtime_error("GeoSimulator::Propagate: step-size control failed near t = " + Num(t));
+        throw std::runtime_error("GeoSimulator::Propagate: step-size control failed near t = " + FormatG(t, 17));
       }
       if (srp) {  // resynchronise the frozen shadow state (guards against a missed grazing crossing)
         const bool sunlit_now = ShadowAt(*forces_, y, t) >= 0.0;
@@ -352,7 +349,7 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
       }
       const double r2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
       if (!(r2 * kLength * kLength > geo::kEarthRadius * geo::kEarthRadius)) {
-        throw std::runtime_error("GeoSimulator::Propagate: the orbit intersects the Earth at t = " + Num(t));
+        throw std::runtime_error("GeoSimulator::Propagate: the orbit intersects the Earth at t = " + FormatG(t, 17));
       }
     }
   }

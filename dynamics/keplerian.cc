@@ -5,27 +5,26 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/constants.h"
+#include "common/format.h"
+
 namespace thrustsched::dynamics {
+
+using common::FormatG;
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 constexpr double kTwoPi = 2.0 * kPi;
 // Below this tan(i/2) or e the node or the perigee is taken as undefined
 // (round-off of a state converted from exactly equatorial or circular
 // elements is ~1e-16; 1e-10 rad is 4 mm along a GEO orbit).
 constexpr double kSingular = 1e-10;
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
 void CheckEccentricity(double e, double angle, const char* where) {
   if (!std::isfinite(angle)) throw std::invalid_argument(std::string(where) + ": anomaly must be finite");
   if (!(e >= 0.0 && e < 1.0)) {
-    throw std::invalid_argument(std::string(where) + ": eccentricity must be in [0, 1), got " + Num(e));
+    throw std::invalid_argument(std::string(where) + ": eccentricity must be in [0, 1), got " + FormatG(e, 17));
   }
 }
 
@@ -65,15 +64,17 @@ EquinoctialElements EquinoctialFromKeplerian(const KeplerianElements& k) {
   for (int i = 0; i < 6; ++i) {
     if (!std::isfinite(vals[i])) {
       throw std::invalid_argument(std::string("EquinoctialFromKeplerian: ") + names[i] + " must be finite, got " +
-                                  Num(vals[i]));
+                                  FormatG(vals[i], 17));
     }
   }
-  if (!(k.a_m > 0.0)) throw std::invalid_argument("EquinoctialFromKeplerian: a_m must be > 0, got " + Num(k.a_m));
+  if (!(k.a_m > 0.0)) {
+    throw std::invalid_argument("EquinoctialFromKeplerian: a_m must be > 0, got " + FormatG(k.a_m, 17));
+  }
   if (!(k.e >= 0.0 && k.e < 1.0)) {
-    throw std::invalid_argument("EquinoctialFromKeplerian: e must be in [0, 1), got " + Num(k.e));
+    throw std::invalid_argument("EquinoctialFromKeplerian: e must be in [0, 1), got " + FormatG(k.e, 17));
   }
   if (!(k.i_rad >= 0.0 && k.i_rad < kPi)) {
-    throw std::invalid_argument("EquinoctialFromKeplerian: i_rad must be in [0, pi), got " + Num(k.i_rad));
+    throw std::invalid_argument("EquinoctialFromKeplerian: i_rad must be in [0, pi), got " + FormatG(k.i_rad, 17));
   }
   const double mean =
       k.anomaly == AnomalyKind::kMean ? k.anomaly_rad : MeanFromTrueAnomaly(k.anomaly_rad, k.e);
@@ -97,7 +98,7 @@ KeplerianElements KeplerianFromEquinoctial(const EquinoctialElements& el, Anomal
   KeplerianElements k;
   k.a_m = el.a_m;
   k.e = std::hypot(el.ex, el.ey);
-  if (!(k.e < 1.0)) throw std::invalid_argument("KeplerianFromEquinoctial: e must be < 1, got " + Num(k.e));
+  if (!(k.e < 1.0)) throw std::invalid_argument("KeplerianFromEquinoctial: e must be < 1, got " + FormatG(k.e, 17));
   const double t = std::hypot(el.ix, el.iy);
   k.i_rad = 2.0 * std::atan(t);
   k.raan_rad = t > kSingular ? Wrap2Pi(std::atan2(el.iy, el.ix)) : 0.0;

@@ -7,10 +7,12 @@
 
 #include <Eigen/Dense>
 
+#include "common/constants.h"
+
 namespace thrustsched::dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 constexpr double kTwoPi = 2.0 * kPi;
 
 void RequirePositive(std::string_view where, const char* field, double value) {

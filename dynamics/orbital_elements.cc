@@ -7,35 +7,36 @@
 
 #include <Eigen/Geometry>
 
+#include "common/constants.h"
+#include "common/format.h"
 #include "dynamics/internal/geo_physics.h"
 
 namespace thrustsched::dynamics {
+
+using common::FormatG;
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+using common::kPi;
 
 void CheckElements(const EquinoctialElements& el, double mu, const char* where) {
   const double vals[6] = {el.a_m, el.ex, el.ey, el.ix, el.iy, el.mean_longitude_rad};
   const char* names[6] = {"a_m", "ex", "ey", "ix", "iy", "mean_longitude_rad"};
   for (int i = 0; i < 6; ++i) {
     if (!std::isfinite(vals[i])) {
-      throw std::invalid_argument(std::string(where) + ": " + names[i] + " must be finite, got " + Num(vals[i]));
+      throw std::invalid_argument(std::string(where) + ": " + names[i] + " must be finite, got " +
+                                  FormatG(vals[i], 17));
     }
   }
-  if (!(el.a_m > 0.0)) throw std::invalid_argument(std::string(where) + ": a_m must be > 0, got " + Num(el.a_m));
+  if (!(el.a_m > 0.0)) {
+    throw std::invalid_argument(std::string(where) + ": a_m must be > 0, got " + FormatG(el.a_m, 17));
+  }
   const double e = std::hypot(el.ex, el.ey);
   if (!(e < 1.0)) {
-    throw std::invalid_argument(std::string(where) + ": eccentricity |(ex, ey)| must be < 1, got " + Num(e));
+    throw std::invalid_argument(std::string(where) + ": eccentricity |(ex, ey)| must be < 1, got " + FormatG(e, 17));
   }
   if (!(mu > 0.0) || !std::isfinite(mu)) {
-    throw std::invalid_argument(std::string(where) + ": mu must be finite and > 0, got " + Num(mu));
+    throw std::invalid_argument(std::string(where) + ": mu must be finite and > 0, got " + FormatG(mu, 17));
   }
 }
 
@@ -64,7 +65,7 @@ EquinoctialElements EquinoctialFromCartesian(const Vector6d& rv, double mu) {
     throw std::invalid_argument("EquinoctialFromCartesian: state must be finite");
   }
   if (!(mu > 0.0) || !std::isfinite(mu)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: mu must be finite and > 0, got " + Num(mu));
+    throw std::invalid_argument("EquinoctialFromCartesian: mu must be finite and > 0, got " + FormatG(mu, 17));
   }
   const Eigen::Vector3d r = rv.head<3>(), v = rv.tail<3>();
   const Eigen::Vector3d h = r.cross(v);
@@ -79,7 +80,7 @@ EquinoctialElements EquinoctialFromCartesian(const Vector6d& rv, double mu) {
   EquinoctialElements el;
   const double inv_a = 2.0 / rn - v.squaredNorm() / mu;
   if (!(inv_a > 0.0)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: orbit is not an ellipse (1/a = " + Num(inv_a) + ")");
+    throw std::invalid_argument("EquinoctialFromCartesian: orbit is not an ellipse (1/a = " + FormatG(inv_a, 17) + ")");
   }
   el.a_m = 1.0 / inv_a;
   el.ix = -h.y() / (hn + h.z());
@@ -93,7 +94,7 @@ EquinoctialElements EquinoctialFromCartesian(const Vector6d& rv, double mu) {
   el.ey = e.dot(gh);
   const double e2 = el.ex * el.ex + el.ey * el.ey;
   if (!(e2 < 1.0)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: eccentricity >= 1 (" + Num(std::sqrt(e2)) + ")");
+    throw std::invalid_argument("EquinoctialFromCartesian: eccentricity >= 1 (" + FormatG(std::sqrt(e2), 17) + ")");
   }
   const double root = std::sqrt(1.0 - e2);
   const double beta = 1.0 / (1.0 + root);

@@ -6,12 +6,14 @@
 #include <unordered_set>
 #include <utility>
 
+#include "common/constants.h"
+
 namespace thrustsched::dynamics {
 namespace {
 
 // Standard gravity used in the definition of specific impulse (m/s^2).
 constexpr double kStandardGravity = 9.80665;
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+using common::kDegToRad;
 
 void RequirePositive(const char* where, const char* field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {

@@ -7,10 +7,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/constants.h"
+
 namespace thrustsched::dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 constexpr int kMinYear = 1972;
 constexpr int kMaxYear = 2199;
 

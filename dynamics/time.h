@@ -30,10 +30,13 @@
 #include <string>
 #include <string_view>
 
+#include "common/constants.h"
+
 namespace thrustsched::dynamics {
 
-/// Seconds per day and the Julian date of J2000.0 (2000-01-01 12:00 TT).
-inline constexpr double kSecondsPerDay = 86400.0;
+/// Seconds per day (shared by every module) and the Julian date of J2000.0
+/// (2000-01-01 12:00 TT).
+using common::kSecondsPerDay;
 inline constexpr double kJulianDateJ2000 = 2451545.0;
 
 /// A UTC instant, stored as a Modified Julian Day number and the seconds of

@@ -29,6 +29,8 @@
 #include "CbcConfig.h"
 #include "ClpConfig.h"
 #include "CoinError.hpp"
+#include "common/format.h"
+#include "common/timing.h"
 #include "milp/internal/cbc_child.h"
 #include "milp/internal/lp_child.h"
 #include "milp/internal/cbc_driver.h"
@@ -36,6 +38,10 @@
 #include "milp/internal/solve_clock.h"
 
 namespace thrustsched::milp {
+
+using common::Since;
+using common::FormatG;
+
 namespace {
 
 using internal::CoinArrays;
@@ -43,19 +49,8 @@ using internal::DriverListener;
 using internal::DriverOutcome;
 using internal::DriverRequest;
 using internal::SolveClock;
-using Clock = std::chrono::steady_clock;
+using common::Clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // The driver of the Debian build keeps state in process-wide globals: in
 // this process, one call at a time (a child process has its own).
@@ -331,7 +326,7 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
                                  options.relative_gap * std::abs(claimed.objective), 1e-9}) + step;
     if (sign * relaxed.objective >= sign * claimed.objective - tol) {
       claimed.detail += "; optimality confirmed by the LP relaxation bound " +
-                        Num(relaxed.objective);
+                        FormatG(relaxed.objective, 10);
       claimed.best_bound = relaxed.objective;
       return claimed;
     }
@@ -339,13 +334,13 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
   std::string why = "CBC reported " + std::string(start_claim ? "the start optimal" : "infeasible") +
                     " but the LP relaxation is " +
                     (relaxed.status == SolveStatus::kOptimal
-                         ? "feasible with bound " + Num(relaxed.objective)
+                         ? "feasible with bound " + FormatG(relaxed.objective, 10)
                          : std::string(ToString(relaxed.status)) + " (" + relaxed.detail + ")");
   // 2. A second, differently configured CBC run (without the start: it must
   // find its own solutions).
   SolveOptions second = options;
   second.presolve = false;
-  second.disable_knapsack_cuts = true;
+  second.cbc.disable_knapsack_cuts = true;
   second.random_seed = options.random_seed + 7919;
   second.initial_solution.reset();
   if (std::isfinite(second.time_limit_s)) {
@@ -405,7 +400,7 @@ Eigen::VectorXd PrepareStart(const LpData& lp, const SolveOptions& options, std:
     *detail += "initial solution accepted; ";
     return x0;
   }
-  *detail += "initial solution rejected (violation " + Num(lp.MaxViolation(x0)) + "); ";
+  *detail += "initial solution rejected (violation " + FormatG(lp.MaxViolation(x0), 10) + "); ";
   return {};
 }
 
@@ -425,7 +420,7 @@ DriverOutcome RunDriver(DriverRequest* request, Recorder* recorder, std::string*
   const Clock::duration waited = Clock::now() - wait_start;
   if (waited > std::chrono::milliseconds(10)) {
     request->clock.Shift(waited);
-    *detail += "waited " + Num(SolveClock::Seconds(waited)) +
+    *detail += "waited " + FormatG(SolveClock::Seconds(waited), 10) +
                " s for the CBC driver (another solve held it; not counted); ";
   }
   if (!lock.owns_lock()) {
@@ -453,7 +448,7 @@ Eigen::VectorXd ChooseSolution(const LpData& lp, const SolveOptions& options,
   if (out.x.size() > 0) {
     x = out.x;
     if (!internal::CompletePartial(lp, options, &x)) {
-      *detail += "; CBC solution violates the model by " + Num(lp.MaxViolation(x));
+      *detail += "; CBC solution violates the model by " + FormatG(lp.MaxViolation(x), 10);
       x.resize(0);
     }
   }
@@ -465,10 +460,10 @@ Eigen::VectorXd ChooseSolution(const LpData& lp, const SolveOptions& options,
     Eigen::VectorXd y = reported;
     if (internal::CompletePartial(lp, options, &y) && better(y, x)) {
       x = y;
-      *detail += "; kept the incumbent CBC reported at " + Num(recorder.best_wall()) +
+      *detail += "; kept the incumbent CBC reported at " + FormatG(recorder.best_wall(), 10) +
                  " s (its driver " + (out.x.size() > 0 ? "ended with a worse one)" : "lost it)");
     } else {
-      *detail += "; the incumbent CBC reported at " + Num(recorder.best_wall()) +
+      *detail += "; the incumbent CBC reported at " + FormatG(recorder.best_wall(), 10) +
                  " s could not be completed into a feasible point";
     }
   }
@@ -507,8 +502,9 @@ SolveStatus ClassifyUnbounded(const Solver& solver, const LpData& lp, const Solv
 double FinalBound(const LpData& lp, const SolveOptions& options, const DriverOutcome& out,
                   SolveStatus status, double objective) {
   const double sign = internal::ObjectiveSign(lp);
-  double bound = std::abs(out.bound_min) < 1e50 ? sign * out.bound_min + lp.objective_offset
-                                                : (sign > 0 ? -kInf : kInf);
+  double bound = std::abs(out.bound_min) < internal::kCbcInfinity
+                     ? sign * out.bound_min + lp.objective_offset
+                     : (sign > 0 ? -kInf : kInf);
   if (status == SolveStatus::kOptimal) {
     const double allowed = out.proven_optimal
                                ? std::max(options.absolute_gap,

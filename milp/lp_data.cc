@@ -7,7 +7,13 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "common/error.h"
+#include "common/format.h"
+
 namespace thrustsched::milp {
+
+using common::FormatG;
+
 namespace {
 
 std::string ColLabel(const LpData& lp, int j) {
@@ -26,16 +32,9 @@ std::string RowLabel(const LpData& lp, int i) {
   return label;
 }
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
+// common::Fail with this struct's name in front of the message.
 bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = "LpData '" + message;
-  return false;
+  return common::Fail(error, "LpData '" + message);
 }
 
 void CheckSize(const LpData& lp, Eigen::Index size, const char* what) {
@@ -128,28 +127,28 @@ bool LpData::IsValid(std::string* error) const {
     return size_error("row_names", static_cast<Eigen::Index>(row_names.size()), m);
   }
   if (!std::isfinite(objective_offset)) {
-    return Fail(error, name + "': objective_offset must be finite, got " + Num(objective_offset));
+    return Fail(error, name + "': objective_offset must be finite, got " + FormatG(objective_offset, 17));
   }
   for (int j = 0; j < n; ++j) {
     const double lo = col_lower[j], up = col_upper[j];
     if (!std::isfinite(col_cost[j])) {
       return Fail(error, name + "': " + ColLabel(*this, j) + " cost must be finite, got " +
-                             Num(col_cost[j]));
+                             FormatG(col_cost[j], 17));
     }
     if (std::isnan(lo) || std::isnan(up) || lo > up || lo == kInfinity || up == -kInfinity) {
-      return Fail(error, name + "': " + ColLabel(*this, j) + " has invalid bounds [" + Num(lo) +
-                             ", " + Num(up) + "]");
+      return Fail(error, name + "': " + ColLabel(*this, j) + " has invalid bounds [" + FormatG(lo, 17) +
+                             ", " + FormatG(up, 17) + "]");
     }
     if (col_type[static_cast<size_t>(j)] == VarType::kBinary && (lo < 0.0 || up > 1.0)) {
-      return Fail(error, name + "': binary " + ColLabel(*this, j) + " has bounds [" + Num(lo) +
-                             ", " + Num(up) + "] outside [0, 1]");
+      return Fail(error, name + "': binary " + ColLabel(*this, j) + " has bounds [" + FormatG(lo, 17) +
+                             ", " + FormatG(up, 17) + "] outside [0, 1]");
     }
   }
   for (int i = 0; i < m; ++i) {
     const double lo = row_lower[i], up = row_upper[i];
     if (std::isnan(lo) || std::isnan(up) || lo > up || lo == kInfinity || up == -kInfinity) {
-      return Fail(error, name + "': " + RowLabel(*this, i) + " has invalid bounds [" + Num(lo) +
-                             ", " + Num(up) + "]");
+      return Fail(error, name + "': " + RowLabel(*this, i) + " has invalid bounds [" + FormatG(lo, 17) +
+                             ", " + FormatG(up, 17) + "]");
     }
   }
   for (int j = 0; j < n; ++j) {
@@ -159,7 +158,7 @@ bool LpData::IsValid(std::string* error) const {
       const int i = static_cast<int>(it.row());
       if (!std::isfinite(it.value())) {
         return Fail(error, name + "': coefficient of " + ColLabel(*this, j) + " in " +
-                               RowLabel(*this, i) + " must be finite, got " + Num(it.value()));
+                               RowLabel(*this, i) + " must be finite, got " + FormatG(it.value(), 17));
       }
       if (i <= previous_row) {
         return Fail(error, name + "': a_matrix " + ColLabel(*this, j) +

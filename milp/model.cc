@@ -10,7 +10,12 @@
 #include <unordered_set>
 #include <utility>
 
+#include "common/format.h"
+
 namespace thrustsched::milp {
+
+using common::FormatG;
+
 namespace {
 
 std::uint32_t NextModelId() {
@@ -19,13 +24,6 @@ std::uint32_t NextModelId() {
     const std::uint32_t id = counter.fetch_add(1, std::memory_order_relaxed);
     if (id != 0 && id != LinearExpr::kMixedModels) return id;
   }
-}
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
 }
 
 void AppendInt(std::string* s, long long v) {
@@ -184,19 +182,19 @@ void Model::CheckColumnBounds(double lower, double upper, VarType type,
                               const std::string& label) const {
   const std::string where = "Model '" + name_ + "': " + label;
   if (std::isnan(lower) || std::isnan(upper)) {
-    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + Num(lower) + ", " +
-                                Num(upper) + "]");
+    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + FormatG(lower, 17) + ", " +
+                                FormatG(upper, 17) + "]");
   }
   if (lower > upper) {
-    throw std::invalid_argument(where + ": lower bound " + Num(lower) + " > upper bound " +
-                                Num(upper));
+    throw std::invalid_argument(where + ": lower bound " + FormatG(lower, 17) + " > upper bound " +
+                                FormatG(upper, 17));
   }
   if (lower == kInfinity || upper == -kInfinity) {
-    throw std::invalid_argument(where + ": bounds [" + Num(lower) + ", " + Num(upper) +
+    throw std::invalid_argument(where + ": bounds [" + FormatG(lower, 17) + ", " + FormatG(upper, 17) +
                                 "] leave no finite value");
   }
   if (type == VarType::kBinary && (lower < 0.0 || upper > 1.0)) {
-    throw std::invalid_argument(where + ": binary bounds [" + Num(lower) + ", " + Num(upper) +
+    throw std::invalid_argument(where + ": binary bounds [" + FormatG(lower, 17) + ", " + FormatG(upper, 17) +
                                 "] outside [0, 1]");
   }
 }
@@ -204,15 +202,15 @@ void Model::CheckColumnBounds(double lower, double upper, VarType type,
 void Model::CheckRowBounds(double lower, double upper, const std::string& label) const {
   const std::string where = "Model '" + name_ + "': " + label;
   if (std::isnan(lower) || std::isnan(upper)) {
-    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + Num(lower) + ", " +
-                                Num(upper) + "] (or the expression constant is not finite)");
+    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + FormatG(lower, 17) + ", " +
+                                FormatG(upper, 17) + "] (or the expression constant is not finite)");
   }
   if (lower > upper) {
-    throw std::invalid_argument(where + ": lower bound " + Num(lower) + " > upper bound " +
-                                Num(upper));
+    throw std::invalid_argument(where + ": lower bound " + FormatG(lower, 17) + " > upper bound " +
+                                FormatG(upper, 17));
   }
   if (lower == kInfinity || upper == -kInfinity) {
-    throw std::invalid_argument(where + ": bounds [" + Num(lower) + ", " + Num(upper) +
+    throw std::invalid_argument(where + ": bounds [" + FormatG(lower, 17) + ", " + FormatG(upper, 17) +
                                 "] can never hold");
   }
 }
@@ -307,12 +305,12 @@ Constraint Model::AddConstraint(const LinearExpr& expr, double lower, double upp
     }
     if (!std::isfinite(t.coefficient)) {
       throw std::invalid_argument(where + ": coefficient of " + ColumnLabel(t.index) +
-                                  " must be finite, got " + Num(t.coefficient));
+                                  " must be finite, got " + FormatG(t.coefficient, 17));
     }
   }
   const double c = expr.constant();
   if (!std::isfinite(c)) {
-    throw std::invalid_argument(where + ": expression constant must be finite, got " + Num(c));
+    throw std::invalid_argument(where + ": expression constant must be finite, got " + FormatG(c, 17));
   }
   if (std::isnan(lower) || std::isnan(upper)) CheckRowBounds(lower, upper, label);
   const double lo = std::isfinite(lower) ? lower - c : lower;
@@ -381,7 +379,7 @@ ConstraintBlock Model::AddRows(const std::vector<RowTriplet>& triplets,
     if (!std::isfinite(t.value)) {
       throw std::invalid_argument("Model '" + name_ + "': " + row_label(t.row) +
                                   ": coefficient of " + ColumnLabel(t.column) +
-                                  " must be finite, got " + Num(t.value));
+                                  " must be finite, got " + FormatG(t.value, 17));
     }
     ++start[static_cast<size_t>(t.row) + 1];
   }
@@ -409,7 +407,7 @@ ConstraintBlock Model::AddRows(const std::vector<RowTriplet>& triplets,
       if (!std::isfinite(sum)) {
         throw std::invalid_argument("Model '" + name_ + "': " + row_label(i) +
                                     ": summed coefficient of " + ColumnLabel(col) +
-                                    " overflows to " + Num(sum));
+                                    " overflows to " + FormatG(sum, 17));
       }
       if (sum != 0.0) block.push_back({base + i, col, sum});
     }
@@ -528,11 +526,11 @@ void Model::SetObjective(const LinearExpr& objective, ObjectiveSense sense) {
     }
     if (!std::isfinite(t.coefficient)) {
       throw std::invalid_argument(where + ": coefficient of " + ColumnLabel(t.index) +
-                                  " must be finite, got " + Num(t.coefficient));
+                                  " must be finite, got " + FormatG(t.coefficient, 17));
     }
   }
   if (!std::isfinite(e.constant())) {
-    throw std::invalid_argument(where + ": constant must be finite, got " + Num(e.constant()));
+    throw std::invalid_argument(where + ": constant must be finite, got " + FormatG(e.constant(), 17));
   }
   std::fill(col_cost_.begin(), col_cost_.end(), 0.0);
   for (const LinearExpr::Term& t : e.terms()) col_cost_[static_cast<size_t>(t.index)] = t.coefficient;
@@ -554,7 +552,7 @@ void Model::AddObjectiveTerm(Variable v, double c) {
   const double sum = col_cost_[j] + c;
   if (!std::isfinite(c) || !std::isfinite(sum)) {
     throw std::invalid_argument("Model '" + name_ + "': objective coefficient of " +
-                                ColumnLabel(v.index()) + " must be finite, got " + Num(c));
+                                ColumnLabel(v.index()) + " must be finite, got " + FormatG(c, 17));
   }
   col_cost_[j] = sum;
 }

@@ -14,7 +14,12 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "common/format.h"
+
 namespace thrustsched::milp {
+
+using common::FormatG;
+
 namespace {
 
 constexpr int kMaxNameLength = 96;  // CoinLpIO accepts 100; aux LP columns add "~"
@@ -45,7 +50,7 @@ bool IsLpKeyword(const std::string& s) {
 // '(' and ')' only ('[' -> '(', ']' -> ')', anything else -> '_'); not starting
 // with a digit, '.', or an 'e'/'E' that could read as an exponent; not an LP
 // or MPS keyword; at most kMaxNameLength characters.
-std::string Sanitise(const std::string& raw) {
+std::string Sanitize(const std::string& raw) {
   std::string s;
   s.reserve(raw.size() + 1);
   for (char c : raw) {
@@ -91,7 +96,7 @@ std::vector<std::string> ExportNames(const std::vector<std::string>& raw, size_t
   used.reserve(count + reserved.size());
   for (const char* r : reserved) used.insert(r);
   for (size_t i = 0; i < count; ++i) {
-    std::string name = raw[i].empty() ? Numbered(prefix, i) : Sanitise(raw[i]);
+    std::string name = raw[i].empty() ? Numbered(prefix, i) : Sanitize(raw[i]);
     if (used.count(name) != 0) {
       // Restore uniqueness with the smallest free suffix "_k".
       for (long long k = 1;; ++k) {
@@ -117,9 +122,7 @@ std::vector<std::string> ExportNames(const std::vector<std::string>& raw, size_t
 
 std::string Fmt17(double v) {
   if (v == 0.0) return "0";  // also for -0
-  char buf[40];
-  const int n = std::snprintf(buf, sizeof(buf), "%.17g", v);
-  return std::string(buf, static_cast<size_t>(n));
+  return FormatG(v, 17);
 }
 
 // Fixed MPS number fields hold 12 characters: full precision when it fits,
@@ -274,7 +277,7 @@ void WriteMps(std::ostream& os, const LpData& problem, const MpsOptions& options
   const std::vector<std::string> rows = ExportedRowNames(problem, options.obfuscate_names);
   const bool fixed = !options.free_format;
   const std::string offset_col = fixed ? kOffsetColumnFixed : kOffsetColumnFree;
-  std::string problem_name = problem.name.empty() ? std::string() : Sanitise(problem.name);
+  std::string problem_name = problem.name.empty() ? std::string() : Sanitize(problem.name);
   if (fixed) {
     auto check = [](const std::vector<std::string>& names, const char* what) {
       for (const std::string& n : names) {
@@ -495,7 +498,7 @@ void WriteLp(std::ostream& os, const LpData& problem, const LpFormatOptions& opt
   }
   Out out(os);
   out << "\\ thrustsched CPLEX LP export";
-  if (!problem.name.empty()) out << " of '" << Sanitise(problem.name) << "'";
+  if (!problem.name.empty()) out << " of '" << Sanitize(problem.name) << "'";
   out << '\n';
   if (problem.sense == ObjectiveSense::kMaximize) {
     out << "\\ The model MAXIMISES; written as the minimisation of the negated objective\n"
@@ -513,7 +516,7 @@ void WriteLp(std::ostream& os, const LpData& problem, const LpFormatOptions& opt
   if (count == 0) LpTerm(out, 0.0, placeholder, &count);
   out << "\nSubject To\n";
   // GLPK rejects an empty "Subject To": a model without rows gets one row
-  // that always holds (its name cannot clash: '~' never survives Sanitise).
+  // that always holds (its name cannot clash: '~' never survives Sanitize).
   if (m == 0) out << " ~no_rows: + 0 " << placeholder << " >= -1\n";
   std::vector<int> aux_rows;  // ranged and free rows get a column "~<row>"
   for (int i = 0; i < m; ++i) {

@@ -7,17 +7,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/format.h"
 #include "milp/lp_bound.h"
 
 namespace thrustsched::milp {
-namespace {
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+using common::FormatG;
+
+namespace {
 
 void Validate(const LpData& problem, const SolveOptions& options, const char* what) {
   std::string error;
@@ -100,31 +97,31 @@ bool SolveOptions::IsValid(std::string* error) const {
     return false;
   };
   if (std::isnan(time_limit_s) || time_limit_s < 0.0) {
-    return fail("time_limit_s must be >= 0 (or +inf), got " + Num(time_limit_s));
+    return fail("time_limit_s must be >= 0 (or +inf), got " + FormatG(time_limit_s, 17));
   }
   if (!std::isfinite(relative_gap) || relative_gap < 0.0) {
-    return fail("relative_gap must be finite and >= 0, got " + Num(relative_gap));
+    return fail("relative_gap must be finite and >= 0, got " + FormatG(relative_gap, 17));
   }
   if (!std::isfinite(absolute_gap) || absolute_gap < 0.0) {
-    return fail("absolute_gap must be finite and >= 0, got " + Num(absolute_gap));
+    return fail("absolute_gap must be finite and >= 0, got " + FormatG(absolute_gap, 17));
   }
   if (!std::isfinite(objective_step) || objective_step < 0.0) {
-    return fail("objective_step must be finite and >= 0, got " + Num(objective_step));
+    return fail("objective_step must be finite and >= 0, got " + FormatG(objective_step, 17));
   }
   if (threads < 1) return fail("threads must be >= 1, got " + std::to_string(threads));
   if (random_seed < 0) return fail("random_seed must be >= 0, got " + std::to_string(random_seed));
   if (log_level < 0) return fail("log_level must be >= 0, got " + std::to_string(log_level));
   if (std::isnan(progress_interval_s) || progress_interval_s <= 0.0) {
-    return fail("progress_interval_s must be > 0, got " + Num(progress_interval_s));
+    return fail("progress_interval_s must be > 0, got " + FormatG(progress_interval_s, 17));
   }
   if (!std::isfinite(cbc.stop_grace_s) || cbc.stop_grace_s < 0.0) {
-    return fail("cbc.stop_grace_s must be finite and >= 0, got " + Num(cbc.stop_grace_s));
+    return fail("cbc.stop_grace_s must be finite and >= 0, got " + FormatG(cbc.stop_grace_s, 17));
   }
   if (initial_solution.has_value()) {
     for (Eigen::Index j = 0; j < initial_solution->size(); ++j) {
       if (!std::isfinite((*initial_solution)[j])) {
         return fail("initial_solution[" + std::to_string(j) + "] must be finite, got " +
-                    Num((*initial_solution)[j]));
+                    FormatG((*initial_solution)[j], 17));
       }
     }
   }

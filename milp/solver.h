@@ -136,9 +136,6 @@ struct SolveOptions {
   /// kNoSolutionFound, like a time limit). Unlike the wall-clock limit it
   /// gives the same result on every run (threads == 1). < 0: no limit.
   long long max_nodes = -1;
-  /// Switch CBC's knapsack cover cuts off (used by the second run that checks
-  /// an infeasibility claim; see cbc_solver.cc).
-  bool disable_knapsack_cuts = false;
 
   /// Settings only the CBC backend reads.
   struct Cbc {
@@ -152,6 +149,9 @@ struct SolveOptions {
     /// stop by itself (and hand over its final answer) before it is killed;
     /// the incumbents it already reported are kept either way.
     double stop_grace_s = 0.5;
+    /// Switch CBC's knapsack cover cuts off (used by the second run that checks
+    /// an infeasibility claim; see cbc_solver.cc).
+    bool disable_knapsack_cuts = false;
   } cbc;
 
   bool IsValid(std::string* error) const;

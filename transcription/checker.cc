@@ -39,25 +39,24 @@
 #include <utility>
 #include <vector>
 
+#include "common/constants.h"
+#include "common/error.h"
+#include "common/format.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/propagation.h"
 
 namespace thrustsched::transcription {
+
+using common::FormatG;
+
 namespace {
 
 constexpr double kTol = kTimeTolerance;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Terminal constraints are met when the scaled error is at most this.
 constexpr double kTerminalTolerance = 1e-6;
-
-/// Shortest readable form of a number (10 significant digits).
-std::string Num(double v) {
-  std::ostringstream os;
-  os << std::setprecision(10) << v;
-  return os.str();
-}
 
 struct Interval {
   double start;
@@ -95,7 +94,7 @@ void ValidateRuleInputs(const OperationalRules& rules, const BoundaryHistory& hi
   }
   if (!std::isfinite(t0) || !std::isfinite(tf) || !(tf > t0)) {
     throw std::invalid_argument(where + "horizon [t0, tf] must be finite with tf > t0, got [" +
-                                Num(t0) + ", " + Num(tf) + "]");
+                                FormatG(t0, 10) + ", " + FormatG(tf, 10) + "]");
   }
   std::string err;
   if (!rules.IsValid(&err)) throw std::invalid_argument(where + "rules: " + err);
@@ -112,7 +111,7 @@ void ValidateRuleInputs(const OperationalRules& rules, const BoundaryHistory& hi
     }
     if (std::isnan(w.start_s) || std::isnan(w.end_s) || w.end_s < w.start_s) {
       throw std::invalid_argument(where + name + " must have start_s <= end_s (not NaN), got [" +
-                                  Num(w.start_s) + ", " + Num(w.end_s) + ")");
+                                  FormatG(w.start_s, 10) + ", " + FormatG(w.end_s, 10) + ")");
     }
   }
 }
@@ -125,7 +124,7 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
   ValidateRuleInputs(rules, history, forced_off, num_thrusters, t0, tf);
   std::vector<RuleViolation> out;
   auto name = [&](int i) { return names[static_cast<std::size_t>(i)]; };
-  auto span = [](double a, double b) { return "[" + Num(a) + ", " + Num(b) + ")"; };
+  auto span = [](double a, double b) { return "[" + FormatG(a, 10) + ", " + FormatG(b, 10) + ")"; };
 
   // 1. Well-formedness and horizon; keep the good burns per thruster.
   std::vector<std::vector<Interval>> raw(static_cast<std::size_t>(num_thrusters));
@@ -145,7 +144,7 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
     } else if (b.start_s < t0 - kTol || b.end_s > tf + kTol) {
       Add(&out, "horizon", b.thruster, b.start_s,
           name(b.thruster) + " burn " + span(b.start_s, b.end_s) + " is outside the horizon [" +
-              Num(t0) + ", " + Num(tf) + "]");
+              FormatG(t0, 10) + ", " + FormatG(tf, 10) + "]");
     } else {
       // Snap to the horizon (moves a time by at most tol).
       raw[static_cast<std::size_t>(b.thruster)].push_back(
@@ -188,9 +187,9 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
     if (on && !continuation) {
       if (h < rules.min_burn_s - kTol) {
         Add(&out, "min_burn", i, t0,
-            name(i) + " on for " + Num(h) + " s before t0 = " + Num(t0) +
-                " (history) and off from t0: burn lasts " + Num(h) + " s < min_burn " +
-                Num(rules.min_burn_s) + " s");
+            name(i) + " on for " + FormatG(h, 10) + " s before t0 = " + FormatG(t0, 10) +
+                " (history) and off from t0: burn lasts " + FormatG(h, 10) + " s < min_burn " +
+                FormatG(rules.min_burn_s, 10) + " s");
       }
       prev_end = t0;
     } else if (!on) {
@@ -205,22 +204,22 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
       const double true_start = is_cont ? t0 - h : b.start;
       const double duration = b.end - true_start;
       const std::string what =
-          name(i) + " burn at " + Num(b.start) + " s" +
-          (is_cont ? " (on since " + Num(true_start) + " s per history)" : std::string());
+          name(i) + " burn at " + FormatG(b.start, 10) + " s" +
+          (is_cont ? " (on since " + FormatG(true_start, 10) + " s per history)" : std::string());
       const bool across_end = rules.allow_burn_across_end && b.end >= tf - kTol;
       if (duration < rules.min_burn_s - kTol && !across_end) {
         Add(&out, "min_burn", i, b.start,
-            what + " lasts " + Num(duration) + " s < min_burn " + Num(rules.min_burn_s) + " s");
+            what + " lasts " + FormatG(duration, 10) + " s < min_burn " + FormatG(rules.min_burn_s, 10) + " s");
       }
       if (duration > rules.max_burn_s + kTol) {
         Add(&out, "max_burn", i, b.start,
-            what + " lasts " + Num(duration) + " s > max_burn " + Num(rules.max_burn_s) + " s");
+            what + " lasts " + FormatG(duration, 10) + " s > max_burn " + FormatG(rules.max_burn_s, 10) + " s");
       }
       if (!is_cont) {
         if (prev_end > -kInf && b.start - prev_end < rules.min_off_same_s - kTol) {
           Add(&out, "min_off_same", i, b.start,
-              what + " starts " + Num(b.start - prev_end) + " s after its switch-off at " +
-                  Num(prev_end) + " s < min_off_same " + Num(rules.min_off_same_s) + " s");
+              what + " starts " + FormatG(b.start - prev_end, 10) + " s after its switch-off at " +
+                  FormatG(prev_end, 10) + " s < min_off_same " + FormatG(rules.min_off_same_s, 10) + " s");
         }
         starts[static_cast<std::size_t>(i)].push_back(b.start);
         ++counted;
@@ -231,7 +230,7 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
               name(i) + " starts " + std::to_string(total) +
                   " burns in the horizon > max_burns_per_thruster " +
                   std::to_string(rules.max_burns_per_thruster) + " (first excess at " +
-                  Num(b.start) + " s)");
+                  FormatG(b.start, 10) + " s)");
         }
       }
       prev_end = b.end;
@@ -242,7 +241,7 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
         if (overlap > kTol) {
           Add(&out, "forced_off", i, std::max(b.start, w.start_s),
               what + " " + span(b.start, b.end) + " overlaps forced-off window " +
-                  span(w.start_s, w.end_s) + " by " + Num(overlap) + " s");
+                  span(w.start_s, w.end_s) + " by " + FormatG(overlap, 10) + " s");
         }
       }
     }
@@ -257,9 +256,9 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
         for (double e : ends[static_cast<std::size_t>(i)]) {
           if (s >= e - kTol && s - e < rules.min_gap_other_s - kTol) {
             Add(&out, "min_gap_other", l, s,
-                name(l) + " burn starts at " + Num(s) + " s, " + Num(s - e) + " s after " +
-                    name(i) + " switched off at " + Num(e) + " s < min_gap_other " +
-                    Num(rules.min_gap_other_s) + " s");
+                name(l) + " burn starts at " + FormatG(s, 10) + " s, " + FormatG(s - e, 10) + " s after " +
+                    name(i) + " switched off at " + FormatG(e, 10) + " s < min_gap_other " +
+                    FormatG(rules.min_gap_other_s, 10) + " s");
           }
         }
       }
@@ -330,7 +329,7 @@ std::vector<double> SampleTimes(const std::vector<double>& grid, int per_interva
   return t;
 }
 
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+using common::kRadToDeg;
 
 // Relative tolerance of the end-of-horizon set judgement: the re-propagated
 // final state differs from the MILP's discrete one by the scheme's error.
@@ -408,9 +407,9 @@ void ReplayNonlinear(const ScheduleProblem& problem, const dynamics::GeoSimulato
   if (geo->options().station_longitude_deg != sim.options().station_longitude_deg ||
       geo->options().epoch != sim.options().epoch) {
     throw std::invalid_argument("CheckSchedule: options.nonlinear simulates station " +
-                                Num(sim.options().station_longitude_deg) + " deg at epoch " +
+                                FormatG(sim.options().station_longitude_deg, 10) + " deg at epoch " +
                                 sim.options().epoch + ", the problem's model station " +
-                                Num(geo->options().station_longitude_deg) + " deg at epoch " +
+                                FormatG(geo->options().station_longitude_deg, 10) + " deg at epoch " +
                                 geo->options().epoch);
   }
   const double t0 = problem.grid.front();
@@ -465,6 +464,17 @@ std::vector<RuleViolation> CheckOperationalRules(const OperationalRules& rules,
   return CheckRules(rules, history, forced_off, num_thrusters, t0, tf, burns, names);
 }
 
+bool CheckOptions::IsValid(std::string* error) const {
+  if (samples_per_interval < 0) {
+    return common::Fail(error, "samples_per_interval must be >= 0, got " + std::to_string(samples_per_interval));
+  }
+  if (!(propagation_tolerance > 0.0) || !std::isfinite(propagation_tolerance)) {
+    return common::Fail(error, "propagation_tolerance must be finite and > 0, got " +
+                                   FormatG(propagation_tolerance, 10));
+  }
+  return true;
+}
+
 CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn>& burns,
                           const CheckOptions& options) {
   std::string err;
@@ -474,15 +484,7 @@ CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn
   if (problem.input_mode == InputMode::kImpulsive) {
     throw std::invalid_argument("CheckSchedule: impulsive problems are checked by ImpulsiveCheck");
   }
-  if (options.samples_per_interval < 0) {
-    throw std::invalid_argument("CheckSchedule: options.samples_per_interval must be >= 0, got " +
-                                std::to_string(options.samples_per_interval));
-  }
-  if (!(options.propagation_tolerance > 0.0) || !std::isfinite(options.propagation_tolerance)) {
-    throw std::invalid_argument(
-        "CheckSchedule: options.propagation_tolerance must be finite and > 0, got " +
-        Num(options.propagation_tolerance));
-  }
+  if (!options.IsValid(&err)) throw std::invalid_argument("CheckSchedule: options." + err);
   const dynamics::LinearModel& model = *problem.model;
   const dynamics::ThrusterSet& thrusters = problem.thrusters;
   const int m = thrusters.size();
@@ -495,8 +497,8 @@ CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn
     if (b.thruster >= 0 && b.thruster < m && !thrusters.thruster(b.thruster).enabled) {
       r.rule_violations.push_back(RuleViolation{"disabled", b.thruster, b.start_s,
                                                 thrusters.thruster(b.thruster).name +
-                                                    " is disabled but fires on [" + Num(b.start_s) +
-                                                    ", " + Num(b.end_s) + ")"});
+                                                    " is disabled but fires on [" + FormatG(b.start_s, 10) +
+                                                    ", " + FormatG(b.end_s, 10) + ")"});
     }
   }
   std::stable_sort(
@@ -587,23 +589,23 @@ std::string CheckReport::Summary() const {
   } else {
     os << "operational rules: " << rule_violations.size() << " violation(s)\n";
     for (const RuleViolation& v : rule_violations) {
-      os << "  [" << v.rule << "] t = " << Num(v.time_s) << " s: " << v.message << "\n";
+      os << "  [" << v.rule << "] t = " << FormatG(v.time_s, 10) << " s: " << v.message << "\n";
     }
   }
   if (max_window_violation > 0.0) {
-    os << "window (linear re-propagation): violated by " << Num(max_window_violation) << " (output "
-       << worst_output << " at t = " << Num(worst_time_s)
-       << " s); at nodes only: " << Num(max_window_violation_at_nodes) << "\n";
+    os << "window (linear re-propagation): violated by " << FormatG(max_window_violation, 10) << " (output "
+       << worst_output << " at t = " << FormatG(worst_time_s, 10)
+       << " s); at nodes only: " << FormatG(max_window_violation_at_nodes, 10) << "\n";
   } else {
     os << "window (linear re-propagation): ok at " << sample_times.size() << " samples\n";
   }
   os << "terminal: " << (terminal_ok ? "ok" : "VIOLATED") << " (scaled error "
-     << Num(terminal_error) << ")\n";
+     << FormatG(terminal_error, 10) << ")\n";
   if (nonlinear_checked) {
-    os << "window (nonlinear replay): violation " << Num(max_window_violation_nonlinear_deg)
-       << " deg at t = " << Num(worst_time_nonlinear_s) << " s; max |lat| " << Num(max_abs_lat_deg)
-       << " deg, max |lon| " << Num(max_abs_lon_deg) << " deg; about "
-       << Num(time_outside_window_nonlinear_s) << " s outside\n";
+    os << "window (nonlinear replay): violation " << FormatG(max_window_violation_nonlinear_deg, 10)
+       << " deg at t = " << FormatG(worst_time_nonlinear_s, 10) << " s; max |lat| " << FormatG(max_abs_lat_deg, 10)
+       << " deg, max |lon| " << FormatG(max_abs_lon_deg, 10) << " deg; about "
+       << FormatG(time_outside_window_nonlinear_s, 10) << " s outside\n";
   }
   return os.str();
 }

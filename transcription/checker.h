@@ -53,6 +53,10 @@ struct CheckOptions {
   /// forces), so every GEO schedule is judged by the nonlinear model unless
   /// this is switched off.
   bool nonlinear_default = true;
+
+  /// samples_per_interval >= 0; propagation_tolerance finite and > 0. On
+  /// failure `*error` (if given) names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct CheckReport {

@@ -8,14 +8,15 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "transcription/internal/format.h"
+#include "common/constants.h"
+#include "common/format.h"
+
 
 namespace thrustsched::transcription {
 namespace {
 
-using internal::FormatNumber;
-
-constexpr double kPi = 3.14159265358979323846;
+using common::FormatG;
+using common::kPi;
 constexpr double kSqrt2 = 1.41421356237309504880;
 
 // Gauss-Kronrod 7-15 nodes (positive half) and weights.
@@ -144,7 +145,7 @@ double BallProbability(const Eigen::Vector3d& mean, const Eigen::Matrix3d& covar
   if (!mean.allFinite() || !covariance.allFinite() || !std::isfinite(radius)) {
     throw std::invalid_argument("BallProbability: mean, covariance and radius must be finite");
   }
-  if (radius <= 0.0) throw std::invalid_argument("BallProbability: radius must be > 0, got " + FormatNumber(radius));
+  if (radius <= 0.0) throw std::invalid_argument("BallProbability: radius must be > 0, got " + FormatG(radius, 10));
   const double big = covariance.cwiseAbs().maxCoeff();
   if ((covariance - covariance.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(big, 1e-300)) {
     throw std::invalid_argument("BallProbability: the covariance is not symmetric");
@@ -153,7 +154,7 @@ double BallProbability(const Eigen::Vector3d& mean, const Eigen::Matrix3d& covar
   const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending
   if (lambda[0] < -1e-9 * std::max(lambda[2], 1e-300)) {
     throw std::invalid_argument("BallProbability: the covariance has a negative eigenvalue " +
-                                FormatNumber(lambda[0]));
+                                FormatG(lambda[0], 10));
   }
   // Largest variance outermost, smallest innermost (handled by erfc): the
   // narrowest Gaussian factor is never a quadrature variable.
@@ -202,13 +203,13 @@ double LowerQuantile(double p) {
 }  // namespace
 
 double NormalQuantile(double p) {
-  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("NormalQuantile: p must be in (0, 1), got " + FormatNumber(p));
+  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("NormalQuantile: p must be in (0, 1), got " + FormatG(p, 10));
   return p <= 0.5 ? LowerQuantile(p) : -LowerQuantile(1.0 - p);
 }
 
 double NormalUpperQuantile(double q) {
   if (!(q > 0.0 && q < 1.0)) {
-    throw std::invalid_argument("NormalUpperQuantile: q must be in (0, 1), got " + FormatNumber(q));
+    throw std::invalid_argument("NormalUpperQuantile: q must be in (0, 1), got " + FormatG(q, 10));
   }
   return q <= 0.5 ? -LowerQuantile(q) : LowerQuantile(1.0 - q);
 }
@@ -233,7 +234,7 @@ Eigen::MatrixXd CovarianceFactor(const Eigen::MatrixXd& covariance) {
   const Eigen::VectorXd lambda = eig.eigenvalues();
   if (lambda.size() > 0 && lambda.minCoeff() < -1e-12 * std::max(lambda.maxCoeff(), 1e-300)) {
     throw std::invalid_argument("CovarianceFactor: the matrix has a negative eigenvalue " +
-                                FormatNumber(lambda.minCoeff()));
+                                FormatG(lambda.minCoeff(), 10));
   }
   return eig.eigenvectors() * lambda.cwiseMax(0.0).cwiseSqrt().asDiagonal();
 }

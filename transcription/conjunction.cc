@@ -5,18 +5,17 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "common/error.h"
+#include "common/format.h"
 #include "transcription/collision_probability.h"
-#include "transcription/internal/format.h"
 
 namespace thrustsched::transcription {
+
+using common::Fail;
+
 namespace {
 
-using internal::FormatNumber;
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
-}
+using common::FormatG;
 
 }  // namespace
 
@@ -73,11 +72,11 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
   const double big = covariance.cwiseAbs().maxCoeff();
   const double asym = (covariance - covariance.transpose()).cwiseAbs().maxCoeff();
   if (asym > 1e-12 * big) {
-    return Fail(error, "conjunction.covariance is not symmetric (largest |S_ij - S_ji| = " + FormatNumber(asym) + ")");
+    return Fail(error, "conjunction.covariance is not symmetric (largest |S_ij - S_ji| = " + FormatG(asym, 10) + ")");
   }
   for (int i = 0; i < 6; ++i) {
     if (covariance(i, i) < 0.0) {
-      return Fail(error, "conjunction.covariance has a negative variance " + FormatNumber(covariance(i, i)) +
+      return Fail(error, "conjunction.covariance has a negative variance " + FormatG(covariance(i, i), 10) +
                              " on the diagonal (entry " + std::to_string(i) + ")");
     }
   }
@@ -86,15 +85,15 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
     const double low = ev.minCoeff();
     if (low < -1e-12 * ev.maxCoeff()) {
       return Fail(error, "conjunction.covariance is not positive semi-definite (smallest eigenvalue " +
-                             FormatNumber(low) + "); give covariance_repair \"clip_eigenvalues\" to repair it");
+                             FormatG(low, 10) + "); give covariance_repair \"clip_eigenvalues\" to repair it");
     }
   }
   if (!(radius_m > 0.0) || !std::isfinite(radius_m)) {
-    return Fail(error, "conjunction.radius_m must be finite and > 0, got " + FormatNumber(radius_m));
+    return Fail(error, "conjunction.radius_m must be finite and > 0, got " + FormatG(radius_m, 10));
   }
   if (!(instantaneous_threshold > 0.0 && instantaneous_threshold < 0.5)) {
     return Fail(error, "conjunction.instantaneous_threshold must be in (0, 0.5), got " +
-                           FormatNumber(instantaneous_threshold));
+                           FormatG(instantaneous_threshold, 10));
   }
   if (num_checks < 1) {
     return Fail(error, "conjunction.num_checks must be >= 1, got " + std::to_string(num_checks));
@@ -103,8 +102,8 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
     return Fail(error, "conjunction check window bounds must be finite");
   }
   if (!std::isnan(check_start_s) && !std::isnan(check_end_s) && !(check_end_s > check_start_s)) {
-    return Fail(error, "conjunction.check_end_s (" + FormatNumber(check_end_s) + ") must be after check_start_s (" +
-                           FormatNumber(check_start_s) + ")");
+    return Fail(error, "conjunction.check_end_s (" + FormatG(check_end_s, 10) + ") must be after check_start_s (" +
+                           FormatG(check_start_s, 10) + ")");
   }
   if (polytope.size() > 0) {
     if (polytope.faces.rows() != polytope.size() || polytope.faces.cols() != 3 ||
@@ -112,19 +111,20 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
       return Fail(error, "conjunction.polytope needs m x 3 finite face normals and m finite offsets");
     }
     if (!polytope.ContainsBall(radius_m)) {
-      return Fail(error, "conjunction.polytope does not contain the ball of radius " + FormatNumber(radius_m) +
+      return Fail(error, "conjunction.polytope does not contain the ball of radius " + FormatG(radius_m, 10) +
                              " m (every face needs b_j >= R |a_j|)");
     }
   }
   if (std::isnan(cost_budget) || cost_budget <= 0.0) {
-    return Fail(error, "conjunction.cost_budget must be > 0, got " + FormatNumber(cost_budget));
+    return Fail(error, "conjunction.cost_budget must be > 0, got " + FormatG(cost_budget, 10));
   }
   return true;
 }
 
 Eigen::MatrixXd EffectiveCovariance(const ConjunctionSpec& spec, double time_scale_s, double* min_eigenvalue) {
   if (!(time_scale_s > 0.0) || !std::isfinite(time_scale_s)) {
-    throw std::invalid_argument("EffectiveCovariance: time scale must be finite and > 0, got " + FormatNumber(time_scale_s));
+    throw std::invalid_argument("EffectiveCovariance: time scale must be finite and > 0, got " +
+                                FormatG(time_scale_s, 10));
   }
   Eigen::VectorXd d = Eigen::VectorXd::Ones(spec.covariance.rows());
   d.tail(d.size() / 2).setConstant(time_scale_s);
@@ -149,7 +149,7 @@ Eigen::Matrix3d SerraLvlhToLocal() {
 
 double InstantaneousThreshold(double risk, double encounter_s, double t0_s) {
   if (!(risk > 0.0 && risk < 1.0)) {
-    throw std::invalid_argument("risk threshold must be in (0, 1), got " + FormatNumber(risk));
+    throw std::invalid_argument("risk threshold must be in (0, 1), got " + FormatG(risk, 10));
   }
   if (!(encounter_s > 0.0) || !std::isfinite(encounter_s) || !(t0_s > 0.0) || !std::isfinite(t0_s)) {
     throw std::invalid_argument("encounter duration and T0 must be finite and > 0");

@@ -27,7 +27,7 @@ Eigen::MatrixXd InverseLocalMap(const AffineMap& local) {
 
 ConjunctionGeometry ComputeConjunctionGeometry(const ScheduleProblem& p,
                                                const dynamics::DiscreteModel& discrete,
-                                               const dynamics::DiscretisationOptions& options) {
+                                               const dynamics::DiscretizationOptions& options) {
   if (!p.conjunction) throw std::invalid_argument("ComputeConjunctionGeometry: no conjunction");
   const ConjunctionSpec& c = *p.conjunction;
   std::string err;

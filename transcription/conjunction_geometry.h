@@ -55,7 +55,7 @@ struct ConjunctionGeometry {
 ///         the discretisation does not match the grid.
 ConjunctionGeometry ComputeConjunctionGeometry(const ScheduleProblem& problem,
                                                const dynamics::DiscreteModel& discrete,
-                                               const dynamics::DiscretisationOptions& options);
+                                               const dynamics::DiscretizationOptions& options);
 
 }  // namespace thrustsched::transcription
 

@@ -6,15 +6,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/timing.h"
+
 namespace thrustsched::transcription {
+
+using common::Since;
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using common::Clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // At every check with a disjunction: the face the thrust-free path satisfies
 // best if it satisfies one; otherwise `face` if the check has it (any face
@@ -168,7 +169,7 @@ void Polish(const ScheduleMilp& m, const milp::Solver& solver, const milp::Solve
   if (m.lp().MaxViolation(lr.x) >= m.lp().MaxViolation(r->x)) return;
   r->x = lr.x;
   r->objective = m.lp().Objective(lr.x);
-  r->gap = std::abs(r->objective - r->best_bound) / std::max(1e-10, std::abs(r->objective));
+  r->gap = milp::RelativeGap(r->objective, r->best_bound);
   r->detail += "; polished by the LP with the integers fixed";
   if (r->status == milp::SolveStatus::kOptimal && r->gap > base.relative_gap) {
     // The bound came from a solution that leaned on the tolerances: say so.
@@ -204,12 +205,12 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
     throw std::invalid_argument("SolveConjunction: restart_ratio must be in (0, 1] and max_rounds >= 1");
   }
   const Clock::time_point t0 = Clock::now();
-  const double limit = options.solve.time_limit_s;
+  const double limit = options.milp.time_limit_s;
   ConjunctionSolve out;
   double best = kInf;
   Eigen::VectorXd best_x;
   if (co.fixed_face_start) {
-    const ConjunctionStart s = FixedFaceStart(first, solver, options.solve);
+    const ConjunctionStart s = FixedFaceStart(first, solver, options.milp);
     out.start_seconds = Since(t0);
     if (s.x.size() > 0) {
       best = s.objective;
@@ -245,27 +246,27 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
     o.prefix_diagnosis_s = 0.0;  // prefixes would cut the conjunction's times off
     o.check_schedule = false;    // the final plan is polished, then checked
     o.warm_start.clear();
-    if (best_x.size() > 0) o.solve.initial_solution = StartFor(*current, best_x);
-    o.solve.time_limit_s = std::max(0.0, limit - Since(t0));
+    if (best_x.size() > 0) o.milp.initial_solution = StartFor(*current, best_x);
+    o.milp.time_limit_s = std::max(0.0, limit - Since(t0));
     std::atomic<bool> stop{false};
     bool restart = false;
     const bool last_round = round + 1 >= co.max_rounds;
     const double offset = Since(t0);
     double forwarded = -kInf;
-    o.solve.interrupt = &stop;
-    o.solve.progress_interval_s = std::min(options.solve.progress_interval_s, 1.0);
-    o.solve.progress = [&](const milp::SolveProgress& p) {
-      if (options.solve.interrupt != nullptr && options.solve.interrupt->load()) stop = true;
+    o.milp.interrupt = &stop;
+    o.milp.progress_interval_s = std::min(options.milp.progress_interval_s, 1.0);
+    o.milp.progress = [&](const milp::SolveProgress& p) {
+      if (options.milp.interrupt != nullptr && options.milp.interrupt->load()) stop = true;
       if (co.tighten_budget && !last_round && p.new_incumbent && p.objective < co.restart_ratio * br.budget) {
         restart = true;
         stop = true;
       }
-      if (options.solve.progress &&
-          (p.new_incumbent || p.wall_seconds - forwarded >= options.solve.progress_interval_s)) {
+      if (options.milp.progress &&
+          (p.new_incumbent || p.wall_seconds - forwarded >= options.milp.progress_interval_s)) {
         forwarded = p.wall_seconds;
         milp::SolveProgress q = p;
         q.wall_seconds += offset;
-        options.solve.progress(q);
+        options.milp.progress(q);
       }
     };
     // The budget rounds drive CBC on the whole MILP (restarts on a new
@@ -285,7 +286,7 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
       continue;
     }
     if (r.has_schedule()) {
-      Polish(*current, solver, options.solve, &r.solve);
+      Polish(*current, solver, options.milp, &r.solve);
       DecodeAndCheck(*current, options, &r);
     }
     out.result = std::move(r);

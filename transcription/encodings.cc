@@ -6,20 +6,18 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/format.h"
+
 namespace thrustsched::transcription {
+
+using common::FormatG;
+
 namespace {
 
 using milp::LinearExpr;
 using milp::Variable;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
 
 // Builds the rows of one encoding. Interval j is [t_j, t_{j+1}); node a is
 // t_a. "Start at node a": on in interval a, off in a-1 (or before t0). "Stop
@@ -115,9 +113,9 @@ class Builder {
     for (int i = 0; i < m_; ++i) {
       if (in_.history.on_for(i) > in_.rules.max_burn_s + kTimeTolerance) {
         throw std::invalid_argument("history.on_for_s[" + std::to_string(i) + "] = " +
-                                    Num(in_.history.on_for(i)) +
+                                    FormatG(in_.history.on_for(i), 10) +
                                     " s already exceeds operations.max_burn_s = " +
-                                    Num(in_.rules.max_burn_s));
+                                    FormatG(in_.rules.max_burn_s, 10));
       }
     }
   }
@@ -207,8 +205,8 @@ class Builder {
         }
         if (!r.allow_burn_across_end && t_[n_] < began + r.min_burn_s - kTimeTolerance) {
           enc_.infeasibility_reasons.push_back(
-              "thruster " + std::to_string(i) + " is on at t0 for " + Num(in_.history.on_for(i)) +
-              " s and cannot reach the minimum burn of " + Num(r.min_burn_s) +
+              "thruster " + std::to_string(i) + " is on at t0 for " + FormatG(in_.history.on_for(i), 10) +
+              " s and cannot reach the minimum burn of " + FormatG(r.min_burn_s, 10) +
               " s before the horizon ends, and burns across the end are not allowed");
           upper_[i][n_ - 1] = 0.0;
         }

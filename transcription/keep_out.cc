@@ -5,8 +5,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/format.h"
 #include "transcription/conjunction_geometry.h"
-#include "transcription/internal/format.h"
 #include "transcription/internal/keep_out_bounds.h"
 #include "transcription/internal/row_buffer.h"
 #include "transcription/operations.h"
@@ -14,7 +14,7 @@
 namespace thrustsched::transcription {
 namespace {
 
-using internal::FormatNumber;
+using common::FormatG;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -69,7 +69,7 @@ double Median(std::vector<double> v) {
 }  // namespace
 
 KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
-                        const dynamics::DiscretisationOptions& options, const KeepOutColumns& cols,
+                        const dynamics::DiscretizationOptions& options, const KeepOutColumns& cols,
                         milp::Model* model, const milp::Solver* bound_solver) {
   if (!p.conjunction) throw std::invalid_argument("AddKeepOut: the problem has no conjunction");
   const ConjunctionSpec& c = *p.conjunction;
@@ -163,8 +163,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
       // Infeasible by construction; the closest face stays as a hard row so
       // that the model itself is infeasible too.
       s.infeasibility_reasons.push_back(
-          "keep-out at t = " + FormatNumber(k.t()) + " s: no face of the polytope can be left with margin within "
-          "the cost budget and thrust bounds (the closest is missed by " + FormatNumber(closest_miss) + " m)");
+          "keep-out at t = " + FormatG(k.t(), 10) + " s: no face of the polytope can be left with margin within "
+          "the cost budget and thrust bounds (the closest is missed by " + FormatG(closest_miss, 10) + " m)");
       faces.push_back(closest);
     }
     KeepOutGroup group;

@@ -105,7 +105,7 @@ void CompleteKeepOut(const milp::LpData& lp, const KeepOutStats& stats, Eigen::V
 ///         or no finite big-M exists (an unbounded thrust column and no
 ///         cost_budget; the message says which field to set).
 KeepOutStats AddKeepOut(const ScheduleProblem& problem, const dynamics::DiscreteModel& discrete,
-                        const dynamics::DiscretisationOptions& options, const KeepOutColumns& columns,
+                        const dynamics::DiscretizationOptions& options, const KeepOutColumns& columns,
                         milp::Model* model, const milp::Solver* bound_solver = nullptr);
 
 }  // namespace thrustsched::transcription

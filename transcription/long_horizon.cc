@@ -7,38 +7,31 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/constants.h"
+#include "common/error.h"
+#include "common/format.h"
+#include "common/timing.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/propagation.h"
 #include "transcription/schedule_milp.h"
 
 namespace thrustsched::transcription {
+
+using common::Since;
+using common::Fail;
+using common::FormatG;
+
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+using common::kRadToDeg;
 constexpr double kDirectionTolerance = 1e-6;
 
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using common::Clock;
 
 double CpuSince(std::clock_t c0) {
   return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-}
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(12);
-  os << v;
-  return os.str();
-}
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
 }
 
 // True if `value` is an integer multiple of `step` (relative 1e-9).
@@ -173,10 +166,10 @@ int LongHorizonOptions::num_cycles() const {
 }
 
 bool LongHorizonOptions::IsValid(std::string* error) const {
-  if (!std::isfinite(start_s)) return Fail(error, "long_horizon.start_s must be finite, got " + Num(start_s));
+  if (!std::isfinite(start_s)) return Fail(error, "long_horizon.start_s must be finite, got " + FormatG(start_s, 12));
   auto positive = [&](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0) {
-      return Fail(error, std::string("long_horizon.") + name + " must be finite and > 0, got " + Num(v));
+      return Fail(error, std::string("long_horizon.") + name + " must be finite and > 0, got " + FormatG(v, 12));
     }
     return true;
   };
@@ -185,44 +178,44 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
     return false;
   }
   if (!Divides(step_s, cycle_s)) {
-    return Fail(error, "long_horizon.step_s " + Num(step_s) + " s does not divide cycle_s " +
-                           Num(cycle_s) + " s");
+    return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) + " s does not divide cycle_s " +
+                           FormatG(cycle_s, 12) + " s");
   }
   if (!Divides(step_s, duration_s)) {
-    return Fail(error, "long_horizon.step_s " + Num(step_s) + " s does not divide duration_s " +
-                           Num(duration_s) + " s");
+    return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) + " s does not divide duration_s " +
+                           FormatG(duration_s, 12) + " s");
   }
   if (mode == HorizonMode::kReceding) {
     if (!positive(control_s, "control_s")) return false;
     if (!(control_s < cycle_s)) {
-      return Fail(error, "long_horizon.control_s " + Num(control_s) +
-                             " s must be shorter than cycle_s " + Num(cycle_s) +
+      return Fail(error, "long_horizon.control_s " + FormatG(control_s, 12) +
+                             " s must be shorter than cycle_s " + FormatG(cycle_s, 12) +
                              " s in receding mode");
     }
     if (!Divides(step_s, control_s)) {
-      return Fail(error, "long_horizon.step_s " + Num(step_s) + " s does not divide control_s " +
-                             Num(control_s) + " s");
+      return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) + " s does not divide control_s " +
+                             FormatG(control_s, 12) + " s");
     }
   }
   const double applied = mode == HorizonMode::kFixed ? cycle_s : control_s;
   if (duration_s / applied > 100000.0) {
-    return Fail(error, "long_horizon: duration_s / cycle length = " + Num(duration_s / applied) +
+    return Fail(error, "long_horizon: duration_s / cycle length = " + FormatG(duration_s / applied, 12) +
                            " cycles; at most 100000 are allowed");
   }
   for (size_t k = 0; k < outages.size(); ++k) {
     const ThrusterOutage& o = outages[k];
     if (std::isnan(o.from_s) || std::isnan(o.until_s) || !(o.until_s > o.from_s)) {
       return Fail(error, "long_horizon.outages[" + std::to_string(k) +
-                             "] must have from_s < until_s, got [" + Num(o.from_s) + ", " +
-                             Num(o.until_s) + ")");
+                             "] must have from_s < until_s, got [" + FormatG(o.from_s, 12) + ", " +
+                             FormatG(o.until_s, 12) + ")");
     }
   }
   if (!std::isfinite(soft_penalty) || soft_penalty <= 0.0) {
-    return Fail(error, "long_horizon.soft_penalty must be finite and > 0, got " + Num(soft_penalty));
+    return Fail(error, "long_horizon.soft_penalty must be finite and > 0, got " + FormatG(soft_penalty, 12));
   }
   if (!std::isfinite(improve_above_gap)) {
     return Fail(error, "long_horizon.improve_above_gap must be finite, got " +
-                           Num(improve_above_gap));
+                           FormatG(improve_above_gap, 12));
   }
   if (replay_samples_per_step < 1 || replay_samples_per_step > 1000) {
     return Fail(error, "long_horizon.replay_samples_per_step must be in [1, 1000], got " +
@@ -234,7 +227,7 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
                 "the true state by the long-horizon driver)");
   }
   std::string e;
-  if (!solve.solve.IsValid(&e)) return Fail(error, "long_horizon.solve: " + e);
+  if (!solve.milp.IsValid(&e)) return Fail(error, "long_horizon.solve: " + e);
   return true;
 }
 
@@ -260,7 +253,7 @@ Distribution Distribute(std::vector<double> values) {
   return d;
 }
 
-LongHorizonSummary Summarise(const std::vector<CycleRecord>& cycles,
+LongHorizonSummary Summarize(const std::vector<CycleRecord>& cycles,
                              const dynamics::ThrusterSet& thrusters) {
   LongHorizonSummary s;
   const int m = thrusters.size();
@@ -309,7 +302,7 @@ LongHorizonSummary Summarise(const std::vector<CycleRecord>& cycles,
     s.cpu_seconds_total += c.cpu_seconds;
   }
   for (int i = 0; i < m; ++i) {
-    s.thrust_days[i] = s.on_time_s[i] / 86400.0;
+    s.thrust_days[i] = s.on_time_s[i] / common::kSecondsPerDay;
     const ThrusterFaces f = FacesOf(thrusters.thruster(i));
     if (f.north) s.north_days += s.thrust_days[i];
     if (f.south) s.south_days += s.thrust_days[i];
@@ -347,9 +340,9 @@ LongHorizonSimulation::LongHorizonSimulation(ScheduleProblem base, LongHorizonOp
       geo->options().epoch != simulator_->options().epoch) {
     throw std::invalid_argument(
         "LongHorizonSimulation: the simulator's station (" +
-        Num(simulator_->options().station_longitude_deg) + " deg, epoch " +
+        FormatG(simulator_->options().station_longitude_deg, 12) + " deg, epoch " +
         simulator_->options().epoch + ") differs from the model's (" +
-        Num(geo->options().station_longitude_deg) + " deg, epoch " + geo->options().epoch + ")");
+        FormatG(geo->options().station_longitude_deg, 12) + " deg, epoch " + geo->options().epoch + ")");
   }
   if (base_.input_mode != InputMode::kOnOff) {
     throw std::invalid_argument("LongHorizonSimulation: input_mode must be on-off");
@@ -465,9 +458,9 @@ ScheduleProblem LongHorizonSimulation::CycleProblem(const LongHorizonState& stat
   }
   const CycleTimes t = Times(k);
   if (std::abs(state.time_s - t.start_s) > 1e-6) {
-    throw std::invalid_argument("LongHorizonSimulation: state.time_s " + Num(state.time_s) +
+    throw std::invalid_argument("LongHorizonSimulation: state.time_s " + FormatG(state.time_s, 12) +
                                 " s is not the start of cycle " + std::to_string(k) + " (" +
-                                Num(t.start_s) + " s)");
+                                FormatG(t.start_s, 12) + " s)");
   }
   const int m = base_.thrusters.size();
   if (static_cast<int>(state.last_burn_end_s.size()) != m) {
@@ -485,8 +478,8 @@ ScheduleProblem LongHorizonSimulation::CycleProblem(const LongHorizonState& stat
     const double e = state.last_burn_end_s[i];
     if (std::isnan(e) || e > t.start_s + kTimeTolerance) {
       throw std::invalid_argument("LongHorizonSimulation: state.last_burn_end_s[" +
-                                  std::to_string(i) + "] = " + Num(e) +
-                                  " s is after the cycle start " + Num(t.start_s) + " s");
+                                  std::to_string(i) + "] = " + FormatG(e, 12) +
+                                  " s is after the cycle start " + FormatG(t.start_s, 12) + " s");
     }
     p.history.off_for_s[i] = std::isfinite(e) ? std::max(0.0, t.start_s - e) : kInf;
   }
@@ -526,7 +519,7 @@ ScheduleMilp LongHorizonSimulation::BuildCycleMilp(const ScheduleProblem& p,
 void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int control_node,
                                             bool accepted_raw, ScheduleResult* accepted,
                                             CycleRecord* rec) const {
-  const milp::SolveOptions& so = options_.solve.solve;
+  const milp::SolveOptions& so = options_.solve.milp;
   long long nodes = options_.improve_max_nodes;
   if (nodes < 0) nodes = so.max_nodes >= 0 ? 5 * std::max(so.max_nodes, 1LL) : 0;
   if (options_.improve_above_gap <= 0.0 || nodes <= 0) return;
@@ -569,13 +562,13 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
       SolveScheduleOptions opt = options_.solve;
       opt.check.nonlinear.reset();
       opt.check.nonlinear_default = false;
-      if (accepted_raw || raw) opt.solve.presolve = false;
+      if (accepted_raw || raw) opt.milp.presolve = false;
       if (elastic || raw) {
         opt.warm_start.clear();
-        opt.solve.max_nodes = so.max_nodes >= 0 ? so.max_nodes : nodes;
+        opt.milp.max_nodes = so.max_nodes >= 0 ? so.max_nodes : nodes;
       } else {
         opt.warm_start = accepted->schedule.burns;
-        opt.solve.max_nodes = nodes;
+        opt.milp.max_nodes = nodes;
       }
       r = SolveBuilt(milp, *solver_, opt);
       attempt.status = r.solve.status;
@@ -585,8 +578,8 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
                         : elastic ? "(elastic window, cold"
                                   : "(from the accepted schedule") +
                        (accepted_raw ? ", CBC preprocessing and presolve off" : "") +
-                       ", gap " + Num(accepted->solve.gap) + ", " +
-                       std::to_string(opt.solve.max_nodes) + " nodes): " + r.solve.detail;
+                       ", gap " + FormatG(accepted->solve.gap, 12) + ", " +
+                       std::to_string(opt.milp.max_nodes) + " nodes): " + r.solve.detail;
       rec->check_seconds += r.check_seconds;
     } catch (const std::exception& e) {
       attempt.status = milp::SolveStatus::kError;
@@ -604,16 +597,14 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
       const double bound = std::max(accepted->solve.best_bound, r.solve.best_bound);
       *accepted = std::move(r);
       accepted->solve.best_bound = bound;
-      accepted->solve.gap = std::abs(accepted->solve.objective - bound) /
-                            std::max(1e-10, std::abs(accepted->solve.objective));
+      accepted->solve.gap = milp::RelativeGap(accepted->solve.objective, bound);
       accepted->solve.status = accepted->solve.gap <= so.relative_gap
                                    ? milp::SolveStatus::kOptimal
                                    : milp::SolveStatus::kFeasible;
       attempt.detail += "; kept";
     } else if (usable && r.solve.best_bound > accepted->solve.best_bound) {
       accepted->solve.best_bound = r.solve.best_bound;  // same schedule, better proof
-      accepted->solve.gap = std::abs(accepted->solve.objective - r.solve.best_bound) /
-                            std::max(1e-10, std::abs(accepted->solve.objective));
+      accepted->solve.gap = milp::RelativeGap(accepted->solve.objective, r.solve.best_bound);
       attempt.detail += "; no better schedule, better bound";
     } else {
       attempt.detail += usable ? "; no better schedule" : "; no usable schedule";
@@ -631,7 +622,7 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   const int k = state->next_cycle;
   const CycleTimes t = Times(k);
   const int m = base_.thrusters.size();
-  const milp::SolveOptions& so = options_.solve.solve;
+  const milp::SolveOptions& so = options_.solve.milp;
 
   CycleRecord rec;
   rec.index = k;
@@ -707,9 +698,9 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
         // Zero thrust is feasible here (the window is soft, the end free):
         // start from it, so that a schedule exists whatever the time limit.
         opt.warm_start.clear();
-        opt.solve.initial_solution = milp.StartFromBurns({});
+        opt.milp.initial_solution = milp.StartFromBurns({});
       }
-      if (raw) opt.solve.presolve = false;
+      if (raw) opt.milp.presolve = false;
       r = SolveBuilt(milp, *solver_, opt);
       attempt.status = r.solve.status;
       attempt.solve_seconds = r.solve.wall_seconds;

@@ -51,12 +51,12 @@
 //   transcription::LongHorizonOptions o;
 //   o.duration_s = 365 * 86400.0;  o.cycle_s = 7 * 86400.0;  o.step_s = 300;
 //   o.terminal.kind = transcription::TerminalKind::kStationKeepingSets;
-//   o.solve.solve.time_limit_s = 30;  o.solve.solve.relative_gap = 0.01;
+//   o.solve.milp.time_limit_s = 30;  o.solve.milp.relative_gap = 0.01;
 //   transcription::LongHorizonSimulation run(base, o, sim, milp::MakeCbcSolver());
 //   transcription::LongHorizonState state = run.InitialState();
 //   std::vector<transcription::CycleRecord> cycles;
 //   while (state.next_cycle < run.num_cycles()) cycles.push_back(run.RunCycle(&state));
-//   transcription::LongHorizonSummary year = transcription::Summarise(cycles, base.thrusters);
+//   transcription::LongHorizonSummary year = transcription::Summarize(cycles, base.thrusters);
 //
 // Determinism: with threads = 1, cycles that reach the requested gap (or
 // prove optimality) before the time limit give the same schedules on every
@@ -311,8 +311,13 @@ struct LongHorizonSummary {
   double wall_seconds_total = 0.0;
   double cpu_seconds_total = 0.0;
 };
-LongHorizonSummary Summarise(const std::vector<CycleRecord>& cycles,
+LongHorizonSummary Summarize(const std::vector<CycleRecord>& cycles,
                              const dynamics::ThrusterSet& thrusters);
+/// The name before the C++ API settled on -ize.
+[[deprecated("renamed Summarize")]] inline LongHorizonSummary Summarise(
+    const std::vector<CycleRecord>& cycles, const dynamics::ThrusterSet& thrusters) {
+  return Summarize(cycles, thrusters);
+}
 
 class LongHorizonSimulation {
  public:

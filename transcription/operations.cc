@@ -3,27 +3,22 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/error.h"
+#include "common/format.h"
+
 namespace thrustsched::transcription {
+
+using common::Fail;
+using common::FormatG;
+
 namespace {
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
-}
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
 
 // Durations must be finite and >= 0 (max_burn_s may be +inf).
 bool CheckDuration(const char* field, double v, bool allow_inf, std::string* error) {
   if (std::isnan(v) || v < 0.0 || (!allow_inf && std::isinf(v))) {
     return Fail(error, std::string("operations.") + field + " must be " +
                            (allow_inf ? "> 0 (or infinite)" : "finite and >= 0") + ", got " +
-                           Num(v));
+                           FormatG(v, 10));
   }
   return true;
 }
@@ -39,11 +34,11 @@ bool OperationalRules::IsValid(std::string* error) const {
   if (!CheckDuration("min_off_same_s", min_off_same_s, false, error)) return false;
   if (!CheckDuration("min_gap_other_s", min_gap_other_s, false, error)) return false;
   if (std::isnan(max_burn_s) || max_burn_s <= 0.0) {
-    return Fail(error, "operations.max_burn_s must be > 0 (or infinite), got " + Num(max_burn_s));
+    return Fail(error, "operations.max_burn_s must be > 0 (or infinite), got " + FormatG(max_burn_s, 10));
   }
   if (max_burn_s + kTimeTolerance < min_burn_s) {
-    return Fail(error, "operations.max_burn_s (" + Num(max_burn_s) +
-                           ") is smaller than operations.min_burn_s (" + Num(min_burn_s) + ")");
+    return Fail(error, "operations.max_burn_s (" + FormatG(max_burn_s, 10) +
+                           ") is smaller than operations.min_burn_s (" + FormatG(min_burn_s, 10) + ")");
   }
   return true;
 }
@@ -69,13 +64,13 @@ bool BoundaryHistory::IsValid(int num_thrusters, std::string* error) const {
   for (size_t i = 0; i < on_for_s.size(); ++i) {
     if (!std::isfinite(on_for_s[i]) || on_for_s[i] < 0.0) {
       return Fail(error, "history.on_for_s[" + std::to_string(i) +
-                             "] must be finite and >= 0, got " + Num(on_for_s[i]));
+                             "] must be finite and >= 0, got " + FormatG(on_for_s[i], 10));
     }
   }
   for (size_t i = 0; i < off_for_s.size(); ++i) {
     if (std::isnan(off_for_s[i]) || off_for_s[i] < 0.0) {
       return Fail(error, "history.off_for_s[" + std::to_string(i) +
-                             "] must be >= 0 (or infinite), got " + Num(off_for_s[i]));
+                             "] must be >= 0 (or infinite), got " + FormatG(off_for_s[i], 10));
     }
   }
   return true;

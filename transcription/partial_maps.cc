@@ -10,7 +10,7 @@ std::vector<PartialMap> PartialMaps(const dynamics::LinearModel& model,
                                     const Eigen::MatrixXd& input_columns,
                                     const std::vector<double>& grid,
                                     const std::vector<double>& times,
-                                    const dynamics::DiscretisationOptions& options) {
+                                    const dynamics::DiscretizationOptions& options) {
   const int nn = static_cast<int>(grid.size()) - 1;
   if (nn < 1) throw std::invalid_argument("PartialMaps: the grid needs at least 2 points");
   const int n = model.num_states();
@@ -45,7 +45,7 @@ std::vector<PartialMap> PartialMaps(const dynamics::LinearModel& model,
     out[q].interval = nn - 1;
     slot[q] = static_cast<int>(fine.size()) - 1;
   }
-  const dynamics::DiscreteModel d = dynamics::Discretise(model, input_columns, fine, options);
+  const dynamics::DiscreteModel d = dynamics::Discretize(model, input_columns, fine, options);
   // Walk the refined grid, accumulating the map from the current node.
   Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(n, n), gamma = Eigen::MatrixXd::Zero(n, m);
   Eigen::VectorXd drift = Eigen::VectorXd::Zero(n);

@@ -36,12 +36,12 @@ struct PartialMap {
 /// One map per entry of `times` (sorted, non-decreasing, inside [grid.front(),
 /// grid.back()]), in that order.
 /// @throws std::invalid_argument if the times are unsorted or outside the
-///         grid, and as dynamics::Discretise.
+///         grid, and as dynamics::Discretize.
 std::vector<PartialMap> PartialMaps(const dynamics::LinearModel& model,
                                     const Eigen::MatrixXd& input_columns,
                                     const std::vector<double>& grid,
                                     const std::vector<double>& times,
-                                    const dynamics::DiscretisationOptions& options);
+                                    const dynamics::DiscretizationOptions& options);
 
 }  // namespace thrustsched::transcription
 

@@ -5,20 +5,15 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/error.h"
+#include "common/format.h"
+
 namespace thrustsched::transcription {
+
+using common::Fail;
+using common::FormatG;
+
 namespace {
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
-}
-
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
 
 bool AllFinite(const Eigen::VectorXd& v) { return v.allFinite(); }
 
@@ -58,11 +53,11 @@ bool ScheduleProblem::IsValid(std::string* error) const {
   }
   for (size_t j = 0; j < grid.size(); ++j) {
     if (!std::isfinite(grid[j])) {
-      return Fail(error, "problem.grid[" + std::to_string(j) + "] is not finite: " + Num(grid[j]));
+      return Fail(error, "problem.grid[" + std::to_string(j) + "] is not finite: " + FormatG(grid[j], 10));
     }
     if (j > 0 && !(grid[j] > grid[j - 1])) {
       return Fail(error, "problem.grid is not strictly increasing at index " + std::to_string(j) +
-                             ": " + Num(grid[j - 1]) + " then " + Num(grid[j]));
+                             ": " + FormatG(grid[j - 1], 10) + " then " + FormatG(grid[j], 10));
     }
   }
   if (initial_state.size() != n) {
@@ -80,8 +75,8 @@ bool ScheduleProblem::IsValid(std::string* error) const {
                              " is not a thruster index (0.." + std::to_string(m - 1) + ")");
     }
     if (std::isnan(f.start_s) || std::isnan(f.end_s) || !(f.end_s > f.start_s)) {
-      return Fail(error, where + " must have start_s < end_s, got [" + Num(f.start_s) + ", " +
-                             Num(f.end_s) + ")");
+      return Fail(error, where + " must have start_s < end_s, got [" + FormatG(f.start_s, 10) + ", " +
+                             FormatG(f.end_s, 10) + ")");
     }
   }
   // Window.
@@ -103,20 +98,20 @@ bool ScheduleProblem::IsValid(std::string* error) const {
     const double w = window.half_widths[k];
     if (!std::isfinite(w) || w <= 0.0) {
       return Fail(error, "window.half_widths[" + std::to_string(k) +
-                             "] must be finite and > 0, got " + Num(w));
+                             "] must be finite and > 0, got " + FormatG(w, 10));
     }
   }
   if (!(window.margin >= 0.0 && window.margin < 1.0)) {
-    return Fail(error, "window.margin must be in [0, 1), got " + Num(window.margin));
+    return Fail(error, "window.margin must be in [0, 1), got " + FormatG(window.margin, 10));
   }
   if (std::isnan(window.enforce_from_s)) return Fail(error, "window.enforce_from_s is NaN");
   if (window.enabled() && window.enforce_from_s > grid.back()) {
-    return Fail(error, "window.enforce_from_s = " + Num(window.enforce_from_s) +
-                           " s is after the horizon end " + Num(grid.back()) + " s");
+    return Fail(error, "window.enforce_from_s = " + FormatG(window.enforce_from_s, 10) +
+                           " s is after the horizon end " + FormatG(grid.back(), 10) + " s");
   }
   if (!std::isfinite(window.soft_penalty) || window.soft_penalty <= 0.0) {
     return Fail(error, "window.soft_penalty must be finite and > 0, got " +
-                           Num(window.soft_penalty));
+                           FormatG(window.soft_penalty, 10));
   }
   if (window.intersample_points < 0 || window.intersample_points > 100) {
     return Fail(error, "window.intersample_points must be in [0, 100], got " +
@@ -144,7 +139,7 @@ bool ScheduleProblem::IsValid(std::string* error) const {
       for (int i = 0; i < n; ++i) {
         if (std::isnan(terminal.tolerance[i]) || terminal.tolerance[i] < 0.0) {
           return Fail(error, "terminal.tolerance[" + std::to_string(i) +
-                                 "] must be >= 0 (or infinite), got " + Num(terminal.tolerance[i]));
+                                 "] must be >= 0 (or infinite), got " + FormatG(terminal.tolerance[i], 10));
         }
       }
       break;
@@ -158,11 +153,11 @@ bool ScheduleProblem::IsValid(std::string* error) const {
       }
       for (double t : terminal.lookahead_s) {
         if (!std::isfinite(t) || t < 0.0) {
-          return Fail(error, "terminal.lookahead_s entries must be finite and >= 0, got " + Num(t));
+          return Fail(error, "terminal.lookahead_s entries must be finite and >= 0, got " + FormatG(t, 10));
         }
       }
       if (!(terminal.margin >= 0.0 && terminal.margin < 1.0)) {
-        return Fail(error, "terminal.margin must be in [0, 1), got " + Num(terminal.margin));
+        return Fail(error, "terminal.margin must be in [0, 1), got " + FormatG(terminal.margin, 10));
       }
       if (window.outputs.size() < 2) {
         return Fail(error, "terminal station-keeping sets need a window on two outputs");
@@ -171,10 +166,10 @@ bool ScheduleProblem::IsValid(std::string* error) const {
   }
   if (!std::isfinite(objective.burn_start_penalty) || objective.burn_start_penalty < 0.0) {
     return Fail(error, "objective.burn_start_penalty must be finite and >= 0, got " +
-                           Num(objective.burn_start_penalty));
+                           FormatG(objective.burn_start_penalty, 10));
   }
   if (std::isnan(max_impulse_m_s) || max_impulse_m_s <= 0.0) {
-    return Fail(error, "problem.max_impulse_m_s must be > 0, got " + Num(max_impulse_m_s));
+    return Fail(error, "problem.max_impulse_m_s must be > 0, got " + FormatG(max_impulse_m_s, 10));
   }
   if (!max_impulse_per_thruster_m_s.empty()) {
     if (static_cast<int>(max_impulse_per_thruster_m_s.size()) != m) {
@@ -184,7 +179,7 @@ bool ScheduleProblem::IsValid(std::string* error) const {
     }
     for (double v : max_impulse_per_thruster_m_s) {
       if (std::isnan(v) || v < 0.0) {
-        return Fail(error, "problem.max_impulse_per_thruster_m_s entries must be >= 0, got " + Num(v));
+        return Fail(error, "problem.max_impulse_per_thruster_m_s entries must be >= 0, got " + FormatG(v, 10));
       }
     }
   }
@@ -198,18 +193,18 @@ bool ScheduleProblem::IsValid(std::string* error) const {
     const double tol = 1e-9 * (tf - t0);
     auto inside = [&](double t) { return std::isnan(t) || (t >= t0 - tol && t <= tf + tol); };
     if (!inside(conjunction->state_time_s)) {
-      return Fail(error, "conjunction.state_time_s " + Num(conjunction->state_time_s) +
-                             " s is outside the horizon [" + Num(t0) + ", " + Num(tf) + "] s");
+      return Fail(error, "conjunction.state_time_s " + FormatG(conjunction->state_time_s, 10) +
+                             " s is outside the horizon [" + FormatG(t0, 10) + ", " + FormatG(tf, 10) + "] s");
     }
     if (!inside(conjunction->check_start_s) || !inside(conjunction->check_end_s)) {
-      return Fail(error, "conjunction check window [" + Num(conjunction->check_start_s) + ", " +
-                             Num(conjunction->check_end_s) + "] s is not inside the horizon [" +
-                             Num(t0) + ", " + Num(tf) + "] s");
+      return Fail(error, "conjunction check window [" + FormatG(conjunction->check_start_s, 10) + ", " +
+                             FormatG(conjunction->check_end_s, 10) + "] s is not inside the horizon [" +
+                             FormatG(t0, 10) + ", " + FormatG(tf, 10) + "] s");
     }
     const double a = std::isnan(conjunction->check_start_s) ? t0 : conjunction->check_start_s;
     const double b = std::isnan(conjunction->check_end_s) ? tf : conjunction->check_end_s;
     if (!(b > a)) {
-      return Fail(error, "conjunction check window [" + Num(a) + ", " + Num(b) + "] s is empty");
+      return Fail(error, "conjunction check window [" + FormatG(a, 10) + ", " + FormatG(b, 10) + "] s is empty");
     }
   }
   return true;

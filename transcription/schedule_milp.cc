@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/error.h"
 #include "transcription/internal/row_buffer.h"
 #include "transcription/partial_maps.h"
 #include "transcription/terminal_sets.h"
@@ -113,12 +114,19 @@ Eigen::MatrixXi PatternFromBurns(const std::vector<Burn>& burns, int num_thruste
   return p;
 }
 
+bool BuildOptions::IsValid(std::string* error) const {
+  std::string e;
+  if (!discretisation.IsValid(&e)) return common::Fail(error, "discretisation." + e);
+  return true;
+}
+
 ScheduleMilp::ScheduleMilp(const ScheduleProblem& problem, const BuildOptions& options)
     : problem_(problem), options_(options) {
   std::string err;
   if (!problem_.IsValid(&err)) throw std::invalid_argument(err);
+  if (!options_.IsValid(&err)) throw std::invalid_argument("ScheduleMilp: options." + err);
   const auto t0 = std::chrono::steady_clock::now();
-  discrete_ = dynamics::Discretise(*problem_.model, problem_.thrusters.AccelerationMatrix(),
+  discrete_ = dynamics::Discretize(*problem_.model, problem_.thrusters.AccelerationMatrix(),
                                    problem_.grid, options_.discretisation);
   stats_.discretise_seconds = Seconds(t0);
   Build();
@@ -213,7 +221,7 @@ namespace {
 // Partial maps from each interval start to its inter-sample points (the
 // window's intersample_points equally spaced inside each interval).
 std::vector<std::vector<PartialMap>> InterSampleMaps(const ScheduleProblem& p,
-                                                     const dynamics::DiscretisationOptions& opt) {
+                                                     const dynamics::DiscretizationOptions& opt) {
   const int r = p.window.intersample_points;
   std::vector<std::vector<PartialMap>> out(p.num_intervals());
   if (r <= 0) return out;

@@ -46,7 +46,7 @@ std::string_view ToString(Formulation formulation);
 Formulation ParseFormulation(std::string_view name);
 
 struct BuildOptions {
-  dynamics::DiscretisationOptions discretisation;
+  dynamics::DiscretizationOptions discretisation;
   Formulation formulation = Formulation::kSparse;
   Encoding encoding = Encoding::kTight;
   /// Scale state columns and rows so coefficients are near 1 (recommended;
@@ -64,6 +64,11 @@ struct BuildOptions {
   /// small LPs with the terminal constraint (transcription/keep_out.h),
   /// solved with this solver during the build. Not owned.
   const milp::Solver* keep_out_bound_solver = nullptr;
+
+  /// The discretisation options are valid (dynamics::DiscretizationOptions).
+  /// free_slots' shape depends on the problem and is checked by ScheduleMilp.
+  /// On failure `*error` (if given) names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct BuildStats {

@@ -10,20 +10,18 @@
 #include <utility>
 #include <vector>
 
+#include "common/format.h"
 #include "milp/lp_bound.h"
 
 namespace thrustsched::transcription {
+
+using common::FormatG;
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string Fmt(double v, int digits = 6) {
-  char buf[48];
-  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-  return buf;
-}
 
 // The schedule MILP restricted to a set of free slots, condensed over them.
 struct Restriction {
@@ -150,7 +148,7 @@ class Search {
     objective_ = obj;
     incumbents_.push_back({Elapsed(), objective_, bound_});
     if (bound_ > objective_) bound_ = objective_;
-    Step("incumbent " + Fmt(objective_) + " from " + source);
+    Step("incumbent " + FormatG(objective_, 6) + " from " + source);
     Report(milp::SolvePhase::kPresolve, true);
     return true;
   }
@@ -177,10 +175,10 @@ class Search {
     dual_ = milp::SafeDualBound(lp_, relaxation_.row_duals);
     if (report_ != nullptr) report_->lp_bound = dual_.bound;
     RaiseBound(dual_.bound);
-    Step("LP bound " + Fmt(dual_.bound, 8) + (bound_ > dual_.bound ? " (" + Fmt(bound_, 8) +
+    Step("LP bound " + FormatG(dual_.bound, 8) + (bound_ > dual_.bound ? " (" + FormatG(bound_, 8) +
                                                   " on the objective step)"
                                             : std::string()) +
-         " by interior point in " + Fmt(Elapsed() - t0, 3) + " s");
+         " by interior point in " + FormatG(Elapsed() - t0, 3) + " s");
     Report(milp::SolvePhase::kPresolve, false);
     return true;
   }
@@ -262,7 +260,7 @@ class Search {
                                " columns, " + std::to_string(r.small.num_rows()) + " rows)";
       if (s.has_solution()) {
         Step(what + ": " + std::string(milp::ToString(s.status)) + " in " +
-             Fmt(Elapsed() - t0, 3) + " s, " + std::to_string(s.nodes) + " nodes");
+             FormatG(Elapsed() - t0, 3) + " s, " + std::to_string(s.nodes) + " nodes");
         Offer(Lift(r, s.x), "the restricted MILP");
         return;
       }
@@ -320,7 +318,7 @@ class Search {
     if (!r.feasible || s.status == milp::SolveStatus::kInfeasible) {
       // No schedule better than the incumbent: it is optimal.
       bound_ = objective_;
-      Step(what + ": no better schedule (" + Fmt(Elapsed() - t0, 3) + " s): the incumbent is "
+      Step(what + ": no better schedule (" + FormatG(Elapsed() - t0, 3) + " s): the incumbent is "
            "optimal");
       return true;
     }
@@ -336,8 +334,8 @@ class Search {
       bound_ = std::max(bound_, std::min(before, restricted_bound));
     }
     if (bound_ > objective_) bound_ = objective_;
-    Step(what + ": " + std::string(milp::ToString(s.status)) + " in " + Fmt(Elapsed() - t0, 3) +
-         " s, bound " + Fmt(bound_, 8));
+    Step(what + ": " + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) +
+         " s, bound " + FormatG(bound_, 8));
     return s.status != milp::SolveStatus::kOptimal && objective_ < before;
   }
 
@@ -384,7 +382,7 @@ class Search {
     solver_detail_ = s.detail;
     Step("whole MILP (" + std::string(solver_.name()) +
          (has_incumbent() ? ", from the incumbent" : "") + "): " +
-         std::string(milp::ToString(s.status)) + " in " + Fmt(Elapsed() - t0, 3) + " s");
+         std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) + " s");
   }
 
   // -------------------------------------------------------------- result
@@ -449,7 +447,7 @@ bool SearchOptions::IsValid(std::string* error) const {
     return false;
   };
   if (!(candidate_threshold > 0.0 && candidate_threshold < 1.0)) {
-    return fail("candidate_threshold must be in (0, 1), got " + Fmt(candidate_threshold));
+    return fail("candidate_threshold must be in (0, 1), got " + FormatG(candidate_threshold, 6));
   }
   if (neighbourhood < 0) return fail("neighbourhood must be >= 0, got " + std::to_string(neighbourhood));
   if (max_widenings < 0) return fail("max_widenings must be >= 0, got " + std::to_string(max_widenings));

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "dynamics/propagation.h"
 
 namespace thrustsched::transcription {
@@ -44,7 +45,7 @@ std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solve
       if (f.start_s < p.grid.back()) forced.push_back(f);
     }
     p.forced_off = forced;
-    milp::SolveOptions o = options.solve;
+    milp::SolveOptions o = options.milp;
     o.time_limit_s = left / static_cast<double>(lengths.size() - q);
     o.progress = nullptr;
     o.initial_solution.reset();
@@ -65,7 +66,7 @@ std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solve
     } catch (const std::exception&) {
       return "";
     }
-    if (options.solve.interrupt != nullptr && options.solve.interrupt->load()) return "";
+    if (options.milp.interrupt != nullptr && options.milp.interrupt->load()) return "";
   }
   return "";
 }
@@ -118,7 +119,7 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
   ScheduleResult r;
   r.stats = milp.stats();
   r.infeasibility_reasons = milp.infeasibility_reasons();
-  milp::SolveOptions solve_options = options.solve;
+  milp::SolveOptions solve_options = options.milp;
   if (solve_options.objective_step == 0.0) solve_options.objective_step = milp.objective_step();
   const ScheduleProblem& p = milp.problem();
   if (p.input_mode == InputMode::kOnOff) {
@@ -138,7 +139,7 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
   } else {
     r.solve = solver.Solve(milp.lp(), solve_options);
   }
-  const bool interrupted = options.solve.interrupt != nullptr && options.solve.interrupt->load();
+  const bool interrupted = options.milp.interrupt != nullptr && options.milp.interrupt->load();
   if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted &&
       options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff &&
       p.window.enabled() && !p.window.soft) {
@@ -174,8 +175,19 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
   return r;
 }
 
+bool SolveScheduleOptions::IsValid(std::string* error) const {
+  std::string e;
+  if (!build.IsValid(&e)) return common::Fail(error, "build." + e);
+  if (!milp.IsValid(&e)) return common::Fail(error, "milp: " + e);
+  if (search.enabled && !search.IsValid(&e)) return common::Fail(error, "search: " + e);
+  if (check_schedule && !check.IsValid(&e)) return common::Fail(error, "check." + e);
+  return true;
+}
+
 ScheduleResult SolveSchedule(const ScheduleProblem& problem, const milp::Solver& solver,
                              const SolveScheduleOptions& options) {
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument("SolveSchedule: options." + error);
   const ScheduleMilp milp(problem, options.build);
   return SolveBuilt(milp, solver, options);
 }

@@ -3,7 +3,7 @@
 //
 //   auto solver = milp::MakeCbcSolver();
 //   transcription::SolveScheduleOptions opt;
-//   opt.solve.time_limit_s = 60;
+//   opt.milp.time_limit_s = 60;
 //   transcription::ScheduleResult r = transcription::SolveSchedule(problem, *solver, opt);
 //   if (r.has_schedule()) {
 //     std::cout << r.schedule.consumption_l1_m_s << " m/s, window violation "
@@ -33,7 +33,7 @@ namespace thrustsched::transcription {
 
 struct SolveScheduleOptions {
   BuildOptions build;
-  milp::SolveOptions solve;
+  milp::SolveOptions milp;
   /// On-off mode: the problem-aware search (search.h) unless disabled; then
   /// the whole MILP goes to the solver.
   SearchOptions search;
@@ -55,6 +55,12 @@ struct SolveScheduleOptions {
   /// with a sentence saying what it does and how long it may take (e.g. the
   /// infeasibility diagnosis), so that a user is told why the work goes on.
   std::function<void(const std::string&)> announce;
+
+  /// build and milp are valid, search when it is enabled and check when
+  /// check_schedule is set (neither is read otherwise). prefix_diagnosis_s
+  /// takes any value (<= 0 or NaN: off). On failure `*error` (if given) names
+  /// the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 /// Check of an impulsive schedule: impulses applied to the continuous model

@@ -3,33 +3,19 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/constants.h"
+#include "common/error.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 
 namespace thrustsched::transcription {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using common::kPi;
 
 void CheckOptions(const SkSetOptions& o) {
-  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!positive(o.mean_motion)) {
-    throw std::invalid_argument("terminal set: mean_motion must be finite and > 0, got " +
-                                std::to_string(o.mean_motion));
-  }
-  if (!positive(o.eps_y) || !positive(o.eps_z)) {
-    throw std::invalid_argument("terminal set: window half widths must be finite and > 0, got " +
-                                std::to_string(o.eps_y) + " and " + std::to_string(o.eps_z));
-  }
-  if (o.facets_out_of_plane < 3 || o.facets_cone_plus < 3 || o.facets_cone_minus < 3) {
-    throw std::invalid_argument("terminal set: at least 3 facets per polygon are needed");
-  }
-  if (o.lookahead_s.empty()) throw std::invalid_argument("terminal set: lookahead_s is empty");
-  for (double t : o.lookahead_s) {
-    if (!std::isfinite(t) || t < 0.0) {
-      throw std::invalid_argument("terminal set: lookahead_s entries must be finite and >= 0");
-    }
-  }
+  std::string error;
+  if (!o.IsValid(&error)) throw std::invalid_argument("terminal set: " + error);
 }
 
 // Rows of xi1, xi2 and xi-(t) + eps (the eps-free part of xi+/-) in zeta.
@@ -54,6 +40,25 @@ Eigen::Matrix<double, 1, 6> XiDrift(double n, double t) {
 }
 
 }  // namespace
+
+bool SkSetOptions::IsValid(std::string* error) const {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!positive(mean_motion)) {
+    return common::Fail(error, "mean_motion must be finite and > 0, got " + std::to_string(mean_motion));
+  }
+  if (!positive(eps_y) || !positive(eps_z)) {
+    return common::Fail(error, "window half widths must be finite and > 0, got " + std::to_string(eps_y) +
+                                   " and " + std::to_string(eps_z));
+  }
+  if (facets_out_of_plane < 3 || facets_cone_plus < 3 || facets_cone_minus < 3) {
+    return common::Fail(error, "at least 3 facets per polygon are needed");
+  }
+  if (lookahead_s.empty()) return common::Fail(error, "lookahead_s is empty");
+  for (double t : lookahead_s) {
+    if (!std::isfinite(t) || t < 0.0) return common::Fail(error, "lookahead_s entries must be finite and >= 0");
+  }
+  return true;
+}
 
 HalfSpaces StationKeepingSet(const SkSetOptions& o) {
   CheckOptions(o);

@@ -55,6 +55,11 @@ struct SkSetOptions {
   int facets_cone_plus = 16;
   int facets_cone_minus = 16;
   std::vector<double> lookahead_s = {0.0};  // times t at which the cones hold
+
+  /// mean_motion, eps_y and eps_z finite and > 0; at least 3 facets per
+  /// polygon; lookahead_s not empty, its entries finite and >= 0. On failure
+  /// `*error` (if given) says which.
+  bool IsValid(std::string* error) const;
 };
 
 /// Facets of the inscribed polygons. @throws std::invalid_argument on

@@ -14,19 +14,19 @@ void CheckSameShape(const dynamics::DiscreteModel& a, const dynamics::DiscreteMo
   if (a.num_intervals() != b.num_intervals() || a.num_states() != b.num_states() ||
       a.num_inputs() != b.num_inputs()) {
     throw std::invalid_argument(
-        "CompareDiscretisations: models differ in shape: " + std::to_string(a.num_intervals()) +
+        "CompareDiscretizations: models differ in shape: " + std::to_string(a.num_intervals()) +
         " vs " + std::to_string(b.num_intervals()) + " intervals, " +
         std::to_string(a.num_states()) + " vs " + std::to_string(b.num_states()) + " states, " +
         std::to_string(a.num_inputs()) + " vs " + std::to_string(b.num_inputs()) + " inputs");
   }
   if (scale.size() != a.num_states()) {
-    throw std::invalid_argument("CompareDiscretisations: state_scale has " +
+    throw std::invalid_argument("CompareDiscretizations: state_scale has " +
                                 std::to_string(scale.size()) + " entries, expected " +
                                 std::to_string(a.num_states()));
   }
   for (int i = 0; i < scale.size(); ++i) {
     if (!(scale[i] > 0.0) || !std::isfinite(scale[i])) {
-      throw std::invalid_argument("CompareDiscretisations: state_scale[" + std::to_string(i) +
+      throw std::invalid_argument("CompareDiscretizations: state_scale[" + std::to_string(i) +
                                   "] must be finite and > 0, got " + std::to_string(scale[i]));
     }
   }
@@ -34,12 +34,12 @@ void CheckSameShape(const dynamics::DiscreteModel& a, const dynamics::DiscreteMo
 
 }  // namespace
 
-DiscretisationError CompareDiscretisations(const dynamics::DiscreteModel& model,
+DiscretizationError CompareDiscretizations(const dynamics::DiscreteModel& model,
                                            const dynamics::DiscreteModel& reference,
                                            const Eigen::VectorXd& state_scale) {
   CheckSameShape(model, reference, state_scale);
   const Eigen::VectorXd inv = state_scale.cwiseInverse();
-  DiscretisationError e;
+  DiscretizationError e;
   for (int j = 0; j < model.num_intervals(); ++j) {
     const Eigen::MatrixXd ref_phi = inv.asDiagonal() * reference.phi[j] * state_scale.asDiagonal();
     const Eigen::MatrixXd d_phi =

@@ -2,9 +2,9 @@
 // grid (dynamics::Scheme::kReference), and log-log fits for observed orders
 // and growth exponents.
 //
-//   dynamics::DiscreteModel dm = dynamics::Discretise(model, u, grid, {Scheme::kRk4});
-//   dynamics::DiscreteModel ref = dynamics::Discretise(model, u, grid, {Scheme::kReference});
-//   bench::DiscretisationError e = bench::CompareDiscretisations(dm, ref, model.state_scale());
+//   dynamics::DiscreteModel dm = dynamics::Discretize(model, u, grid, {Scheme::kRk4});
+//   dynamics::DiscreteModel ref = dynamics::Discretize(model, u, grid, {Scheme::kReference});
+//   bench::DiscretizationError e = bench::CompareDiscretizations(dm, ref, model.state_scale());
 //   double slope = bench::FitLogLogSlope({60, 300, 1800}, {e1, e2, e3}, 1e-12);
 //
 // Definitions (nondimensional with the model's state scale S = diag(s)):
@@ -27,7 +27,7 @@
 
 namespace thrustsched::bench {
 
-struct DiscretisationError {
+struct DiscretizationError {
   double max_rel_err_phi = 0.0;
   double max_rel_err_gamma = 0.0;
   int worst_interval_phi = -1;
@@ -37,7 +37,7 @@ struct DiscretisationError {
 /// @throws std::invalid_argument if the two models do not have the same
 ///         grid size and matrix sizes, or the scale has the wrong size or a
 ///         non-positive entry.
-DiscretisationError CompareDiscretisations(const dynamics::DiscreteModel& model,
+DiscretizationError CompareDiscretizations(const dynamics::DiscreteModel& model,
                                            const dynamics::DiscreteModel& reference,
                                            const Eigen::VectorXd& state_scale);
 

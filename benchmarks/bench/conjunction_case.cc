@@ -9,16 +9,18 @@
 #include <nlohmann/json.hpp>
 
 #include "benchmarks/bench/case_common.h"
+#include "common/timing.h"
 #include "milp/cbc_solver.h"
 #include "transcription/conjunction_check.h"
 #include "transcription/conjunction_solve.h"
 
 namespace thrustsched::bench {
+
+using common::Since;
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using common::Clock;
 
 // The reference case whose scenario_file ends with the case's file name.
 nlohmann::json ReferenceCase(const CaseSpec& spec) {
@@ -53,11 +55,11 @@ std::vector<Row> ExecuteConjunction(const CaseSpec& spec, int repeat, const RunC
   const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
   transcription::SolveScheduleOptions so{};
   so.build = s.build;
-  so.solve = s.solve;
-  so.solve.time_limit_s = spec.time_limit_s;
-  so.solve.relative_gap = spec.relative_gap;
-  so.solve.threads = spec.threads;
-  so.solve.log_level = 0;
+  so.milp = s.solve;
+  so.milp.time_limit_s = spec.time_limit_s;
+  so.milp.relative_gap = spec.relative_gap;
+  so.milp.threads = spec.threads;
+  so.milp.log_level = 0;
   so.check = s.check;
   const transcription::ConjunctionSolve cs =
       transcription::SolveConjunction(milp, *solver, so, s.conjunction_solve);

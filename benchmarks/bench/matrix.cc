@@ -8,23 +8,17 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/constants.h"
+#include "common/format.h"
+#include "dynamics/discretisation.h"
+
 namespace thrustsched::bench {
+
+using common::FormatG;
+
 namespace {
 
-constexpr double kDay = 86400.0;
-
-// Schemes compared (the reference is the yardstick, not a contender).
-const std::vector<std::string>& Schemes() {
-  static const std::vector<std::string> kSchemes = {
-      "exact_zoh", "frozen_start", "frozen_mid", "hermite_simpson", "rk4", "trapezoid", "euler"};
-  return kSchemes;
-}
-
-std::string Fmt(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+constexpr double kDay = common::kSecondsPerDay;
 
 nlohmann::json Scheme(const std::string& scheme) {
   return {{"discretisation", {{"scheme", scheme}}}};
@@ -135,7 +129,7 @@ void AddAccuracy(Builder* b, bool quick) {
 void AddCost(Builder* b, const MatrixOptions& o) {
   // Discretisation and build time per scheme on the 7-day GEO grid (target
   // cases: repeated). Quick: 1 day, one repeat.
-  for (const std::string& scheme : Schemes()) {
+  for (const std::string& scheme : ComparedSchemes()) {
     CaseSpec c = b->Make(kSectionCost, "geo_week_anzel4", CaseKind::kBuild);
     c.patch = Scheme(scheme);
     if (o.quick) c.patch = Merge(c.patch, Horizon(kDay, 300));
@@ -239,7 +233,7 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
 void AddSchemeSolves(Builder* b, const MatrixOptions& o) {
   // Solve time and consumption per scheme: the GEO week (terminal
   // station-keeping sets) and the reconstructed constrained-final-state week.
-  for (const std::string& scheme : Schemes()) {
+  for (const std::string& scheme : ComparedSchemes()) {
     CaseSpec c = b->Make(kSectionSchemeSolve, "geo_week_anzel4", CaseKind::kSolve);
     c.patch = Scheme(scheme);
     if (o.quick) {
@@ -253,7 +247,7 @@ void AddSchemeSolves(Builder* b, const MatrixOptions& o) {
     b->Add(c, scheme);
   }
   if (o.quick) return;
-  for (const std::string& scheme : Schemes()) {
+  for (const std::string& scheme : ComparedSchemes()) {
     CaseSpec c = b->Make(kSectionSchemeSolve, "geo_week_constrained_final", CaseKind::kSolve);
     c.patch = Scheme(scheme);
     c.time_limit_s = std::max(o.time_limit_s, 120.0);
@@ -357,8 +351,8 @@ void AddScaling(Builder* b, const MatrixOptions& o) {
     CaseSpec c = b->Make(kSectionScalingHorizon, "geo_week_anzel4", CaseKind::kSolve);
     c.patch = Horizon(d * kDay, o.quick ? 900 : 300);
     if (o.quick) c.time_limit_s = 10;
-    c.variant = "sparse, " + Fmt(d) + " d";
-    b->Add(c, "sparse-" + Fmt(d) + "d");
+    c.variant = "sparse, " + FormatG(d, 6) + " d";
+    b->Add(c, "sparse-" + FormatG(d, 6) + "d");
   }
   // The condensed formulation is only built (sizes, build time, memory): its
   // dense window rows make solving pointless beyond a few days.
@@ -367,8 +361,8 @@ void AddScaling(Builder* b, const MatrixOptions& o) {
   for (double d : cdays) {
     CaseSpec c = b->Make(kSectionScalingHorizon, "geo_week_anzel4", CaseKind::kBuild);
     c.patch = Merge(Horizon(d * kDay, o.quick ? 600 : 300), Transcription("condensed", "tight"));
-    c.variant = "condensed (build only), " + Fmt(d) + " d";
-    b->Add(c, "condensed-" + Fmt(d) + "d");
+    c.variant = "condensed (build only), " + FormatG(d, 6) + " d";
+    b->Add(c, "condensed-" + FormatG(d, 6) + "d");
   }
   const std::vector<double> steps =
       o.quick ? std::vector<double>{900, 1800} : std::vector<double>{150, 300, 600};
@@ -376,8 +370,8 @@ void AddScaling(Builder* b, const MatrixOptions& o) {
     CaseSpec c = b->Make(kSectionScalingStep, "geo_week_anzel4", CaseKind::kSolve);
     c.patch = Horizon(o.quick ? kDay : 7 * kDay, step);
     if (o.quick) c.time_limit_s = 10;
-    c.variant = "step " + Fmt(step / 60) + " min";
-    b->Add(c, Fmt(step) + "s");
+    c.variant = "step " + FormatG(step / 60, 6) + " min";
+    b->Add(c, FormatG(step, 6) + "s");
   }
 }
 
@@ -468,6 +462,17 @@ void AddCollisionAvoidance(Builder* b, const MatrixOptions& o) {
   }
 }
 
+const std::vector<std::string>& ComparedSchemes() {
+  static const std::vector<std::string> kNames = [] {
+    std::vector<std::string> names;
+    for (dynamics::Scheme s : dynamics::AllSchemes()) {
+      if (s != dynamics::Scheme::kReference) names.emplace_back(dynamics::ToString(s));
+    }
+    return names;
+  }();
+  return kNames;
+}
+
 std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
   if (options.threads < 1 || options.threads > 64) {
     throw std::invalid_argument("--threads must be in 1..64, got " +
@@ -475,7 +480,7 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
   }
   if (!(options.time_limit_s > 0.0) || !std::isfinite(options.time_limit_s)) {
     throw std::invalid_argument("--time-limit must be finite and > 0, got " +
-                                Fmt(options.time_limit_s));
+                                FormatG(options.time_limit_s, 6));
   }
   if (options.timing_repeats < 1) {
     throw std::invalid_argument("timing_repeats must be >= 1, got " +

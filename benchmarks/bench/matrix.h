@@ -111,6 +111,11 @@ struct MatrixOptions {
 ///         every directory (naming it), or an option is out of range.
 std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options);
 
+/// The discretisation schemes compared, by scenario-file name, in
+/// dynamics::AllSchemes() order: all but the reference (the yardstick, not a
+/// contender).
+const std::vector<std::string>& ComparedSchemes();
+
 /// Published thesis figures used by the matrix and the report (value, source).
 struct Published {
   double value;

@@ -26,6 +26,7 @@
 #include "benchmarks/bench/report_conjunction.h"
 #include "benchmarks/bench/report_format.h"
 #include "benchmarks/bench/report_solver.h"
+#include "common/constants.h"
 #include "milp/cbc_solver.h"
 
 namespace thrustsched::bench {
@@ -33,13 +34,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kDay = 86400.0;
-
-const std::vector<std::string>& Schemes() {
-  static const std::vector<std::string> kSchemes = {
-      "exact_zoh", "frozen_start", "frozen_mid", "hermite_simpson", "rk4", "trapezoid", "euler"};
-  return kSchemes;
-}
+constexpr double kDay = common::kSecondsPerDay;
 
 // Global order of each scheme for a smooth time-varying model
 // (dynamics/discretisation.h); exact_zoh is exact (LTI) or the reference.
@@ -226,7 +221,7 @@ void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m, Plott
   md << "## Targets\n\n";
   md << "Performance targets on this 2-core machine, medians of repeated runs (spread min-max, "
         "n = runs). A target that is missed says by how much; none is weakened.\n\n";
-  // Discretise and build, 7-day GEO grid at 5 min.
+  // Discretize and build, 7-day GEO grid at 5 min.
   const auto cost = idx.Where([](const Group& g) {
     return g.Get("section") == kSectionCost && std::abs(g.Num("horizon_s") - 7 * kDay) < 1 &&
            std::abs(g.Num("step_s") - 300) < 1e-9;
@@ -384,7 +379,7 @@ void WriteAccuracy(std::ostream& md, const Index& idx, Plotter* plot) {
     head.push_back("slope global");
     MdTable t(head);
     std::ostringstream dat;
-    for (const std::string& scheme : Schemes()) {
+    for (const std::string& scheme : ComparedSchemes()) {
       if (!by.count(scheme)) continue;
       std::vector<std::string> row = {scheme, ExpectedOrder(scheme) ? G(ExpectedOrder(scheme))
                                                                       : "exact"};
@@ -442,7 +437,7 @@ void WriteAccuracy(std::ostream& md, const Index& idx, Plotter* plot) {
       gp << "set title '" << cols[c] << "'\n";
       gp << "plot ";
       int i = 0;
-      for (const std::string& scheme : Schemes()) {
+      for (const std::string& scheme : ComparedSchemes()) {
         if (!by.count(scheme)) continue;
         gp << (i ? ", " : "") << "'" << name << ".dat' index " << i << " using 1:" << (c + 2)
            << " with linespoints title '" << scheme << "'";

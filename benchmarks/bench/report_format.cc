@@ -8,17 +8,19 @@
 #include <vector>
 
 #include "benchmarks/bench/report.h"
+#include "common/format.h"
 
 namespace thrustsched::bench {
+
+using common::FormatG;
+
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
 std::string G(double v, int sig) {
   if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*g", sig, v);
-  return buf;
+  return FormatG(v, sig);
 }
 
 std::string Sec(double v) {

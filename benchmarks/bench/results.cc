@@ -8,6 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/format.h"
+
 namespace thrustsched::bench {
 
 const std::vector<std::string>& ContractColumns() {
@@ -74,9 +76,7 @@ std::string Quote(const std::string& value) {
 
 std::string FormatValue(double value) {
   if (!std::isfinite(value)) return "";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.10g", value);
-  return buf;
+  return common::FormatG(value, 10);
 }
 
 void Row::Set(const std::string& column, const std::string& value) {

@@ -26,6 +26,7 @@
 #include "benchmarks/bench/case_common.h"
 #include "benchmarks/bench/conjunction_case.h"
 #include "benchmarks/bench/external_solvers.h"
+#include "common/timing.h"
 #include "dynamics/discretisation.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
@@ -34,14 +35,13 @@
 #include "transcription/search.h"
 
 namespace thrustsched::bench {
+
+using common::Since;
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using common::Clock;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 double SelfPeakRssMb() {
   rusage ru{};
@@ -88,8 +88,7 @@ Eigen::MatrixXi TestPattern(const app::Scenario& s) {
 
 std::vector<Row> ExecuteAccuracy(const CaseSpec& spec, int repeat) {
   std::vector<Row> rows;
-  const std::vector<std::string> schemes = {"exact_zoh", "frozen_start", "frozen_mid",
-                                            "hermite_simpson", "rk4", "trapezoid", "euler"};
+  const std::vector<std::string>& schemes = ComparedSchemes();
   std::map<std::string, std::vector<double>> err_phi, err_gamma;
   std::map<std::string, std::vector<size_t>> row_index;
   for (double step : spec.accuracy_steps_s) {
@@ -98,10 +97,10 @@ std::vector<Row> ExecuteAccuracy(const CaseSpec& spec, int repeat) {
     const Eigen::MatrixXd u = s.problem.thrusters.AccelerationMatrix();
     const Eigen::VectorXd scale = model.state_scale();
     const Eigen::MatrixXi pattern = TestPattern(s);
-    dynamics::DiscretisationOptions ref_opt;
+    dynamics::DiscretizationOptions ref_opt;
     ref_opt.scheme = dynamics::Scheme::kReference;
     auto t0 = Clock::now();
-    const dynamics::DiscreteModel ref = dynamics::Discretise(model, u, s.problem.grid, ref_opt);
+    const dynamics::DiscreteModel ref = dynamics::Discretize(model, u, s.problem.grid, ref_opt);
     {
       Row r = BaseRow(spec, repeat, s);
       r.Set("scheme", "reference");
@@ -111,12 +110,12 @@ std::vector<Row> ExecuteAccuracy(const CaseSpec& spec, int repeat) {
       rows.push_back(r);
     }
     for (const std::string& name : schemes) {
-      dynamics::DiscretisationOptions opt;
+      dynamics::DiscretizationOptions opt;
       opt.scheme = dynamics::ParseScheme(name);
       t0 = Clock::now();
-      const dynamics::DiscreteModel dm = dynamics::Discretise(model, u, s.problem.grid, opt);
+      const dynamics::DiscreteModel dm = dynamics::Discretize(model, u, s.problem.grid, opt);
       const double dt = Since(t0);
-      const DiscretisationError e = CompareDiscretisations(dm, ref, scale);
+      const DiscretizationError e = CompareDiscretizations(dm, ref, scale);
       Row r = BaseRow(spec, repeat, s);
       r.Set("scheme", name);
       r.Set("formulation", "");
@@ -150,9 +149,11 @@ struct TracePoint {
   double t, objective, bound;
 };
 
+// milp::RelativeGap, except that a missing incumbent or bound gives NaN (an
+// empty CSV cell and no point on the gap plot) where the solver reports +inf.
 double GapOf(double objective, double bound) {
   if (!std::isfinite(objective) || !std::isfinite(bound)) return kNaN;
-  return std::abs(objective - bound) / std::max(1e-10, std::abs(objective));
+  return milp::RelativeGap(objective, bound);
 }
 
 std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext& ctx) {
@@ -161,9 +162,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   const transcription::ScheduleProblem& p = s.problem;
   const dynamics::LinearModel& model = *p.model;
 
-  // Discretise (timed) and build from that discretisation (timed by the library).
+  // Discretize (timed) and build from that discretisation (timed by the library).
   auto t0 = Clock::now();
-  dynamics::DiscreteModel dm = dynamics::Discretise(model, p.thrusters.AccelerationMatrix(),
+  dynamics::DiscreteModel dm = dynamics::Discretize(model, p.thrusters.AccelerationMatrix(),
                                                     p.grid, s.build.discretisation);
   r.Set("discretise_s", Since(t0));
   std::unique_ptr<transcription::ScheduleMilp> milp;
@@ -180,11 +181,11 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   r.Set("objective_step", milp->objective_step());
 
   if (spec.error_metrics && s.build.discretisation.scheme != dynamics::Scheme::kReference) {
-    dynamics::DiscretisationOptions ref_opt = s.build.discretisation;
+    dynamics::DiscretizationOptions ref_opt = s.build.discretisation;
     ref_opt.scheme = dynamics::Scheme::kReference;
     const dynamics::DiscreteModel ref =
-        dynamics::Discretise(model, p.thrusters.AccelerationMatrix(), p.grid, ref_opt);
-    const DiscretisationError e = CompareDiscretisations(dm, ref, model.state_scale());
+        dynamics::Discretize(model, p.thrusters.AccelerationMatrix(), p.grid, ref_opt);
+    const DiscretizationError e = CompareDiscretizations(dm, ref, model.state_scale());
     r.Set("max_rel_err_phi", e.max_rel_err_phi);
     r.Set("max_rel_err_gamma", e.max_rel_err_gamma);
   }

@@ -3,7 +3,7 @@
 // reference discretisation and by PropagateLinear. The state is a flat
 // std::vector<double>; callers map it onto Eigen matrices in their RHS.
 //
-//   internal::AdaptiveIntegrator integ(/*tolerance=*/1e-12, "Discretise");
+//   internal::AdaptiveIntegrator integ(/*tolerance=*/1e-12, "Discretize");
 //   integ.Integrate([&](const std::vector<double>& y, std::vector<double>& dy, double s) {
 //     ...
 //   }, y, /*s_end=*/2.5);

@@ -12,11 +12,11 @@
 namespace thrustsched::dynamics::internal {
 
 /// EGM2008 fully normalised coefficients to degree and order 4 (Pavlis et al. 2012).
-struct NormalisedCoefficient {
+struct NormalizedCoefficient {
   int n, m;
   double c, s;
 };
-inline constexpr NormalisedCoefficient kEgm2008[] = {
+inline constexpr NormalizedCoefficient kEgm2008[] = {
     {2, 0, -4.841651437908150e-4, 0.0},
     {2, 1, -2.066155090741760e-10, 1.384413891379790e-9},
     {2, 2, 2.439383573283130e-6, -1.400273703859340e-6},
@@ -32,7 +32,7 @@ inline constexpr NormalisedCoefficient kEgm2008[] = {
 };
 
 /// N_nm = sqrt((2 - delta_0m)(2n + 1)(n - m)!/(n + m)!): unnormalised = N_nm * normalised.
-double NormalisationFactor(int n, int m);
+double NormalizationFactor(int n, int m);
 
 class GeoForceModel {
  public:

@@ -1,12 +1,12 @@
 // Private helper (not installed): a validated, nondimensional view of a
-// LinearModel with its input columns folded in, shared by Discretise and
+// LinearModel with its input columns folded in, shared by Discretize and
 // PropagateLinear.
 //
 // With T = model.time_scale(), S = diag(model.state_scale()), U = input columns:
 //   tau = t / T,  xi = S^-1 x,  d xi / d tau = A^ xi + E^ [u; 1],
 //   A^ = T S^-1 A S  (n x n),   E^ = T S^-1 [B U, d]  (n x (m + 1)).
 //
-//   internal::ScaledModel sm(model, thrusters.AccelerationMatrix(), "Discretise");
+//   internal::ScaledModel sm(model, thrusters.AccelerationMatrix(), "Discretize");
 //   const internal::ScaledModel::Frozen& f = sm.At(t);   // f.a, f.e
 //
 // At() caches: a time-invariant model is evaluated once; a time-varying one

@@ -257,7 +257,7 @@ class ChildWatch {
     while (waitpid(pid_, &wstatus, 0) < 0 && errno == EINTR) {
     }
     if (have_outcome_) return outcome_;
-    return Synthesised(wstatus);
+    return Synthesized(wstatus);
   }
 
  private:
@@ -325,7 +325,7 @@ class ChildWatch {
   }
 
   // The child ended without its outcome: made of what it reported.
-  DriverOutcome Synthesised(int wstatus) {
+  DriverOutcome Synthesized(int wstatus) {
     DriverOutcome o;
     o.completed = false;
     o.stopped = stop_sent_at_ >= 0.0;

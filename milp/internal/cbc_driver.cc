@@ -38,8 +38,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// CBC's "no value" for objectives and bounds (COIN_DBL_MAX-like sentinels).
-constexpr double kCbcHuge = 1e50;
 
 // Shared by the event handlers of one run (and their clones).
 class DriverState {
@@ -99,15 +97,15 @@ class DriverState {
     const double best = model->getMinimizationObjValue();
     const double wall = clock_.Elapsed();
     const bool improved =
-        best < kCbcHuge && best < last_recorded_ - 1e-12 * std::max(1.0, std::abs(best));
+        best < kCbcInfinity && best < last_recorded_ - 1e-12 * std::max(1.0, std::abs(best));
     const bool final_event = which == CbcEventHandler::endSearch;
     // The bound walks the whole tree: only on news, on the progress clock and
     // at the end of the search.
     const bool due = wall - last_progress_ >= request_.options.progress_interval_s;
     if (!improved && !final_event && !due) return;
     const double bound = model->getBestPossibleObjValue();
-    if (std::abs(bound) < kCbcHuge && bound > last_bound_) last_bound_ = bound;
-    const double obj_model = best < kCbcHuge ? ToModel(best) : kNaN;
+    if (std::abs(bound) < kCbcInfinity && bound > last_bound_) last_bound_ = bound;
+    const double obj_model = best < kCbcInfinity ? ToModel(best) : kNaN;
     if (improved) {
       last_recorded_ = best;
       listener_->OnIncumbent({wall, obj_model, BoundModel()}, OriginalSpace(*model));
@@ -239,7 +237,7 @@ std::vector<std::string> DriverArguments(const DriverRequest& request, const Sol
   if (!options.presolve) {
     args.insert(args.end(), {"-preprocess", "off", "-presolve", "off"});
   }
-  if (options.disable_knapsack_cuts) args.insert(args.end(), {"-knapsackCuts", "off"});
+  if (options.cbc.disable_knapsack_cuts) args.insert(args.end(), {"-knapsackCuts", "off"});
   if (options.max_nodes >= 0) {
     args.insert(args.end(), {"-maxNodes", std::to_string(options.max_nodes)});
   }
@@ -293,11 +291,11 @@ void ReadOutcome(const CbcModel& model, const DriverState& state, int num_cols,
   // stopped one it may be the incumbent itself (no bound recorded), so only
   // the bounds seen during the search count.
   const double final_bound = model.getBestPossibleObjValue();
-  if (model.isProvenOptimal() && std::abs(final_bound) < kCbcHuge &&
+  if (model.isProvenOptimal() && std::abs(final_bound) < kCbcInfinity &&
       final_bound > out->bound_min) {
     out->bound_min = final_bound;
   }
-  if (model.bestSolution() != nullptr && model.getMinimizationObjValue() < kCbcHuge) {
+  if (model.bestSolution() != nullptr && model.getMinimizationObjValue() < kCbcInfinity) {
     out->x = Eigen::Map<const Eigen::VectorXd>(model.bestSolution(), num_cols);
   }
   out->detail += "cbc status " + std::to_string(out->status) + " secondary " +

@@ -27,6 +27,11 @@
 
 namespace thrustsched::milp::internal {
 
+/// CBC's "no value" for objectives and bounds (COIN_DBL_MAX-like sentinels):
+/// a magnitude at or above it is no number. Shared by the driver and the backend
+/// that reads the driver's outcome.
+inline constexpr double kCbcInfinity = 1e50;
+
 /// Receives what the driver finds while it runs. Called from the solving
 /// thread(s); with threads > 1 calls are serialised by the driver.
 class DriverListener {

@@ -117,24 +117,6 @@ const char* PhaseName(milp::SolvePhase phase) {
   return "search";
 }
 
-std::string StatusName(milp::SolveStatus status) {
-  switch (status) {
-    case milp::SolveStatus::kOptimal:
-      return "optimal";
-    case milp::SolveStatus::kFeasible:
-      return "feasible";
-    case milp::SolveStatus::kInfeasible:
-      return "infeasible";
-    case milp::SolveStatus::kUnbounded:
-      return "unbounded";
-    case milp::SolveStatus::kNoSolutionFound:
-      return "no_solution";
-    case milp::SolveStatus::kError:
-      return "error";
-  }
-  return "error";
-}
-
 py::dict ProgressDict(const milp::SolveProgress& p) {
   py::dict d;
   d["wall_seconds"] = p.wall_seconds;

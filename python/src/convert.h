@@ -13,6 +13,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "app/outputs.h"
 #include "milp/solver.h"
 
 namespace thrustsched::python {
@@ -45,8 +46,9 @@ Eigen::MatrixXd ToMatrix(const DoubleArray& a, const std::string& name, int rows
 py::dict ProgressDict(const milp::SolveProgress& p);
 /// "root_lp" | "presolve" | "search" | "finishing".
 const char* PhaseName(milp::SolvePhase phase);
-/// "optimal" | "feasible" | "infeasible" | "unbounded" | "no_solution" | "error".
-std::string StatusName(milp::SolveStatus status);
+/// "optimal" | "feasible" | "infeasible" | "unbounded" | "no_solution" | "error":
+/// summary.json's names (the CLI's function, so that both always agree).
+using app::StatusName;
 
 /// Python's json.loads of a JSON text (for nlohmann::json dumps).
 py::object JsonLoads(const std::string& text);

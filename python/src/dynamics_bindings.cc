@@ -41,10 +41,10 @@ Eigen::MatrixXd InputColumns(const LinearModel& model, const py::object& inputs)
   return ToMatrix(inputs.cast<DoubleArray>(), "input_matrix", model.num_inputs(), -1);
 }
 
-py::dict Discretise(const LinearModel& model, const std::vector<double>& grid_s,
+py::dict Discretize(const LinearModel& model, const std::vector<double>& grid_s,
                     const py::object& inputs, const std::string& scheme, int rk4_substeps,
                     double reference_tolerance) {
-  dynamics::DiscretisationOptions o;
+  dynamics::DiscretizationOptions o;
   o.scheme = dynamics::ParseScheme(scheme);
   o.rk4_substeps = rk4_substeps;
   o.reference_tolerance = reference_tolerance;
@@ -52,7 +52,7 @@ py::dict Discretise(const LinearModel& model, const std::vector<double>& grid_s,
   dynamics::DiscreteModel dm;
   {
     py::gil_scoped_release nogil;
-    dm = dynamics::Discretise(model, u, grid_s, o);
+    dm = dynamics::Discretize(model, u, grid_s, o);
   }
   py::dict d;
   d["phi"] = StackMatrices(dm.phi);
@@ -91,13 +91,17 @@ void BindDynamics(py::module_& m) {
            }, py::arg("t_s"), "(A, B, d) at t (s since the model epoch).")
       .def("output_matrix", [](const LinearModel& x, double t_s) { return Eigen::MatrixXd(x.EvaluateOutput(t_s).c); },
            py::arg("t_s"), "C at t.")
-      .def("discretise", &Discretise, py::arg("grid_s"), py::arg("inputs") = py::none(),
+      .def("discretise", &Discretize, py::arg("grid_s"), py::arg("inputs") = py::none(),
            py::arg("scheme") = "exact_zoh", py::arg("rk4_substeps") = 1,
            py::arg("reference_tolerance") = 1e-12,
            "x_{j+1} = Phi_j x_j + Gamma_j u_j + drift_j on the grid, with u_j held on each "
            "interval. inputs: a ThrusterSet (Gamma's columns = thrusters), a 3 x k array of "
            "acceleration columns (m/s^2), or None (the identity). Returns a dict of arrays "
-           "phi [N, n, n], gamma [N, n, k], drift [N, n], grid_s [N + 1].");
+           "phi [N, n, n], gamma [N, n, k], drift [N, n], grid_s [N + 1].")
+      // The published name above stays; this one matches the C++ API's -ize spelling.
+      .def("discretize", &Discretize, py::arg("grid_s"), py::arg("inputs") = py::none(),
+           py::arg("scheme") = "exact_zoh", py::arg("rk4_substeps") = 1,
+           py::arg("reference_tolerance") = 1e-12, "Same as discretise.");
 
   py::class_<dynamics::DoubleIntegrator1d, LinearModel, std::shared_ptr<dynamics::DoubleIntegrator1d>>(
       m, "DoubleIntegrator1d", "x' = v, v' = a (state [x_m, v_m_s]).")

@@ -26,6 +26,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "app/outputs.h"
 #include "app/scenario.h"
 #include "bindings.h"
 #include "convert.h"
@@ -79,28 +80,6 @@ LinearExpr QuickSum(const py::iterable& items) {
 LinearExpr Dot(const DoubleArray& coefficients, const py::handle& vars) {
   const std::vector<Variable> v = VariableList(vars);
   return LinearExpr::InnerProduct(ToVector(coefficients, "coefficients", static_cast<int>(v.size())), v);
-}
-
-std::string Extension(const std::string& path) {
-  const size_t dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-void WriteModelFile(const milp::LpData& lp, const std::string& path, bool obfuscate) {
-  const std::string ext = Extension(path);
-  if (ext == ".mps") {
-    milp::MpsOptions o;
-    o.obfuscate_names = obfuscate;
-    milp::WriteMpsFile(path, lp, o);
-  } else if (ext == ".lp") {
-    milp::LpFormatOptions o;
-    o.obfuscate_names = obfuscate;
-    milp::WriteLpFile(path, lp, o);
-  } else {
-    throw std::invalid_argument(path + ": the model file must end in .mps or .lp");
-  }
 }
 
 milp::LpData LpOf(const py::handle& h) {
@@ -358,7 +337,7 @@ void BindMilp(py::module_& m) {
         py::arg("callback") = py::none(),
         "Solves a Model or LpData with CBC (GIL released; Ctrl-C stops and keeps the best solution).");
   m.def("write", [](const py::handle& model, const std::string& path, bool obfuscate_names) {
-          WriteModelFile(LpOf(model), path, obfuscate_names);
+          app::WriteModelFile(path, LpOf(model), obfuscate_names);
         }, py::arg("model"), py::arg("path"), py::arg("obfuscate_names") = false,
         "Writes a Model or LpData as free MPS (.mps) or CPLEX LP (.lp).");
   m.def("to_mps_string", [](const py::handle& model) { return milp::ToMpsString(LpOf(model)); }, py::arg("model"));
@@ -465,7 +444,7 @@ void BindBuilt(py::module_& m) {
       .def("write", [](const BuiltSchedule& b, const std::string& path, bool obfuscate_names) {
              milp::LpData lp = b.milp->lp();
              if (b.ctx.scenario) lp.name = b.ctx.scenario->name;
-             WriteModelFile(lp, path, obfuscate_names);
+             app::WriteModelFile(path, lp, obfuscate_names);
            }, py::arg("path"), py::arg("obfuscate_names") = false, "Writes MPS (.mps) or LP (.lp).")
       .def("solve", [](const BuiltSchedule& b, std::optional<double> time_limit_s, std::optional<double> relative_gap,
                        std::optional<int> threads, std::optional<long long> max_nodes, std::optional<bool> search,
@@ -499,7 +478,7 @@ void BindBuilt(py::module_& m) {
         auto b = std::make_shared<BuiltSchedule>();
         b->ctx = ScenarioContext(sc);
         b->options.build = sc->build;
-        b->options.solve = sc->solve;
+        b->options.milp = sc->solve;
         b->options.search.enabled = sc->search;
         b->options.prefix_diagnosis_s = sc->diagnosis_time_limit_s;
         if (sc->problem.conjunction) b->conjunction = sc->conjunction_solve;

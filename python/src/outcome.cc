@@ -16,26 +16,19 @@
 
 #include "app/conjunction_report.h"
 #include "app/outputs.h"
+#include "common/format.h"
+#include "common/timing.h"
 #include "convert.h"
 #include "milp/cbc_solver.h"
 
 namespace thrustsched::python {
 
+using common::FormatG;
+using common::Since;
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-nlohmann::json Num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-std::string Fmt(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof(buf), "%.17g", v);
-  return buf;
-}
+using common::Clock;
 
 constexpr double kTerminalTolerance = 1e-6;  // the checker's (transcription/checker.cc)
 
@@ -57,7 +50,7 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
       p.rules, p.history, p.forced_off, m, p.grid.front(), p.grid.back(), burns);
   c.operational_ok = c.rule_violations.empty();
   for (const transcription::RuleViolation& v : c.rule_violations) {
-    c.findings.push_back("rule " + v.rule + " at t = " + Fmt(v.time_s) + " s: " + v.message);
+    c.findings.push_back("rule " + v.rule + " at t = " + FormatG(v.time_s, 17) + " s: " + v.message);
   }
   const Eigen::MatrixXi pattern = transcription::PatternFromBurns(burns, m, p.grid);
   Eigen::VectorXd x = p.initial_state;
@@ -82,9 +75,9 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
     x = dm.phi[j] * x + dm.gamma[j] * pattern.col(j).cast<double>() + dm.drift[j];
   }
   if (c.max_window_violation_at_nodes > 0.0) {
-    c.findings.push_back("window violated at grid nodes by " + Fmt(c.max_window_violation_at_nodes) +
+    c.findings.push_back("window violated at grid nodes by " + FormatG(c.max_window_violation_at_nodes, 17) +
                          " (output " + std::to_string(c.worst_output) + ", t = " +
-                         Fmt(c.worst_time_s) + " s)");
+                         FormatG(c.worst_time_s, 17) + " s)");
   }
   const transcription::TerminalSpec& term = p.terminal;
   if (term.kind == transcription::TerminalKind::kFixedState ||
@@ -102,7 +95,7 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
     c.terminal_error = worst;
     c.terminal_ok = worst <= kTerminalTolerance;
     if (!c.terminal_ok) {
-      c.findings.push_back("terminal constraint violated (scaled error " + Fmt(worst) + ")");
+      c.findings.push_back("terminal constraint violated (scaled error " + FormatG(worst, 17) + ")");
     }
   }
   return c;
@@ -155,7 +148,7 @@ std::string CheckedSchedule::CheckJson() const {
                          {"thruster", v.thruster >= 0 && v.thruster < static_cast<int>(names.size())
                                           ? nlohmann::json(names[v.thruster])
                                           : nlohmann::json(nullptr)},
-                         {"time_s", Num(v.time_s)},
+                         {"time_s", app::FiniteOrNull(v.time_s)},
                          {"message", v.message}});
     }
     j["rule_violations"] = msgs;
@@ -163,7 +156,7 @@ std::string CheckedSchedule::CheckJson() const {
     j["window_unit"] = nullptr;
     j["max_window_violation_nodes"] = d.max_window_violation_at_nodes;
     j["max_window_violation"] = d.max_window_violation_at_nodes;
-    j["worst_time_s"] = d.worst_output >= 0 ? Num(d.worst_time_s) : nullptr;
+    j["worst_time_s"] = d.worst_output >= 0 ? app::FiniteOrNull(d.worst_time_s) : nullptr;
     j["worst_output"] = d.worst_output >= 0 && d.worst_output < static_cast<int>(ctx.output_names.size())
                             ? nlohmann::json(ctx.output_names[d.worst_output])
                             : nlohmann::json(nullptr);
@@ -199,8 +192,8 @@ std::string CheckedSchedule::ScheduleCsv() const {
   std::ostringstream os;
   os << "thruster,start_s,end_s,duration_s\n";
   for (const transcription::Burn& b : burns) {
-    os << names.at(b.thruster) << "," << Fmt(b.start_s) << "," << Fmt(b.end_s) << ","
-       << Fmt(b.duration_s()) << "\n";
+    os << names.at(b.thruster) << "," << FormatG(b.start_s, 17) << "," << FormatG(b.end_s, 17) << ","
+       << FormatG(b.duration_s(), 17) << "\n";
   }
   return os.str();
 }
@@ -221,9 +214,9 @@ std::string CheckedSchedule::TrajectoryCsv() const {
   os << "\n";
   const Eigen::MatrixXi pattern = transcription::PatternFromBurns(burns, p.thrusters.size(), p.grid);
   for (int j = 0; j <= p.num_intervals(); ++j) {
-    os << Fmt(p.grid[j]);
-    for (int i = 0; i < discrete->states[j].size(); ++i) os << "," << Fmt(discrete->states[j][i]);
-    for (int i = 0; i < discrete->outputs[j].size(); ++i) os << "," << Fmt(discrete->outputs[j][i]);
+    os << FormatG(p.grid[j], 17);
+    for (int i = 0; i < discrete->states[j].size(); ++i) os << "," << FormatG(discrete->states[j][i], 17);
+    for (int i = 0; i < discrete->outputs[j].size(); ++i) os << "," << FormatG(discrete->outputs[j][i], 17);
     // As trajectory.csv: on_<thruster> = 1 while a burn covers t (the last node: none).
     for (int i = 0; i < p.thrusters.size(); ++i) {
       os << "," << (j < p.num_intervals() ? pattern(i, j) : 0);
@@ -249,14 +242,14 @@ nlohmann::json ArraySummaryJson(const ProblemContext& ctx, const transcription::
   j["solver_version"] = sr.solver_version;
   j["interrupted"] = interrupted;
   j["objective_kind"] = std::string(transcription::ToString(ctx.problem->objective.kind));
-  j["objective"] = sr.has_solution() ? Num(sr.objective) : nullptr;
-  j["best_bound"] = Num(sr.best_bound);
-  j["gap"] = Num(sr.gap);
+  j["objective"] = sr.has_solution() ? app::FiniteOrNull(sr.objective) : nullptr;
+  j["best_bound"] = app::FiniteOrNull(sr.best_bound);
+  j["gap"] = app::FiniteOrNull(sr.gap);
   j["nodes"] = sr.nodes;
   const bool has = r.has_schedule();
-  j["consumption_l1_m_s"] = has ? Num(sch.consumption_l1_m_s) : nullptr;
-  j["delta_v_m_s"] = has ? Num(sch.delta_v_m_s) : nullptr;
-  j["propellant_kg"] = has ? Num(sch.propellant_kg) : nullptr;
+  j["consumption_l1_m_s"] = has ? app::FiniteOrNull(sch.consumption_l1_m_s) : nullptr;
+  j["delta_v_m_s"] = has ? app::FiniteOrNull(sch.delta_v_m_s) : nullptr;
+  j["propellant_kg"] = has ? app::FiniteOrNull(sch.propellant_kg) : nullptr;
   nlohmann::json burns = nlohmann::json::array();
   for (const transcription::Burn& b : sch.burns) {
     burns.push_back({{"thruster", names[b.thruster]},
@@ -278,8 +271,8 @@ nlohmann::json ArraySummaryJson(const ProblemContext& ctx, const transcription::
   nlohmann::json inc = nlohmann::json::array();
   for (const milp::Incumbent& c : sr.incumbents) {
     inc.push_back({{"wall_seconds", c.wall_seconds},
-                   {"objective", Num(c.objective)},
-                   {"best_bound", Num(c.best_bound)}});
+                   {"objective", app::FiniteOrNull(c.objective)},
+                   {"best_bound", app::FiniteOrNull(c.best_bound)}});
   }
   j["incumbents"] = inc;
   j["infeasibility_reasons"] = r.infeasibility_reasons;
@@ -302,8 +295,8 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
     const std::shared_ptr<const transcription::ScheduleMilp> milp = build();
     transcription::SolveScheduleOptions opt = request.options;
     opt.check_schedule = false;  // checked below, as the CLI does
-    opt.solve.interrupt = &j->stop;
-    opt.solve.progress = [j](const milp::SolveProgress& p) {
+    opt.milp.interrupt = &j->stop;
+    opt.milp.progress = [j](const milp::SolveProgress& p) {
       j->Post([p](const py::handle& cb) { cb(ProgressDict(p)); });
     };
     opt.announce = [j](const std::string& what) {

@@ -44,11 +44,11 @@ std::shared_ptr<SolveOutcome> SolveScenario(const ScenarioPtr& parsed,
   ApplyBuildSettings(scheme, formulation, encoding, &s->build);
   transcription::SolveScheduleOptions opt;
   opt.build = s->build;
-  opt.solve = s->solve;
+  opt.milp = s->solve;
   opt.search.enabled = s->search;
   opt.prefix_diagnosis_s = s->diagnosis_time_limit_s;
   ApplySettings(settings, &opt);
-  s->solve = opt.solve;  // summary.json reports the settings used
+  s->solve = opt.milp;  // summary.json reports the settings used
   SolveRequest request;
   request.options = opt;
   request.check = settings.check;
@@ -176,28 +176,28 @@ void ApplySettings(const SolveSettings& st, transcription::SolveScheduleOptions*
     if (!(*st.time_limit_s > 0.0)) {
       throw std::invalid_argument("time_limit_s: must be > 0, got " + F(*st.time_limit_s));
     }
-    o->solve.time_limit_s = *st.time_limit_s;
+    o->milp.time_limit_s = *st.time_limit_s;
   }
   if (st.relative_gap) {
     if (!(*st.relative_gap >= 0.0) || !std::isfinite(*st.relative_gap)) {
       throw std::invalid_argument("relative_gap: must be finite and >= 0, got " + F(*st.relative_gap));
     }
-    o->solve.relative_gap = *st.relative_gap;
+    o->milp.relative_gap = *st.relative_gap;
   }
   if (st.threads) {
     if (*st.threads < 1 || *st.threads > 64) {
       throw std::invalid_argument("threads: must be in [1, 64], got " + std::to_string(*st.threads));
     }
-    o->solve.threads = *st.threads;
+    o->milp.threads = *st.threads;
   }
-  if (st.max_nodes) o->solve.max_nodes = *st.max_nodes;
+  if (st.max_nodes) o->milp.max_nodes = *st.max_nodes;
   if (st.log_level) {
     if (*st.log_level < 0) throw std::invalid_argument("log_level: must be >= 0");
-    o->solve.log_level = *st.log_level;
+    o->milp.log_level = *st.log_level;
   }
   if (st.random_seed) {
     if (*st.random_seed < 0) throw std::invalid_argument("random_seed: must be >= 0");
-    o->solve.random_seed = *st.random_seed;
+    o->milp.random_seed = *st.random_seed;
   }
   if (st.search) o->search.enabled = *st.search;
   if (st.diagnosis_time_limit_s) {
@@ -211,9 +211,9 @@ void ApplySettings(const SolveSettings& st, transcription::SolveScheduleOptions*
     throw std::invalid_argument("progress_interval_s: must be finite and > 0, got " +
                                 F(st.progress_interval_s));
   }
-  o->solve.progress_interval_s = st.progress_interval_s;
+  o->milp.progress_interval_s = st.progress_interval_s;
   std::string err;
-  if (!o->solve.IsValid(&err)) throw std::invalid_argument(err);
+  if (!o->milp.IsValid(&err)) throw std::invalid_argument(err);
 }
 
 void ApplyBuildSettings(const std::optional<std::string>& scheme,

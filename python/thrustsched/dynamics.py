@@ -11,7 +11,8 @@ Models: Hcw, DoubleIntegrator1d, DoubleIntegrator3d, YamanakaAnkersen, Geo
 output_matrix(t_s), state_names, output_names, state_scale and
 discretise(grid_s, inputs=None, scheme="exact_zoh", rk4_substeps=1,
 reference_tolerance=1e-12) -> dict of numpy arrays (phi [N, n, n],
-gamma [N, n, k], drift [N, n], grid_s [N + 1]); schemes() lists the schemes.
+gamma [N, n, k], drift [N, n], grid_s [N + 1]), also spelt discretize;
+schemes() lists the schemes.
 """
 from ._core.dynamics import (  # noqa: F401
     DoubleIntegrator1d,

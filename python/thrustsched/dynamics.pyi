@@ -46,6 +46,9 @@ class LinearModel:
     def discretise(self, grid_s: Sequence[float], inputs: Union[None, ThrusterSet, ArrayLike] = None,
                    scheme: str = "exact_zoh", rk4_substeps: int = 1,
                    reference_tolerance: float = 1e-12) -> Dict[str, np.ndarray]: ...
+    def discretize(self, grid_s: Sequence[float], inputs: Union[None, ThrusterSet, ArrayLike] = None,
+                   scheme: str = "exact_zoh", rk4_substeps: int = 1,
+                   reference_tolerance: float = 1e-12) -> Dict[str, np.ndarray]: ...
 
 class DoubleIntegrator1d(LinearModel):
     def __init__(self, time_scale_s: float = 1.0, length_scale_m: float = 1.0) -> None: ...

@@ -120,10 +120,10 @@ Plan SolveExample(const std::string& example) {
   const auto solver = milp::MakeCbcSolver();
   transcription::SolveScheduleOptions o{};
   o.build = s.build;
-  o.solve = s.solve;
-  o.solve.time_limit_s = std::numeric_limits<double>::infinity();
-  o.solve.max_nodes = 50;  // deterministic: the start, then a short search
-  o.solve.threads = 1;
+  o.milp = s.solve;
+  o.milp.time_limit_s = std::numeric_limits<double>::infinity();
+  o.milp.max_nodes = 50;  // deterministic: the start, then a short search
+  o.milp.threads = 1;
   transcription::ConjunctionSolveOptions co = s.conjunction_solve;
   co.max_rounds = 1;
   Plan p;

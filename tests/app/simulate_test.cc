@@ -99,9 +99,9 @@ TEST(SimulateSection, DefaultsAndFields) {
   EXPECT_EQ(o.mode, transcription::HorizonMode::kFixed);
   EXPECT_EQ(o.terminal.kind, transcription::TerminalKind::kStationKeepingSets);
   EXPECT_EQ(o.terminal.facets_cone_minus, 16);
-  EXPECT_DOUBLE_EQ(o.solve.solve.time_limit_s, 30.0);
-  EXPECT_DOUBLE_EQ(o.solve.solve.relative_gap, 0.02);
-  EXPECT_EQ(o.solve.solve.lp_algorithm, milp::LpAlgorithm::kBarrier);
+  EXPECT_DOUBLE_EQ(o.solve.milp.time_limit_s, 30.0);
+  EXPECT_DOUBLE_EQ(o.solve.milp.relative_gap, 0.02);
+  EXPECT_EQ(o.solve.milp.lp_algorithm, milp::LpAlgorithm::kBarrier);
   EXPECT_FALSE(o.solve.check.nonlinear);
   EXPECT_EQ(o.num_cycles(), 3);
   // NE failed from 1 h, and its opposite SW with it.
@@ -121,8 +121,8 @@ TEST(SimulateSection, DefaultsAndFields) {
   EXPECT_EQ(r.options.mode, transcription::HorizonMode::kReceding);
   EXPECT_EQ(r.options.terminal.kind, transcription::TerminalKind::kFree);  // thesis 5.4
   EXPECT_EQ(r.options.num_cycles(), 6);
-  EXPECT_DOUBLE_EQ(r.options.solve.solve.time_limit_s, 5);
-  EXPECT_EQ(r.options.solve.solve.lp_algorithm, milp::LpAlgorithm::kPrimal);
+  EXPECT_DOUBLE_EQ(r.options.solve.milp.time_limit_s, 5);
+  EXPECT_EQ(r.options.solve.milp.lp_algorithm, milp::LpAlgorithm::kPrimal);
   EXPECT_EQ(r.timeline_cycle, 1);
   EXPECT_FALSE(s.options.retry_without_preprocessing);  // default: off
   const SimulationSetup retry = ParseSimulationText(

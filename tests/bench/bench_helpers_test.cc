@@ -43,9 +43,9 @@ TEST(FitLogLogSlope, IgnoresPointsAtTheFloorAndNeedsTwoPoints) {
 
 dynamics::DiscreteModel HcwDiscrete(dynamics::Scheme scheme, double step, int n) {
   const dynamics::HcwModel hcw(kN);
-  dynamics::DiscretisationOptions o;
+  dynamics::DiscretizationOptions o;
   o.scheme = scheme;
-  return dynamics::Discretise(hcw, dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005)
+  return dynamics::Discretize(hcw, dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005)
                                        .AccelerationMatrix(),
                               dynamics::UniformGrid(0, step * n, n), o);
 }
@@ -59,7 +59,7 @@ TEST(CompareDiscretisations, EulerErrorMatchesItsClosedForm) {
   const dynamics::DiscreteModel euler = HcwDiscrete(dynamics::Scheme::kEuler, h, 3);
   const dynamics::DiscreteModel exact = HcwDiscrete(dynamics::Scheme::kExactZoh, h, 3);
   const Eigen::VectorXd s = hcw.state_scale();
-  const DiscretisationError e = CompareDiscretisations(euler, exact, s);
+  const DiscretizationError e = CompareDiscretizations(euler, exact, s);
   const Eigen::MatrixXd a = hcw.Evaluate(0).a;
   const Eigen::MatrixXd phi = hcw.TransitionMatrix(h);
   const Eigen::MatrixXd si = s.cwiseInverse().asDiagonal();
@@ -75,7 +75,7 @@ TEST(CompareDiscretisations, EulerErrorMatchesItsClosedForm) {
   const double expected_g = (si * (g_euler - g_exact)).norm() / (si * g_exact).norm();
   EXPECT_NEAR(e.max_rel_err_gamma, expected_g, 1e-9 * expected_g);
   // Same model: zero error.
-  const DiscretisationError z = CompareDiscretisations(exact, exact, s);
+  const DiscretizationError z = CompareDiscretizations(exact, exact, s);
   EXPECT_EQ(z.max_rel_err_phi, 0.0);
   EXPECT_EQ(z.max_rel_err_gamma, 0.0);
 }
@@ -83,8 +83,8 @@ TEST(CompareDiscretisations, EulerErrorMatchesItsClosedForm) {
 TEST(CompareDiscretisations, Rk4OneStepOrderIsFiveForPhiAndFourForGamma) {
   std::vector<double> steps = {300, 600, 1200}, ep, eg;
   for (double h : steps) {
-    const DiscretisationError e =
-        CompareDiscretisations(HcwDiscrete(dynamics::Scheme::kRk4, h, 2),
+    const DiscretizationError e =
+        CompareDiscretizations(HcwDiscrete(dynamics::Scheme::kRk4, h, 2),
                                HcwDiscrete(dynamics::Scheme::kExactZoh, h, 2),
                                dynamics::HcwModel(kN).state_scale());
     ep.push_back(e.max_rel_err_phi);
@@ -98,11 +98,11 @@ TEST(CompareDiscretisations, RejectsMismatchedShapesAndScales) {
   const auto a = HcwDiscrete(dynamics::Scheme::kEuler, 300, 2);
   const auto b = HcwDiscrete(dynamics::Scheme::kEuler, 300, 3);
   const Eigen::VectorXd s = Eigen::VectorXd::Ones(6);
-  EXPECT_THROW(CompareDiscretisations(a, b, s), std::invalid_argument);
-  EXPECT_THROW(CompareDiscretisations(a, a, Eigen::VectorXd::Ones(5)), std::invalid_argument);
+  EXPECT_THROW(CompareDiscretizations(a, b, s), std::invalid_argument);
+  EXPECT_THROW(CompareDiscretizations(a, a, Eigen::VectorXd::Ones(5)), std::invalid_argument);
   Eigen::VectorXd bad = s;
   bad[2] = -1;
-  EXPECT_THROW(CompareDiscretisations(a, a, bad), std::invalid_argument);
+  EXPECT_THROW(CompareDiscretizations(a, a, bad), std::invalid_argument);
   EXPECT_THROW(GlobalPropagationError(a, a, Eigen::VectorXd::Zero(6), Eigen::MatrixXi::Zero(6, 3), s),
                std::invalid_argument);
 }

@@ -29,8 +29,8 @@ using testing_util::ColumnRelError;
 using testing_util::kGeoMeanMotion;
 using testing_util::PhiRelError;
 
-DiscretisationOptions Options(Scheme scheme, int substeps = 1, double tol = 1e-12) {
-  DiscretisationOptions o;
+DiscretizationOptions Options(Scheme scheme, int substeps = 1, double tol = 1e-12) {
+  DiscretizationOptions o;
   o.scheme = scheme;
   o.rk4_substeps = substeps;
   o.reference_tolerance = tol;
@@ -165,8 +165,8 @@ struct StepError {
   double abs_phi, abs_gamma;  // max absolute entry error, nondimensional
 };
 StepError HcwStepError(const HcwModel& hcw, const Eigen::MatrixXd& u, double dt,
-                       const DiscretisationOptions& opt) {
-  const DiscreteModel dm = Discretise(hcw, u, {1000.0, 1000.0 + dt}, opt);
+                       const DiscretizationOptions& opt) {
+  const DiscreteModel dm = Discretize(hcw, u, {1000.0, 1000.0 + dt}, opt);
   const Eigen::VectorXd inv = hcw.state_scale().cwiseInverse();
   const Eigen::MatrixXd phi_ref = hcw.TransitionMatrix(dt);
   const Eigen::MatrixXd gamma_ref = hcw.ZohInputMatrix(dt) * u;
@@ -232,8 +232,8 @@ TEST(DiscretiseHcwTest, Rk4SubstepsComposeSingleSteps) {
   const HcwModel hcw(kGeoMeanMotion);
   const Eigen::MatrixXd u = Eigen::MatrixXd::Identity(3, 3);
   const double dt = 3600.0;
-  const DiscreteModel four = Discretise(hcw, u, {0.0, dt}, Options(Scheme::kRk4, 4));
-  const DiscreteModel single = Discretise(hcw, u, UniformGrid(0.0, dt, 4), Options(Scheme::kRk4));
+  const DiscreteModel four = Discretize(hcw, u, {0.0, dt}, Options(Scheme::kRk4, 4));
+  const DiscreteModel single = Discretize(hcw, u, UniformGrid(0.0, dt, 4), Options(Scheme::kRk4));
   Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(6, 6), gamma = Eigen::MatrixXd::Zero(6, 3);
   for (int j = 0; j < 4; ++j) {
     phi = single.phi[j] * phi;
@@ -255,7 +255,7 @@ TEST(DiscretiseHcwTest, DriftTermUsesTheSameIntegralAsInputs) {
   const Eigen::MatrixXd u = Eigen::MatrixXd::Identity(3, 3);
   const double dt = 1800.0;
   for (Scheme s : AllSchemes()) {
-    const DiscreteModel dm = Discretise(model, u, {0.0, dt}, Options(s));
+    const DiscreteModel dm = Discretize(model, u, {0.0, dt}, Options(s));
     EXPECT_LT(ColumnRelError(dm.gamma[0] * a0, dm.drift[0], model.state_scale()), 1e-14)
         << ToString(s);
     const double err =
@@ -274,7 +274,7 @@ TEST(DiscretiseHcwTest, UniformWeekMatchesClosedFormEverywhere) {
   const HcwModel hcw(kGeoMeanMotion);
   const Eigen::MatrixXd u = ThrusterSet::Ideal6(0.265, 4850.0, 2005.0).AccelerationMatrix();
   const std::vector<double> grid = UniformGrid(0.0, 604800.0, 2016);
-  const DiscreteModel dm = Discretise(hcw, u, grid, Options(Scheme::kExactZoh));
+  const DiscreteModel dm = Discretize(hcw, u, grid, Options(Scheme::kExactZoh));
   ASSERT_EQ(dm.num_intervals(), 2016);
   EXPECT_EQ(dm.num_states(), 6);
   EXPECT_EQ(dm.num_inputs(), 6);
@@ -287,7 +287,7 @@ TEST(DiscretiseHcwTest, UniformWeekMatchesClosedFormEverywhere) {
   }
   // A non-uniform grid: each interval gets its own map.
   const std::vector<double> irregular = {0.0, 60.0, 61.5, 3661.5, 90061.5};
-  const DiscreteModel di = Discretise(hcw, u, irregular, Options(Scheme::kExactZoh));
+  const DiscreteModel di = Discretize(hcw, u, irregular, Options(Scheme::kExactZoh));
   for (int j = 0; j < 4; ++j) {
     const double dt = irregular[j + 1] - irregular[j];
     EXPECT_LT(PhiRelError(hcw.TransitionMatrix(dt), di.phi[j], hcw.state_scale()), 1e-12) << j;
@@ -328,7 +328,7 @@ TEST(DiscretiseDoubleIntegratorTest, Rk4HermiteSimpsonTrapezoidAreExact) {
   const std::vector<double> grid = {0.0, 7.0, 100.0, 1000.0, 1000.5, 1060.5, 4660.5, 90460.5};
   for (Scheme s : {Scheme::kExactZoh, Scheme::kFrozenStart, Scheme::kFrozenMid, Scheme::kRk4,
                    Scheme::kHermiteSimpson, Scheme::kTrapezoid, Scheme::kReference}) {
-    const DiscreteModel dm = Discretise(di, u, grid, Options(s));
+    const DiscreteModel dm = Discretize(di, u, grid, Options(s));
     for (int j = 0; j + 1 < static_cast<int>(grid.size()); ++j) {
       const double h = grid[j + 1] - grid[j];
       const Eigen::Matrix2d phi = (Eigen::Matrix2d() << 1, h, 0, 1).finished();
@@ -338,7 +338,7 @@ TEST(DiscretiseDoubleIntegratorTest, Rk4HermiteSimpsonTrapezoidAreExact) {
     }
   }
   // Euler gets Phi right but misses the h^2/2 position term.
-  const DiscreteModel eu = Discretise(di, u, {0.0, 2.0}, Options(Scheme::kEuler));
+  const DiscreteModel eu = Discretize(di, u, {0.0, 2.0}, Options(Scheme::kEuler));
   EXPECT_NEAR(eu.phi[0](0, 1), 2.0, 1e-15);
   EXPECT_NEAR(eu.gamma[0](0, 0), 0.0, 1e-18);
   EXPECT_NEAR(eu.gamma[0](1, 0), 0.02, 1e-17);
@@ -349,7 +349,7 @@ TEST(DiscretiseDoubleIntegratorTest, ThreeDimensionalWithThrusters) {
   const Eigen::MatrixXd u = ThrusterSet::Anzel4(0.265, 4850.0, 2005.0).AccelerationMatrix();
   const double h = 300.0;
   for (Scheme s : {Scheme::kRk4, Scheme::kHermiteSimpson}) {
-    const DiscreteModel dm = Discretise(di, u, {0.0, h}, Options(s));
+    const DiscreteModel dm = Discretize(di, u, {0.0, h}, Options(s));
     Eigen::MatrixXd gamma(6, 4);
     gamma << 0.5 * h * h * u, h * u;
     EXPECT_LT(ColumnRelError(gamma, dm.gamma[0], di.state_scale()), 1e-12) << ToString(s);
@@ -409,8 +409,8 @@ TEST(DiscretiseTimeVaryingTest, ObservedConvergenceOrders) {
     for (int count : counts) {
       const std::vector<double> grid = UniformGrid(t0, t_end, count);
       const Composite truth =
-          Compose(Discretise(model, u, grid, Options(Scheme::kReference, 1, 1e-13)));
-      const Composite got = Compose(Discretise(model, u, grid, Options(c.scheme)));
+          Compose(Discretize(model, u, grid, Options(Scheme::kReference, 1, 1e-13)));
+      const Composite got = Compose(Discretize(model, u, grid, Options(c.scheme)));
       hs.push_back((t_end - t0) / count);
       e_phi.push_back(MaxAbsDiff(truth.phi, got.phi));
       e_gamma.push_back(MaxAbsDiff(truth.gamma, got.gamma));
@@ -433,8 +433,8 @@ TEST(DiscretiseTimeVaryingTest, ReferenceIsIndependentOfTheGrid) {
   // Composite over one interval vs over 7 uneven ones: both exact.
   const LtvOscillator model;
   const Eigen::MatrixXd u = Eigen::MatrixXd::Constant(1, 1, 1.0);
-  const Composite one = Compose(Discretise(model, u, {0.0, 3.0}, Options(Scheme::kReference)));
-  const Composite many = Compose(Discretise(model, u, {0.0, 0.1, 0.35, 1.0, 1.01, 2.0, 2.9, 3.0},
+  const Composite one = Compose(Discretize(model, u, {0.0, 3.0}, Options(Scheme::kReference)));
+  const Composite many = Compose(Discretize(model, u, {0.0, 0.1, 0.35, 1.0, 1.01, 2.0, 2.9, 3.0},
                                             Options(Scheme::kReference)));
   EXPECT_LT(MaxAbsDiff(one.phi, many.phi), 1e-11);
   EXPECT_LT(MaxAbsDiff(one.gamma, many.gamma), 1e-11);
@@ -445,8 +445,8 @@ TEST(DiscretiseTimeVaryingTest, ExactZohFallsBackToReference) {
   const LtvOscillator model;
   const Eigen::MatrixXd u = Eigen::MatrixXd::Constant(1, 1, 1.0);
   const std::vector<double> grid = UniformGrid(0.0, 2.0, 5);
-  const DiscreteModel a = Discretise(model, u, grid, Options(Scheme::kExactZoh));
-  const DiscreteModel b = Discretise(model, u, grid, Options(Scheme::kReference));
+  const DiscreteModel a = Discretize(model, u, grid, Options(Scheme::kExactZoh));
+  const DiscreteModel b = Discretize(model, u, grid, Options(Scheme::kReference));
   for (int j = 0; j < 5; ++j) {
     EXPECT_EQ(a.phi[j], b.phi[j]);
     EXPECT_EQ(a.gamma[j], b.gamma[j]);
@@ -459,7 +459,7 @@ TEST(DiscretiseTimeVaryingTest, EvaluatesTheModelOnlyAsOftenAsNeeded) {
   const int n = 50;
   const std::vector<double> grid = UniformGrid(0.0, 5.0, n);
   struct Case {
-    DiscretisationOptions opt;
+    DiscretizationOptions opt;
     long expected;
   };
   for (const Case& c :
@@ -468,7 +468,7 @@ TEST(DiscretiseTimeVaryingTest, EvaluatesTheModelOnlyAsOftenAsNeeded) {
         Case{Options(Scheme::kHermiteSimpson), 2 * n + 1},
         Case{Options(Scheme::kRk4, 1), 2 * n + 1}, Case{Options(Scheme::kRk4, 3), 6 * n + 1}}) {
     const LtvOscillator model;
-    Discretise(model, u, grid, c.opt);
+    Discretize(model, u, grid, c.opt);
     EXPECT_EQ(model.evaluations, c.expected) << ToString(c.opt.scheme);
   }
   // Time-invariant models are evaluated once, whatever the scheme.
@@ -493,7 +493,7 @@ TEST(DiscretiseTimeVaryingTest, EvaluatesTheModelOnlyAsOftenAsNeeded) {
   };
   for (Scheme s : AllSchemes()) {
     const CountingHcw model;
-    Discretise(model, Eigen::MatrixXd::Identity(3, 3), {0.0, 10.0, 30.0, 1000.0}, Options(s));
+    Discretize(model, Eigen::MatrixXd::Identity(3, 3), {0.0, 10.0, 30.0, 1000.0}, Options(s));
     EXPECT_EQ(model.evaluations, 1) << ToString(s);
   }
 }
@@ -514,7 +514,7 @@ TEST(DiscretiseTimeVaryingTest, YamanakaAnkersenSchemesAgainstClosedForm) {
                         Case{Scheme::kRk4, 3e-7}, Case{Scheme::kHermiteSimpson, 1e-7},
                         Case{Scheme::kFrozenMid, 1e-4}, Case{Scheme::kTrapezoid, 5e-4},
                         Case{Scheme::kFrozenStart, 5e-2}, Case{Scheme::kEuler, 5e-2}}) {
-    const DiscreteModel dm = Discretise(ya, u, grid, Options(c.scheme));
+    const DiscreteModel dm = Discretize(ya, u, grid, Options(c.scheme));
     double worst = 0.0;
     for (int j = 0; j < dm.num_intervals(); ++j) {
       worst = std::max(worst, PhiRelError(ya.TransitionMatrix(grid[j + 1], grid[j]), dm.phi[j],
@@ -535,8 +535,8 @@ TEST(DiscretiseGeoTest, SchemesAgainstReferenceWithTheirOrders) {
   const Eigen::VectorXd s = geo.state_scale();
   auto errors = [&](Scheme scheme, double step) {
     const std::vector<double> grid = UniformGrid(0.0, 86400.0, static_cast<int>(86400 / step));
-    const DiscreteModel ref = Discretise(geo, u, grid, Options(Scheme::kReference));
-    const DiscreteModel dm = Discretise(geo, u, grid, Options(scheme));
+    const DiscreteModel ref = Discretize(geo, u, grid, Options(Scheme::kReference));
+    const DiscreteModel dm = Discretize(geo, u, grid, Options(scheme));
     double phi = 0.0, gamma = 0.0, drift = 0.0;
     for (int j = 0; j < dm.num_intervals(); ++j) {
       phi = std::max(phi, PhiRelError(ref.phi[j], dm.phi[j], s));
@@ -576,33 +576,33 @@ TEST(DiscretiseGeoTest, SchemesAgainstReferenceWithTheirOrders) {
 TEST(DiscretiseTest, RejectsBadInput) {
   const HcwModel hcw(kGeoMeanMotion);
   const Eigen::MatrixXd u = Eigen::MatrixXd::Identity(3, 3);
-  const DiscretisationOptions opt;
-  EXPECT_THAT([&] { Discretise(hcw, u, {0.0}, opt); },
+  const DiscretizationOptions opt;
+  EXPECT_THAT([&] { Discretize(hcw, u, {0.0}, opt); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("at least 2 points, got 1")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, 10.0, 10.0}, opt);
+        Discretize(hcw, u, {0.0, 10.0, 10.0}, opt);
       },
       ThrowsMessage<std::invalid_argument>(
           HasSubstr("strictly increasing, but grid[2] = 10 <= grid[1] = 10")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, 10.0, 5.0}, opt);
+        Discretize(hcw, u, {0.0, 10.0, 5.0}, opt);
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("grid[2] = 5")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, NAN}, opt);
+        Discretize(hcw, u, {0.0, NAN}, opt);
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("grid[1] is not finite")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {-INFINITY, 0.0}, opt);
+        Discretize(hcw, u, {-INFINITY, 0.0}, opt);
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("grid[0] is not finite")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, Eigen::MatrixXd::Identity(4, 4), {0.0, 1.0}, opt);
+        Discretize(hcw, Eigen::MatrixXd::Identity(4, 4), {0.0, 1.0}, opt);
       },
       ThrowsMessage<std::invalid_argument>(
           HasSubstr("input_columns has 4 rows, model 'hcw' takes 3 inputs")));
@@ -610,28 +610,28 @@ TEST(DiscretiseTest, RejectsBadInput) {
   bad_u(1, 2) = NAN;
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, bad_u, {0.0, 1.0}, opt);
+        Discretize(hcw, bad_u, {0.0, 1.0}, opt);
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("input_columns holds non-finite")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, 1.0}, Options(Scheme::kRk4, 0));
+        Discretize(hcw, u, {0.0, 1.0}, Options(Scheme::kRk4, 0));
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("rk4_substeps must be >= 1, got 0")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, 1.0}, Options(Scheme::kReference, 1, 0.0));
+        Discretize(hcw, u, {0.0, 1.0}, Options(Scheme::kReference, 1, 0.0));
       },
       ThrowsMessage<std::invalid_argument>(
           HasSubstr("reference_tolerance must be in (0, 1e-3], got 0")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, 1.0}, Options(Scheme::kReference, 1, 1e-2));
+        Discretize(hcw, u, {0.0, 1.0}, Options(Scheme::kReference, 1, 1e-2));
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("reference_tolerance")));
   EXPECT_THAT(
       [&] {
-        Discretise(hcw, u, {0.0, 1.0}, Options(Scheme::kEuler, 1, NAN));
+        Discretize(hcw, u, {0.0, 1.0}, Options(Scheme::kEuler, 1, NAN));
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("reference_tolerance")));
 }
@@ -642,13 +642,13 @@ TEST(DiscretiseTest, UnreachableToleranceThrowsRuntimeError) {
   for (Scheme s : {Scheme::kReference, Scheme::kExactZoh}) {
     EXPECT_THAT(
         [&] {
-          Discretise(ya, Eigen::MatrixXd::Identity(3, 3), {0.0, 600.0}, Options(s, 1, 1e-300));
+          Discretize(ya, Eigen::MatrixXd::Identity(3, 3), {0.0, 600.0}, Options(s, 1, 1e-300));
         },
         ThrowsMessage<std::runtime_error>(
             HasSubstr("Discretise: adaptive integration step size underflow")));
   }
   // 1e-18 still works (the error estimate vanishes for small steps).
-  const DiscreteModel dm = Discretise(ya, Eigen::MatrixXd::Identity(3, 3), {0.0, 600.0},
+  const DiscreteModel dm = Discretize(ya, Eigen::MatrixXd::Identity(3, 3), {0.0, 600.0},
                                       Options(Scheme::kReference, 1, 1e-18));
   EXPECT_LT(PhiRelError(ya.TransitionMatrix(600.0, 0.0), dm.phi[0], ya.state_scale()), 1e-13);
 }
@@ -658,25 +658,25 @@ TEST(DiscretiseTest, RejectsBrokenModels) {
   const std::vector<double> grid = {0.0, 2.0, 4.0, 6.0};
   const BrokenModel nan_model(BrokenModel::Defect::kNanLate);
   for (Scheme s : AllSchemes()) {
-    EXPECT_THAT([&] { Discretise(nan_model, u, grid, Options(s)); },
+    EXPECT_THAT([&] { Discretize(nan_model, u, grid, Options(s)); },
                 ThrowsMessage<std::invalid_argument>(
                     HasSubstr("model 'broken' returned non-finite A, B or d at t = ")))
         << ToString(s);
   }
   EXPECT_THAT(
       [&] {
-        Discretise(BrokenModel(BrokenModel::Defect::kWrongSize), u, grid, Options(Scheme::kEuler));
+        Discretize(BrokenModel(BrokenModel::Defect::kWrongSize), u, grid, Options(Scheme::kEuler));
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("returned A 2x2, B 3x1")));
   EXPECT_THAT(
       [&] {
-        Discretise(BrokenModel(BrokenModel::Defect::kBadScale), u, grid, Options(Scheme::kEuler));
+        Discretize(BrokenModel(BrokenModel::Defect::kBadScale), u, grid, Options(Scheme::kEuler));
       },
       ThrowsMessage<std::invalid_argument>(
           HasSubstr("state_scale[1] must be finite and > 0, got -2")));
   EXPECT_THAT(
       [&] {
-        Discretise(BrokenModel(BrokenModel::Defect::kBadTimeScale), u, grid,
+        Discretize(BrokenModel(BrokenModel::Defect::kBadTimeScale), u, grid,
                    Options(Scheme::kEuler));
       },
       ThrowsMessage<std::invalid_argument>(HasSubstr("time_scale must be finite and > 0, got 0")));

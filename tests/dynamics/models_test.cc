@@ -305,7 +305,7 @@ TEST(YamanakaAnkersenTest, CircularCaseIsHcw) {
 // equations (A(t) of the model), over more than one orbit.
 TEST(YamanakaAnkersenTest, MatchesNumericalIntegration) {
   const double a = 12.0e6;
-  DiscretisationOptions opt;
+  DiscretizationOptions opt;
   opt.scheme = Scheme::kReference;
   opt.reference_tolerance = 1e-13;
   const Eigen::MatrixXd u = Eigen::MatrixXd::Identity(3, 3);
@@ -317,7 +317,7 @@ TEST(YamanakaAnkersenTest, MatchesNumericalIntegration) {
       double worst = 0.0;
       for (double f : {0.25, 0.5, 0.8, 1.0, 1.3}) {
         const double t1 = t0 + f * p;
-        const DiscreteModel dm = Discretise(ya, u, {t0, t1}, opt);
+        const DiscreteModel dm = Discretize(ya, u, {t0, t1}, opt);
         const double err = PhiRelError(dm.phi[0], ya.TransitionMatrix(t1, t0), ya.state_scale());
         worst = std::max(worst, err);
         EXPECT_LT(err, 1e-9) << "e=" << e << " nu0=" << nu0 << " t-t0=" << f << " periods";

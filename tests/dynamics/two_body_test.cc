@@ -48,7 +48,7 @@ TEST(TwoBodyTest, RelativeRoundTrip) {
   EXPECT_NEAR(c.col(2).z(), 1.0, 1e-15);
 }
 
-double LinearisationError(const YamanakaAnkersenModel& ya, double scale, double t) {
+double LinearizationError(const YamanakaAnkersenModel& ya, double scale, double t) {
   Eigen::VectorXd x0(6);
   x0 << 0.3, -1.0, 0.4, 2e-5, -1e-5, 3e-5;
   x0 *= scale;
@@ -61,8 +61,8 @@ double LinearisationError(const YamanakaAnkersenModel& ya, double scale, double 
 TEST(TwoBodyTest, YamanakaAnkersenIsTheFirstOrder) {
   const YamanakaAnkersenModel ya = SerraGeo();
   const double t = 0.6 * ya.period();
-  const double e1 = LinearisationError(ya, 2000.0, t);  // ~2 km offsets
-  const double e2 = LinearisationError(ya, 1000.0, t);
+  const double e1 = LinearizationError(ya, 2000.0, t);  // ~2 km offsets
+  const double e2 = LinearizationError(ya, 1000.0, t);
   EXPECT_LT(e1, 5.0);  // m, against km of relative motion
   EXPECT_NEAR(e1 / e2, 4.0, 0.2);
 }

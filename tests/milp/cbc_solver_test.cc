@@ -117,7 +117,7 @@ TEST_P(CatalogTest, OptionsChangeThePathNotTheOptimum) {
   o.lp_algorithm = LpAlgorithm::kBarrier;
   variants.emplace_back("barrier", o);
   o = {};
-  o.disable_knapsack_cuts = true;
+  o.cbc.disable_knapsack_cuts = true;
   variants.emplace_back("no knapsack cuts", o);
   for (const auto& [name, options] : variants) {
     SCOPED_TRACE(name);

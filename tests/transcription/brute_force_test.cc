@@ -64,6 +64,9 @@ struct Case {
   }
 };
 
+// gtest prints a failing case's parameter: its name, not raw bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 // Thrust ~0.4-0.6 N on 100 kg, Isp 300 s. Directions (RTN = x, y, z of
 // the double integrator): B pushes -x (L1 factor a), C pushes -x-y at 45 deg
 // (L1 factor sqrt(2) a): the L1 and Euclidean objectives weigh them differently.
@@ -222,9 +225,9 @@ TEST_P(BruteForceTest, MilpOptimumEqualsExhaustiveMinimum) {
   SolveScheduleOptions o;
   o.build.formulation = c.formulation;
   o.build.encoding = c.encoding;
-  o.solve.relative_gap = 0.0;
-  o.solve.absolute_gap = 0.0;
-  o.solve.time_limit_s = 120;
+  o.milp.relative_gap = 0.0;
+  o.milp.absolute_gap = 0.0;
+  o.milp.time_limit_s = 120;
   const auto solver = milp::MakeCbcSolver();
   const ScheduleResult r = SolveSchedule(p, *solver, o);
   if (!ref.feasible) {

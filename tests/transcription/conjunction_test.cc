@@ -104,7 +104,7 @@ TEST(ConjunctionTest, GeometryMatchesClosedFormPropagation) {
   const ScheduleProblem p = testing::SmallAvoidance(7);
   BuildOptions b;
   const dynamics::DiscreteModel d =
-      dynamics::Discretise(*p.model, p.thrusters.AccelerationMatrix(), p.grid, b.discretisation);
+      dynamics::Discretize(*p.model, p.thrusters.AccelerationMatrix(), p.grid, b.discretisation);
   const ConjunctionGeometry g = ComputeConjunctionGeometry(p, d, b.discretisation);
   ASSERT_EQ(g.checks.size(), 7u);
   const auto& ya = static_cast<const dynamics::YamanakaAnkersenModel&>(*p.model);
@@ -146,8 +146,8 @@ TEST(ConjunctionCheckTest, SolvedPlanHasNoCollision) {
   const ScheduleMilp milp(testing::SmallAvoidance(41), BuildOptions{});
   const auto solver = milp::MakeCbcSolver();
   SolveScheduleOptions so;
-  so.solve.relative_gap = 1e-6;
-  so.solve.max_nodes = 20000;  // deterministic stop; the case is small
+  so.milp.relative_gap = 1e-6;
+  so.milp.max_nodes = 20000;  // deterministic stop; the case is small
   const ScheduleResult res = SolveBuilt(milp, *solver, so);
   ASSERT_TRUE(res.has_schedule());
   EXPECT_LT(res.impulsive_check.terminal_error, 1e-6);
@@ -199,9 +199,9 @@ TEST(ConjunctionSolveTest, OnOffStartRepairsThePlanWithoutTheConjunction) {
   const ScheduleMilp milp(SmallOnOffAvoidance(), BuildOptions{});
   const auto solver = milp::MakeCbcSolver();
   SolveScheduleOptions so;
-  so.solve.relative_gap = 1e-6;
-  so.solve.max_nodes = 2000;  // deterministic stop; the case is small
-  const ConjunctionStart start = FixedFaceStart(milp, *solver, so.solve);
+  so.milp.relative_gap = 1e-6;
+  so.milp.max_nodes = 2000;  // deterministic stop; the case is small
+  const ConjunctionStart start = FixedFaceStart(milp, *solver, so.milp);
   ASSERT_GT(start.x.size(), 0) << "no repaired start";
   EXPECT_NE(start.label.find("repaired"), std::string::npos) << start.label;
   EXPECT_NEAR(start.lower_bound, 0.0, 1e-9);  // no burn without the conjunction

@@ -15,6 +15,7 @@
 // auxiliary values exist.
 #include <cmath>
 #include <memory>
+#include <ostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -41,6 +42,12 @@ struct Config {
   std::vector<bool> enabled;
   bool infeasible = false;  // history and forced-off windows conflict: nothing is accepted
 };
+
+// gtest prints a failing case's parameter: its name and size, not raw bytes.
+void PrintTo(const Config& c, std::ostream* os) {
+  *os << c.name << " (" << c.thrusters << " thrusters, " << (c.grid.empty() ? 0 : c.grid.size() - 1)
+      << " intervals)";
+}
 
 std::vector<double> Uniform(int n, double dt) {
   std::vector<double> g;

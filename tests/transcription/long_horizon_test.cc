@@ -83,9 +83,9 @@ LongHorizonOptions DailyCycles(int days) {
   o.step_s = 600;
   o.terminal.kind = TerminalKind::kStationKeepingSets;
   o.solve.build.discretisation.scheme = dynamics::Scheme::kHermiteSimpson;
-  o.solve.solve.time_limit_s = 60;
-  o.solve.solve.relative_gap = 1e-6;
-  o.solve.solve.threads = 1;
+  o.solve.milp.time_limit_s = 60;
+  o.solve.milp.relative_gap = 1e-6;
+  o.solve.milp.threads = 1;
   o.solve.check.samples_per_interval = 1;
   return o;
 }
@@ -190,7 +190,7 @@ TEST(LongHorizonStats, SummaryThrustDaysSplitAndNormalDeltaV) {
   b.time_outside_window_s = 60;
   b.max_window_violation_deg = 0.001;
   b.worst_time_s = 8 * kDay;
-  const LongHorizonSummary s = Summarise({a, b}, anzel);
+  const LongHorizonSummary s = Summarize({a, b}, anzel);
   EXPECT_EQ(s.cycles, 2);
   EXPECT_DOUBLE_EQ(s.simulated_s, 14 * kDay);
   EXPECT_DOUBLE_EQ(s.consumption_l1_m_s, 3.0);
@@ -396,7 +396,7 @@ TEST(LongHorizonRun, HandOverInvariants) {
     EXPECT_EQ(state.last_burn_end_s[i], last);
   }
   // Summary = sum of the cycles.
-  const LongHorizonSummary s = Summarise(cycles, base.thrusters);
+  const LongHorizonSummary s = Summarize(cycles, base.thrusters);
   EXPECT_NEAR(s.consumption_l1_m_s,
               cycles[0].consumption_l1_m_s + cycles[1].consumption_l1_m_s +
                   cycles[2].consumption_l1_m_s,
@@ -413,8 +413,8 @@ TEST(LongHorizonRun, HandOverInvariants) {
 TEST(LongHorizonRun, ImprovementPassAfterAPoorIncumbent) {
   const ScheduleProblem base = Base();
   LongHorizonOptions o = DailyCycles(1);
-  o.solve.solve.relative_gap = 0.0;
-  o.solve.solve.max_nodes = 0;       // the root's incumbent only ...
+  o.solve.milp.relative_gap = 0.0;
+  o.solve.milp.max_nodes = 0;       // the root's incumbent only ...
   o.improve_above_gap = 1e-9;        // ... and any gap triggers the pass
   // The passes act on CBC's gap; the problem-aware search proves this cycle
   // optimal at once, so it is off here.
@@ -530,7 +530,7 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingBeforeTheSoftWindow) {
   for (bool presolve : spy_off->presolve_calls) EXPECT_TRUE(presolve);
   // With presolve already off (the crash guard's retry), no second attempt.
   o.retry_without_preprocessing = true;
-  o.solve.solve.presolve = false;
+  o.solve.milp.presolve = false;
   const auto spy_raw = std::make_shared<PresolveSpySolver>(true);
   const CycleRecord raw = FirstCycle(base, o, spy_raw);
   for (bool presolve : spy_raw->presolve_calls) EXPECT_FALSE(presolve);
@@ -544,8 +544,8 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingBeforeTheSoftWindow) {
 TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
   const ScheduleProblem base = Base();
   LongHorizonOptions o = DailyCycles(1);
-  o.solve.solve.relative_gap = 0.0;
-  o.solve.solve.max_nodes = 0;  // the root's incumbent only (gap 4.4 %, see above)
+  o.solve.milp.relative_gap = 0.0;
+  o.solve.milp.max_nodes = 0;  // the root's incumbent only (gap 4.4 %, see above)
   o.improve_above_gap = 1e-9;
   o.solve.search.enabled = false;  // as above: CBC's gap is what the passes act on
   o.improve_max_nodes = 200;
@@ -663,7 +663,7 @@ TEST(LongHorizonRun, UncontrollableCombinationIsReportedAndPropagated) {
   }
   // The latitude amplitude cannot be reduced (only +N thrusters are left): outside.
   EXPECT_GT(c.time_outside_window_s, 0.0);
-  EXPECT_EQ(Summarise({c}, base.thrusters).uncontrollable_cycles, 1);
+  EXPECT_EQ(Summarize({c}, base.thrusters).uncontrollable_cycles, 1);
 }
 
 // A start outside the window makes the nominal cycle infeasible: the soft
@@ -690,7 +690,7 @@ TEST(LongHorizonRun, InfeasibleCycleFallsBack) {
   // schedule; the last attempt starts from zero thrust (feasible once the
   // window is soft and the end free), so the cycle still has a schedule.
   LongHorizonOptions none = DailyCycles(1);
-  none.solve.solve.time_limit_s = 0.0;
+  none.solve.milp.time_limit_s = 0.0;
   const LongHorizonSimulation starved(Base(), none, Simulator(), Solver());
   LongHorizonState s = starved.InitialState();
   const CycleRecord z = starved.RunCycle(&s);
@@ -746,7 +746,7 @@ TEST(LongHorizonRun, SolverFailureGivesZeroThrustAndTheRunGoesOn) {
       z.eci_start, 0.0, Base().thrusters.AccelerationMatrix(), {}, {kDay})[0];
   EXPECT_LT((drift.head<3>() - z.eci_end.head<3>()).norm(), 1e-3);
   EXPECT_GT(z.time_outside_window_s, 0.0);
-  EXPECT_EQ(Summarise({z}, Base().thrusters).fallback_zero_thrust, 1);
+  EXPECT_EQ(Summarize({z}, Base().thrusters).fallback_zero_thrust, 1);
   const CycleRecord z2 = run.RunCycle(&s);
   EXPECT_EQ(z2.index, 1);
   EXPECT_EQ(z2.eci_start, z.eci_end);
@@ -813,7 +813,7 @@ TEST(LongHorizonRun, ResumedRunEqualsUninterrupted) {
 TEST(LongHorizonRun, InterruptLeavesTheStateUnchanged) {
   std::atomic<bool> stop{true};
   LongHorizonOptions o = DailyCycles(2);
-  o.solve.solve.interrupt = &stop;
+  o.solve.milp.interrupt = &stop;
   const LongHorizonSimulation run(Base(), o, Simulator(), Solver());
   LongHorizonState s = run.InitialState();
   const LongHorizonState before = s;

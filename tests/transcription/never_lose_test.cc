@@ -38,15 +38,15 @@ TEST_P(DeadlineAfterFirstIncumbent, KeepsTheIncumbent) {
   // leaves room for a heavily loaded one (and the test skips, rather than
   // fails, on a machine where even that is not enough).
   const double limit_s = 15.0;
-  o.solve.time_limit_s = limit_s;
-  o.solve.relative_gap = 1e-9;
-  o.solve.threads = 1;
-  o.solve.cbc.separate_process = separate_process;
+  o.milp.time_limit_s = limit_s;
+  o.milp.relative_gap = 1e-9;
+  o.milp.threads = 1;
+  o.milp.cbc.separate_process = separate_process;
   o.prefix_diagnosis_s = 0.0;
   const auto start = std::chrono::steady_clock::now();
   double first_objective = std::nan("");
   double first_seconds = 0.0;
-  o.solve.progress = [&](const milp::SolveProgress& pr) {
+  o.milp.progress = [&](const milp::SolveProgress& pr) {
     if (!pr.new_incumbent || !std::isnan(first_objective)) return;
     first_objective = pr.objective;
     first_seconds = pr.wall_seconds;

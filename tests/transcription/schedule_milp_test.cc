@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <ostream>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,12 @@
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
 #include "tests/transcription/thesis_cases.h"
+
+namespace thrustsched::dynamics {
+// gtest prints a failing case's scheme by its scenario-file name, not as an
+// integer (found by argument-dependent lookup, hence this namespace).
+static void PrintTo(Scheme s, std::ostream* os) { *os << ToString(s); }
+}  // namespace thrustsched::dynamics
 
 namespace thrustsched::transcription {
 namespace {
@@ -96,7 +103,7 @@ TEST(ScheduleMilpTest, ThesisTable41ShortHorizons) {
   for (size_t k = 0; k < cases.size(); ++k) {
     const ScheduleProblem p = ThesisTable41(cases[k].first);
     SolveScheduleOptions o;
-    o.solve = Exact();
+    o.milp = Exact();
     const ScheduleResult r = SolveSchedule(p, *solver, o);
     ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << cases[k].first << " days";
     EXPECT_NEAR(r.schedule.consumption_l1_m_s, cases[k].second * slot, 1e-9);
@@ -118,7 +125,7 @@ TEST(ScheduleMilpTest, FormulationsAndEncodingsAgree) {
       SolveScheduleOptions o;
       o.build.formulation = f;
       o.build.encoding = e;
-      o.solve = Exact();
+      o.milp = Exact();
       const ScheduleResult r = SolveSchedule(p, *solver, o);
       ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << ToString(f) << " " << ToString(e);
       if (std::isnan(reference)) reference = r.solve.objective;
@@ -155,7 +162,7 @@ TEST(ScheduleMilpTest, DecodeAndWarmStartAreConsistent) {
   }
   // MIP start is accepted: solving with it is still optimal and equal.
   SolveScheduleOptions o;
-  o.solve = Exact();
+  o.milp = Exact();
   o.warm_start = s.burns;
   const ScheduleResult warm = SolveBuilt(m, *solver, o);
   ASSERT_EQ(warm.solve.status, milp::SolveStatus::kOptimal);
@@ -172,7 +179,7 @@ TEST(ScheduleMilpTest, InfeasibleStartAndSoftWindow) {
   p.initial_state[0] = 10000.0;
   p.initial_state[1] = 36000.0;  // near the edge, drifting out fast
   SolveScheduleOptions o;
-  o.solve = Exact(60);
+  o.milp = Exact(60);
   const ScheduleResult hard = SolveSchedule(p, *solver, o);
   EXPECT_EQ(hard.solve.status, milp::SolveStatus::kInfeasible);
   // The soft problem is a hard MILP: one day at 10-minute steps and a time
@@ -180,7 +187,7 @@ TEST(ScheduleMilpTest, InfeasibleStartAndSoftWindow) {
   p.grid = dynamics::UniformGrid(0.0, 86400.0, 144);
   p.window.soft = true;
   p.window.soft_penalty = 10.0;
-  o.solve.time_limit_s = 20;
+  o.milp.time_limit_s = 20;
   const ScheduleResult soft = SolveSchedule(p, *solver, o);
   ASSERT_TRUE(soft.has_schedule());
   EXPECT_GT(soft.check.max_window_violation_at_nodes, 1.0);  // m: it does leave the box
@@ -197,7 +204,7 @@ TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
   ScheduleProblem p = ThesisTable41(7.0);
   p.initial_state[0] = 10000.0;
   SolveScheduleOptions o;
-  o.solve.time_limit_s = 0.5;  // stops CBC inside its root LP
+  o.milp.time_limit_s = 0.5;  // stops CBC inside its root LP
   o.prefix_diagnosis_s = 0.0;
   const ScheduleResult undecided = SolveSchedule(p, *solver, o);
   EXPECT_EQ(undecided.solve.status, milp::SolveStatus::kNoSolutionFound) << undecided.solve.detail;
@@ -209,7 +216,7 @@ TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
       << r.infeasibility_reasons.back();
   // Feasible (thesis Table 4.1, 2 days), stopped before any schedule: stays undecided.
   const ScheduleProblem feasible = ThesisTable41(2.0);
-  o.solve.time_limit_s = 0.01;
+  o.milp.time_limit_s = 0.01;
   const ScheduleResult f = SolveSchedule(feasible, *solver, o);
   EXPECT_NE(f.solve.status, milp::SolveStatus::kInfeasible) << f.solve.detail;
 }

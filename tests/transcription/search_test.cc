@@ -55,7 +55,7 @@ TEST(SearchSchedule, ProvesTheThesisTable41Optima) {
   for (const auto& [days, slots] : cases) {
     const ScheduleProblem p = ThesisTable41(days);
     SolveScheduleOptions o;
-    o.solve = Exact();
+    o.milp = Exact();
     const ScheduleResult r = SolveSchedule(p, *solver, o);
     ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
     EXPECT_NEAR(r.solve.objective, slots * slot, 1e-9) << r.solve.detail;
@@ -77,7 +77,7 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
   for (Encoding e : {Encoding::kThesis, Encoding::kTight}) {
     SolveScheduleOptions o;
     o.build.encoding = e;
-    o.solve = Exact();
+    o.milp = Exact();
     const ScheduleResult a = SolveSchedule(p, *solver, o);
     const ScheduleResult b = SolveSchedule(p, *solver, o);
     o.search.enabled = false;
@@ -150,7 +150,7 @@ TEST(SearchSchedule, KeepsAGivenStartAndHonoursAnInterrupt) {
   auto solver = milp::MakeCbcSolver();
   const ScheduleProblem p = SmallHcwDay();
   SolveScheduleOptions o;
-  o.solve = Exact();
+  o.milp = Exact();
   o.search.enabled = false;
   const ScheduleResult ref = SolveSchedule(p, *solver, o);
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);

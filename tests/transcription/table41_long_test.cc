@@ -27,9 +27,9 @@ TEST_P(Table41LongTest, ProvenOptimumIsEightSlots) {
   const double published = 0.131;
   SolveScheduleOptions o;
   o.build.encoding = Encoding::kThesis;  // same optimum as tight (tested); fewer nonzeros
-  o.solve.time_limit_s = 600;
-  o.solve.relative_gap = 1e-9;
-  o.solve.absolute_gap = 1e-9;
+  o.milp.time_limit_s = 600;
+  o.milp.relative_gap = 1e-9;
+  o.milp.absolute_gap = 1e-9;
   const auto solver = milp::MakeCbcSolver();
   const ScheduleResult r = SolveSchedule(ThesisTable41(days), *solver, o);
   ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;

@@ -106,7 +106,7 @@ SerraSolution SolveSerra(const std::string& example, int intervals) {
   p.input_mode = InputMode::kImpulsive;
   p.objective.kind = ObjectiveKind::kDeltaV;
   SolveScheduleOptions o;
-  o.solve.relative_gap = 1e-9;
+  o.milp.relative_gap = 1e-9;
   s.result = SolveSchedule(p, *milp::MakeCbcSolver(), o);
   return s;
 }
@@ -328,7 +328,7 @@ TEST(DoubleIntegratorOnOffTest, ExactGridOptimumWithTerminalBox) {
   ASSERT_EQ(g.k, 6);
   ASSERT_EQ(g.d_min, 210);  // = 6 * 35: the schedule is unique
   SolveScheduleOptions o;
-  o.solve = ExactSolve();
+  o.milp = ExactSolve();
   const ScheduleResult r = SolveSchedule(DoubleIntegratorOnOff(n, tol), *milp::MakeCbcSolver(), o);
   ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
   EXPECT_NEAR(r.solve.objective, 96.0 / 41.0, 1e-9);
@@ -360,7 +360,7 @@ TEST(DoubleIntegratorOnOffTest, GridOptimumConvergesToContinuousOptimum) {
     const double tol = kDoubleIntegratorU / (2.0 * n * n);
     const GridOptimum g = DerivedGridOptimum(n, tol);
     SolveScheduleOptions o;
-    o.solve = ExactSolve();
+    o.milp = ExactSolve();
     const ScheduleResult r = SolveSchedule(DoubleIntegratorOnOff(n, tol), *solver, o);
     ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << "N = " << n;
     EXPECT_NEAR(r.solve.objective, g.fuel, 1e-9) << "N = " << n;
@@ -383,7 +383,7 @@ TEST(DoubleIntegratorOnOffTest, FixedFinalStateNeedsAnExactGridPosition) {
       SerraReference("sec. 5.2 double integrator, on-off thrust of magnitude U");
   auto solver = milp::MakeCbcSolver();
   SolveScheduleOptions o;
-  o.solve = ExactSolve();
+  o.milp = ExactSolve();
   const int n = ref.at("grid_intervals").get<int>();
   ScheduleProblem p = DoubleIntegratorOnOff(n, 0.0);
   p.terminal.kind = TerminalKind::kFixedState;
@@ -446,8 +446,8 @@ int ExpectTable42Case(double t1_days) {
   const double published = row.at("consumption_m_s").get<double>();
   const ScheduleProblem p = Table42(t1_days);
   SolveScheduleOptions o;
-  o.solve.relative_gap = 1e-3;  // default lp_algorithm (primal) and objective step
-  o.solve.time_limit_s = 280;   // below the ctest timeout; the case takes ~15 s of CPU
+  o.milp.relative_gap = 1e-3;  // default lp_algorithm (primal) and objective step
+  o.milp.time_limit_s = 280;   // below the ctest timeout; the case takes ~15 s of CPU
   const ScheduleResult r = SolveSchedule(p, *milp::MakeCbcSolver(), o);
   EXPECT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
   if (!r.has_schedule()) {
