@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/geo_products.h"
+#include "app/run_hooks.h"
 #include "app/scenario.h"
 
 namespace thrustsched::app {
@@ -20,6 +21,9 @@ inline constexpr int kExitInternal = 1;      // internal error
 inline constexpr int kExitBadInput = 2;      // bad input (scenario, files, options)
 inline constexpr int kExitInfeasible = 3;    // proven infeasible
 inline constexpr int kExitNoSolution = 4;    // no solution within the limits
+// `simulate` stopped by a signal before its last cycle: the same code as
+// kExitNoSolution (documented as 4 for both), named for what it means there.
+inline constexpr int kExitInterrupted = 4;
 inline constexpr int kExitCheckFailed = 5;   // `check`: the schedule fails the checks
 
 struct SolveArgs {
@@ -32,6 +36,7 @@ struct SolveArgs {
   bool force = false;  // replace an earlier run's files in out_dir
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
+  RunHooks hooks;             // observers (tests, embedding programs): app/run_hooks.h
 };
 int RunSolve(const SolveArgs& args);
 

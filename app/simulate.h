@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/geo_products.h"
+#include "app/run_hooks.h"
 #include "app/scenario.h"
 #include "transcription/long_horizon.h"
 
@@ -56,12 +57,15 @@ struct SimulateArgs {
   std::function<void(const transcription::CycleRecord&, int done, int target)> on_cycle;
   /// False: nothing is written to stdout (the human summary).
   bool print_summary = true;
+  /// Observers for tests and embedding programs (app/run_hooks.h): every
+  /// solver progress report, and the start of each cycle's solve.
+  RunHooks hooks;
 };
 
 /// Exit codes: 0 every requested cycle ran (fallbacks included: see year.json),
 /// 2 bad input (scenario, section, checkpoint of another scenario, a folder
 ///   holding an earlier run without --resume or --force),
-/// 4 interrupted (resume with --resume), 1 internal error.
+/// 4 interrupted (kExitInterrupted: resume with --resume), 1 internal error.
 int RunSimulate(const SimulateArgs& args);
 
 /// A failure entry of long_horizon.failures, as written in the scenario.

@@ -360,6 +360,21 @@ class LongHorizonSimulation {
   CycleRecord RunCycle(LongHorizonState* state) const;
 
  private:
+  // An attempt of a cycle: the nominal problem or a fallback, and whether
+  // CBC's preprocessing and presolve are off (`raw`).
+  struct Level {
+    Fallback level;
+    bool raw;
+  };
+  /// The attempts of a cycle in order of escalation.
+  std::vector<Level> Levels(bool controllable, const ScheduleProblem& nominal) const;
+  /// Builds and solves one attempt; fills *attempt and the build/check times of *rec.
+  ScheduleResult Attempt(const ScheduleProblem& p, const Level& level, int control_node,
+                         CycleAttempt* attempt, CycleRecord* rec) const;
+  /// Runs the attempts until one has a schedule (then improves it); false
+  /// when none has or the run was interrupted (rec->interrupted).
+  bool SolveCycle(const ScheduleProblem& nominal, bool controllable, int control_node,
+                  ScheduleResult* accepted, CycleRecord* rec) const;
   /// The cycle MILP of `p` (with the receding mode's control-boundary rows).
   ScheduleMilp BuildCycleMilp(const ScheduleProblem& p, int control_node) const;
   /// The improvement pass (LongHorizonOptions::improve_above_gap) on an

@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "app/cli.h"
+#include "app/interrupt.h"
 #include "app/outputs.h"
 #include "tests/app/cli_runner.h"
 #include "transcription/checker.h"
@@ -445,13 +447,14 @@ TEST(SimulateCli, BadInputExitsTwo) {
 // runs the whole scenario.
 TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
   const std::string dir = TempDir("sim_int");
-  // The CLI interrupts itself at the first incumbent of cycle 1 (test hook
-  // THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT, app/interrupt.h): a Ctrl-C that
-  // always lands inside the first solve, through the real SIGINT path.
-  const auto r = thrustsched::testing::RunProgram(
-      "env", {"THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT=1", THRUSTSCHED_CLI, "simulate", kScenario,
-              "--out", dir, "--no-plots"},
-      300);
+  // The CLI interrupts itself at the first incumbent of cycle 1 (injected
+  // progress hook, app/run_hooks.h): a Ctrl-C that always lands inside the
+  // first solve, through the real SIGINT path, in a child process.
+  RunHooks hooks;
+  hooks.on_progress = InterruptSelfAtFirstIncumbent;
+  const auto r = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots"}, hooks);
+  });
   ASSERT_TRUE(r.exited) << r.Describe();
   ASSERT_EQ(r.exit_code, 4) << r.Describe();
   EXPECT_NE(r.err.find("--resume"), std::string::npos) << r.err;
@@ -472,11 +475,15 @@ TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
 // same cycle stops with an error instead of looping.
 TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
   const std::string dir = TempDir("sim_crash");
-  // Cycle 2 dies (test hook THRUSTSCHED_TEST_DIE_IN_CYCLE: std::abort inside the cycle).
-  const auto r = thrustsched::testing::RunProgram(
-      "env", {"THRUSTSCHED_TEST_DIE_IN_CYCLE=2", THRUSTSCHED_CLI, "simulate", kScenario, "--out",
-              dir, "--no-plots", "--cycles", "2"},
-      300);
+  // Cycle 2 dies (injected hook: std::abort inside the cycle's crash guard).
+  RunHooks die_in_cycle_2;
+  die_in_cycle_2.in_cycle = [](int cycle) {
+    if (cycle == 2) std::abort();
+  };
+  const auto r = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2"},
+                  die_in_cycle_2);
+  });
   ASSERT_FALSE(r.exited && r.exit_code == 0) << r.Describe();
   ASSERT_TRUE(fs::exists(dir + "/in_progress.json")) << r.Describe();
   const nlohmann::json mark = ReadJson(dir + "/in_progress.json");
@@ -485,10 +492,11 @@ TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
   EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 2u);  // header + cycle 1
 
   // The same death again, now in the preprocessing-off attempt...
-  const auto r2 = thrustsched::testing::RunProgram(
-      "env", {"THRUSTSCHED_TEST_DIE_IN_CYCLE=2", THRUSTSCHED_CLI, "simulate", kScenario, "--out",
-              dir, "--no-plots", "--cycles", "2", "--resume"},
-      300);
+  const auto r2 = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2",
+                   "--resume"},
+                  die_in_cycle_2);
+  });
   ASSERT_FALSE(r2.exited && r2.exit_code == 0) << r2.Describe();
   EXPECT_NE(r2.err.find("preprocessing off"), std::string::npos) << r2.err;
   EXPECT_EQ(ReadJson(dir + "/in_progress.json")["solver_preprocessing_off"], true);

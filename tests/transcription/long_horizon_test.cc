@@ -1,3 +1,5 @@
+// One file on purpose, ~900 lines: the cases below share the short GEO
+// fixture and its independent references, whose set-up is most of the file.
 // LongHorizonSimulation (chained cycles, nonlinear hand-over) on short GEO
 // cycles (1 day at a 10-min step, the thesis rules 5 / 20 / 5 min) so that the
 // whole file runs in seconds. References are independent of the driver: the
