@@ -337,7 +337,7 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   j["solver_detail"] = sr.detail;
   j["solver_version"] = sr.solver_version;
   j["interrupted"] = facts.interrupted;
-  j["objective_kind"] = std::string(transcription::ToString(s.problem.objective.kind));
+  j["objective_kind"] = std::string(ToString(s.problem.objective.kind));
   j["objective"] = sr.has_solution() ? Num(sr.objective) : nullptr;
   j["best_bound"] = Num(sr.best_bound);
   j["gap"] = Num(sr.gap);
@@ -390,8 +390,8 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   }
   j["incumbents"] = inc;
   j["scheme"] = std::string(dynamics::ToString(s.build.discretisation.scheme));
-  j["formulation"] = std::string(transcription::ToString(s.build.formulation));
-  j["encoding"] = std::string(transcription::ToString(s.build.encoding));
+  j["formulation"] = std::string(ToString(s.build.formulation));
+  j["encoding"] = std::string(ToString(s.build.encoding));
   j["threads"] = s.solve.threads;
   j["time_limit_s"] = Num(s.solve.time_limit_s);
   j["relative_gap"] = s.solve.relative_gap;

@@ -25,15 +25,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace simulate_detail;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 std::string ProgressLine(const CycleRecord& c, int total, const std::string& epoch, double consumed,
                          double eta) {
   std::ostringstream os;
   os << "cycle " << c.index + 1 << "/" << total << " " << Utc(epoch, c.start_s).substr(0, 10) << ": "
      << StatusName(c.status);
-  if (c.fallback != Fallback::kNone) os << " (fallback " << transcription::ToString(c.fallback) << ")";
+  if (c.fallback != Fallback::kNone) os << " (fallback " << ToString(c.fallback) << ")";
   os << ", solve " << G(c.solve_seconds, 3) << " s, gap "
      << (std::isfinite(c.gap) ? G(100.0 * c.gap, 3) + "%" : std::string("n/a")) << ", "
      << G(c.consumption_l1_m_s, 4) << " m/s (total " << G(consumed, 5) << " m/s L1), max |lat| "
@@ -78,10 +78,10 @@ struct YearRun {
   Clock::time_point started;
   std::shared_ptr<const dynamics::GeoSimulator> simulator;
   std::shared_ptr<const milp::Solver> solver;
-  std::optional<transcription::LongHorizonSimulation> run;
+  std::optional<planning::LongHorizonSimulation> run;
   int total = 0;   // cycles of the scenario
   int target = 0;  // cycles this run reaches
-  transcription::LongHorizonState state;
+  planning::LongHorizonState state;
   std::vector<CycleRecord> cycles;
   std::ostream& err = std::cerr;
 
@@ -138,10 +138,10 @@ void StartRun(YearRun* y) {
 
 void Announce(const YearRun& y) {
   if (y.quiet()) return;
-  const transcription::LongHorizonOptions& o = y.setup.options;
-  y.err << y.scenario().name << ": " << y.total << " " << transcription::ToString(o.mode)
+  const planning::LongHorizonOptions& o = y.setup.options;
+  y.err << y.scenario().name << ": " << y.total << " " << ToString(o.mode)
         << " cycles of " << G(o.cycle_s / 86400.0, 4) << " d"
-        << (o.mode == transcription::HorizonMode::kReceding
+        << (o.mode == planning::HorizonMode::kReceding
                 ? " (applied " + G(o.control_s / 86400.0, 4) + " d)"
                 : std::string())
         << " at " << G(o.step_s) << " s, time limit " << G(o.solve.solve.time_limit_s)
@@ -157,10 +157,10 @@ CycleRecord SolveCycle(YearRun* y, int k, bool retry) {
   InProgressGuard guard(in_progress, y->setup.fingerprint, k + 1, retry);
   if (y->args.hooks.in_cycle) y->args.hooks.in_cycle(k + 1);
   if (!retry) return y->run->RunCycle(&y->state);
-  transcription::LongHorizonOptions safe = y->setup.options;
+  planning::LongHorizonOptions safe = y->setup.options;
   safe.solve.solve.presolve = false;
   CycleRecord rec =
-      transcription::LongHorizonSimulation(y->scenario().problem, safe, y->simulator, y->solver)
+      planning::LongHorizonSimulation(y->scenario().problem, safe, y->simulator, y->solver)
           .RunCycle(&y->state);
   rec.note += std::string(rec.note.empty() ? "" : "; ") +
               "an earlier run died inside this cycle's solve (solver crash); solved with "
@@ -196,9 +196,9 @@ void ReportCycle(const YearRun& y, double consumed, double eta_s) {
   if (y.quiet()) return;
   const CycleRecord& last = y.cycles.back();
   y.err << ProgressLine(last, y.total, y.epoch, consumed, eta_s) << "\n";
-  for (const transcription::CycleAttempt& at : last.attempts) {
+  for (const planning::CycleAttempt& at : last.attempts) {
     if (at.level != Fallback::kNone || at.status != last.status) {
-      y.err << "  attempt " << transcription::ToString(at.level) << ": " << StatusName(at.status)
+      y.err << "  attempt " << ToString(at.level) << ": " << StatusName(at.status)
             << " after " << G(at.solve_seconds, 3) << " s (" << at.detail.substr(0, 160) << ")\n";
     }
   }
@@ -297,11 +297,11 @@ std::vector<std::string> WriteRunFiles(const YearRun& y) {
 void PrintSummary(const YearRun& y, const std::vector<std::string>& files, bool interrupted) {
   std::ostream& out = std::cout;
   const Scenario& s = y.scenario();
-  const transcription::LongHorizonSummary sum =
-      transcription::Summarise(y.cycles, s.problem.thrusters);
+  const planning::LongHorizonSummary sum =
+      planning::Summarise(y.cycles, s.problem.thrusters);
   out << "scenario      " << s.name << " (" << y.args.scenario << ")\n"
       << "cycles        " << sum.cycles << "/" << y.total << " ("
-      << transcription::ToString(y.setup.options.mode) << ", " << G(sum.simulated_s / 86400.0, 6)
+      << ToString(y.setup.options.mode) << ", " << G(sum.simulated_s / 86400.0, 6)
       << " days simulated)" << (interrupted ? ", interrupted" : "") << "\n"
       << "consumption   " << G(sum.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
       << G(sum.delta_v_m_s, 6) << " m/s, normal delta-v " << G(sum.normal_delta_v_m_s, 5)

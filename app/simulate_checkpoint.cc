@@ -17,8 +17,8 @@ namespace thrustsched::app {
 namespace simulate_detail {
 
 namespace fs = std::filesystem;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 milp::SolveStatus ParseStatus(const std::string& name, const std::string& path) {
   for (milp::SolveStatus s :
@@ -81,7 +81,7 @@ dynamics::Vector6d ToVector6(const std::vector<double>& v, const std::string& pa
   return x;
 }
 
-nlohmann::json CheckpointJson(const SimulationSetup& setup, const transcription::LongHorizonState& st,
+nlohmann::json CheckpointJson(const SimulationSetup& setup, const planning::LongHorizonState& st,
                               const std::vector<CycleRecord>& cycles) {
   nlohmann::json j;
   j["format"] = kCheckpointFormat;
@@ -100,7 +100,7 @@ nlohmann::json CheckpointJson(const SimulationSetup& setup, const transcription:
 }
 
 void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int num_thrusters,
-                    transcription::LongHorizonState* st, std::vector<CycleRecord>* cycles) {
+                    planning::LongHorizonState* st, std::vector<CycleRecord>* cycles) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScenarioError(path + ": cannot open the checkpoint");
   std::ostringstream ss;

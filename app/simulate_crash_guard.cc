@@ -16,8 +16,8 @@ namespace thrustsched::app {
 namespace simulate_detail {
 
 namespace fs = std::filesystem;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 std::optional<InProgress> ReadInProgress(const std::string& path, const std::string& fingerprint) {
   std::ifstream in(path, std::ios::binary);

@@ -18,8 +18,8 @@ namespace thrustsched::app {
 namespace simulate_detail {
 
 namespace fs = std::filesystem;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();

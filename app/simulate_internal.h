@@ -19,7 +19,7 @@
 #include "app/simulate.h"
 #include "dynamics/models.h"
 #include "milp/solver.h"
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
 namespace thrustsched::app::simulate_detail {
 
@@ -93,12 +93,12 @@ std::vector<double> GetNumbers(const nlohmann::json& j, const char* key, const s
 nlohmann::json VectorJson(const Eigen::VectorXd& v);
 Eigen::VectorXd ToVector(const std::vector<double>& v);
 dynamics::Vector6d ToVector6(const std::vector<double>& v, const std::string& path);
-nlohmann::json CheckpointJson(const SimulationSetup& setup, const transcription::LongHorizonState& st,
-                              const std::vector<transcription::CycleRecord>& cycles);
+nlohmann::json CheckpointJson(const SimulationSetup& setup, const planning::LongHorizonState& st,
+                              const std::vector<planning::CycleRecord>& cycles);
 /// @throws ScenarioError when the checkpoint is of another scenario or malformed.
 void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int num_thrusters,
-                    transcription::LongHorizonState* st,
-                    std::vector<transcription::CycleRecord>* cycles);
+                    planning::LongHorizonState* st,
+                    std::vector<planning::CycleRecord>* cycles);
 
 // ---- The long_horizon section (simulate_setup.cc).
 /// Fills setup->options and setup->failures from setup->scenario's JSON.
@@ -107,7 +107,7 @@ void ParseLongHorizon(SimulationSetup* setup);
 
 // ---- trajectory.csv and the year plots (simulate_plots.cc).
 std::string TrajectoryHeader();
-std::string TrajectoryRows(const SimulationSetup& setup, const transcription::CycleRecord& c,
+std::string TrajectoryRows(const SimulationSetup& setup, const planning::CycleRecord& c,
                            bool last_cycle);
 struct PlotFiles {
   std::vector<std::string> images;
@@ -115,7 +115,7 @@ struct PlotFiles {
 };
 /// Writes the gnuplot scripts of the year plots into `dir` and, if `run`, draws them.
 PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
-                         const std::vector<transcription::CycleRecord>& cycles, bool run);
+                         const std::vector<planning::CycleRecord>& cycles, bool run);
 
 }  // namespace thrustsched::app::simulate_detail
 

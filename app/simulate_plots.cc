@@ -18,8 +18,8 @@ namespace thrustsched::app {
 namespace simulate_detail {
 
 namespace fs = std::filesystem;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 // ---------------------------------------------------------------------------
 // Output files.

@@ -17,15 +17,15 @@ namespace thrustsched::app {
 namespace simulate_detail {
 
 namespace fs = std::filesystem;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 
 
 }  // namespace simulate_detail
 
 using namespace simulate_detail;
-using transcription::CycleRecord;
+using planning::CycleRecord;
 
 nlohmann::json CycleRecordJson(const CycleRecord& r) {
   nlohmann::json j;
@@ -33,11 +33,11 @@ nlohmann::json CycleRecordJson(const CycleRecord& r) {
   j["start_s"] = r.start_s;
   j["applied_end_s"] = r.applied_end_s;
   j["prediction_end_s"] = r.prediction_end_s;
-  j["fallback"] = std::string(transcription::ToString(r.fallback));
+  j["fallback"] = std::string(ToString(r.fallback));
   j["status"] = std::string(milp::ToString(r.status));
   nlohmann::json attempts = nlohmann::json::array();
-  for (const transcription::CycleAttempt& a : r.attempts) {
-    attempts.push_back({{"level", std::string(transcription::ToString(a.level))},
+  for (const planning::CycleAttempt& a : r.attempts) {
+    attempts.push_back({{"level", std::string(ToString(a.level))},
                         {"status", std::string(milp::ToString(a.status))},
                         {"solve_seconds", a.solve_seconds},
                         {"detail", a.detail}});
@@ -101,7 +101,7 @@ CycleRecord CycleRecordFromJson(const nlohmann::json& j, const std::string& path
   r.start_s = GetNumber(j, "start_s", path);
   r.applied_end_s = GetNumber(j, "applied_end_s", path);
   r.prediction_end_s = GetNumber(j, "prediction_end_s", path);
-  r.fallback = Wrap(path + ".fallback", [&] { return transcription::ParseFallback(str("fallback")); });
+  r.fallback = Wrap(path + ".fallback", [&] { return planning::ParseFallback(str("fallback")); });
   r.status = ParseStatus(str("status"), path + ".status");
   if (!j.contains("attempts") || !j.at("attempts").is_array()) {
     throw ScenarioError(path + ".attempts: expected an array");
@@ -112,9 +112,9 @@ CycleRecord CycleRecordFromJson(const nlohmann::json& j, const std::string& path
     if (!a.is_object() || !a.contains("level") || !a.contains("status") || !a.contains("detail")) {
       throw ScenarioError(ap + ": expected {level, status, solve_seconds, detail}");
     }
-    transcription::CycleAttempt at;
+    planning::CycleAttempt at;
     at.level = Wrap(ap + ".level",
-                    [&] { return transcription::ParseFallback(a.at("level").get<std::string>()); });
+                    [&] { return planning::ParseFallback(a.at("level").get<std::string>()); });
     at.status = ParseStatus(a.at("status").get<std::string>(), ap + ".status");
     at.solve_seconds = GetNumber(a, "solve_seconds", ap);
     at.detail = a.at("detail").get<std::string>();
@@ -179,7 +179,7 @@ std::string CyclesCsvRow(const CycleRecord& r, const std::string& epoch) {
   std::ostringstream os;
   os << r.index + 1 << "," << Utc(epoch, r.start_s) << "," << G(r.start_s, 15) << ","
      << G(r.applied_end_s, 15) << "," << StatusName(r.status) << ","
-     << transcription::ToString(r.fallback) << "," << G(r.objective) << "," << G(r.best_bound)
+     << ToString(r.fallback) << "," << G(r.objective) << "," << G(r.best_bound)
      << "," << G(r.gap) << "," << G(r.solve_seconds, 6) << "," << G(r.first_solution_seconds, 6)
      << "," << G(r.wall_seconds, 6) << "," << G(r.cpu_seconds, 6) << "," << G(r.consumption_l1_m_s) << "," << G(r.delta_v_m_s)
      << "," << G(r.propellant_kg) << "," << G(r.normal_delta_v_m_s) << "," << r.burns.size() << ","
@@ -193,8 +193,8 @@ std::string CyclesCsvRow(const CycleRecord& r, const std::string& epoch) {
 nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRecord>& cycles,
                         int cycles_total, double this_run_wall_seconds) {
   const dynamics::ThrusterSet& thr = setup.scenario.problem.thrusters;
-  const transcription::LongHorizonSummary s = transcription::Summarise(cycles, thr);
-  const transcription::LongHorizonOptions& o = setup.options;
+  const planning::LongHorizonSummary s = planning::Summarise(cycles, thr);
+  const planning::LongHorizonOptions& o = setup.options;
   const std::string epoch = setup.scenario.geo->epoch;
   nlohmann::json j;
   j["scenario"] = setup.scenario.name;
@@ -202,7 +202,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   j["complete"] = s.cycles == cycles_total;
   j["cycles"] = s.cycles;
   j["cycles_total"] = cycles_total;
-  j["mode"] = std::string(transcription::ToString(o.mode));
+  j["mode"] = std::string(ToString(o.mode));
   j["start_utc"] = Utc(epoch, o.start_s);
   j["simulated_days"] = s.simulated_s / 86400.0;
   j["consumption_l1_m_s"] = s.consumption_l1_m_s;
@@ -241,7 +241,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
     if (c.fallback != Fallback::kNone) {
       fb_cycles.push_back({{"cycle", c.index + 1},
                            {"start_utc", Utc(epoch, c.start_s)},
-                           {"fallback", std::string(transcription::ToString(c.fallback))}});
+                           {"fallback", std::string(ToString(c.fallback))}});
     }
     if (!c.controllable) unctl.push_back({{"cycle", c.index + 1}, {"reason", c.note}});
     pred.push_back(c.prediction_error_deg);
@@ -254,7 +254,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
                     {"cycles", fb_cycles}};
   j["uncontrollable"] = {{"cycles", s.uncontrollable_cycles}, {"list", unctl}};
   j["time_limited_cycles"] = s.time_limited_cycles;
-  auto dist = [](const transcription::Distribution& d) {
+  auto dist = [](const planning::Distribution& d) {
     return nlohmann::json{{"median", Num(d.median)}, {"p90", Num(d.p90)},  {"max", Num(d.max)},
                           {"mean", Num(d.mean)},     {"count", d.count}};
   };
@@ -263,7 +263,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   j["cycle_wall_seconds"] = dist(s.wall_seconds);
   j["cycle_cpu_seconds"] = dist(s.cpu_seconds);
   j["cpu_seconds"] = s.cpu_seconds_total;
-  j["prediction_error_deg"] = dist(transcription::Distribute(pred));
+  j["prediction_error_deg"] = dist(planning::Distribute(pred));
   j["wall_seconds"] = s.wall_seconds_total;
   j["this_run_wall_seconds"] = this_run_wall_seconds;
   nlohmann::json fails = nlohmann::json::array();
@@ -283,7 +283,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
   j["disabled"] = disabled;
   j["settings"] = {
       {"cycle_s", o.cycle_s},
-      {"control_s", o.mode == transcription::HorizonMode::kReceding ? o.control_s : o.cycle_s},
+      {"control_s", o.mode == planning::HorizonMode::kReceding ? o.control_s : o.cycle_s},
       {"step_s", o.step_s},
       {"duration_s", o.duration_s},
       {"cycle_time_limit_s", Num(o.solve.solve.time_limit_s)},

@@ -1,5 +1,5 @@
 // The "long_horizon" section of a GEO scenario, parsed into the options of
-// transcription::LongHorizonSimulation (fields in data/scenarios/README.md).
+// planning::LongHorizonSimulation (fields in data/scenarios/README.md).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,29 +19,29 @@ namespace thrustsched::app {
 namespace simulate_detail {
 
 namespace fs = std::filesystem;
-using transcription::CycleRecord;
-using transcription::Fallback;
+using planning::CycleRecord;
+using planning::Fallback;
 
 // ---------------------------------------------------------------------------
 // Parsing of the long_horizon section.
 
 void ParseLongHorizon(SimulationSetup* setup) {
   Scenario& s = setup->scenario;
-  transcription::LongHorizonOptions& o = setup->options;
+  planning::LongHorizonOptions& o = setup->options;
   JsonObject lh(s.raw.at("long_horizon"), "scenario.long_horizon");
   o.start_s = s.start_s;
   o.step_s = s.step_s;
   o.duration_s = lh.Number("duration_s", Bound::kPositive);
   o.cycle_s = lh.OptionalNumber("cycle_s", Bound::kPositive).value_or(s.step_s * s.num_intervals);
-  o.mode = transcription::ParseHorizonMode(
+  o.mode = planning::ParseHorizonMode(
       lh.Has("mode") ? lh.Choice("mode", {"fixed", "receding"}) : std::string("fixed"));
-  if (o.mode == transcription::HorizonMode::kReceding) {
+  if (o.mode == planning::HorizonMode::kReceding) {
     o.control_s = lh.Number("control_s", Bound::kPositive);
   } else if (lh.Has("control_s")) {
     lh.Fail("control_s", "is only used with \"mode\": \"receding\"");
   }
   // End-of-cycle sets: default K = 16 in fixed mode, none in receding mode (thesis 5.4).
-  bool sets = o.mode == transcription::HorizonMode::kFixed;
+  bool sets = o.mode == planning::HorizonMode::kFixed;
   int facets = 16;
   if (lh.Has("terminal")) {
     JsonObject t = lh.Object("terminal");
@@ -66,7 +66,7 @@ void ParseLongHorizon(SimulationSetup* setup) {
     o.terminal.kind = transcription::TerminalKind::kStationKeepingSets;
     o.terminal.facets_out_of_plane = o.terminal.facets_cone_plus = o.terminal.facets_cone_minus =
         facets;
-    o.terminal_in_receding = o.mode == transcription::HorizonMode::kReceding;
+    o.terminal_in_receding = o.mode == planning::HorizonMode::kReceding;
   } else {
     o.terminal = transcription::TerminalSpec{};
   }
@@ -132,7 +132,7 @@ void ParseLongHorizon(SimulationSetup* setup) {
       const int idx = Wrap(where, [&] { return thr.IndexOf(spec.thrusters[i]); });
       off.push_back(idx);
       if (spec.opposite_also_off) {
-        off.push_back(Wrap(where, [&] { return transcription::OppositeThruster(thr, idx); }));
+        off.push_back(Wrap(where, [&] { return planning::OppositeThruster(thr, idx); }));
       }
     }
     for (int idx : off) {
@@ -153,7 +153,7 @@ void ParseLongHorizon(SimulationSetup* setup) {
 }  // namespace simulate_detail
 
 using namespace simulate_detail;
-using transcription::CycleRecord;
+using planning::CycleRecord;
 
 // ---------------------------------------------------------------------------
 

@@ -248,7 +248,7 @@ nlohmann::json ArraySummaryJson(const ProblemContext& ctx, const transcription::
   j["solver_detail"] = sr.detail;
   j["solver_version"] = sr.solver_version;
   j["interrupted"] = interrupted;
-  j["objective_kind"] = std::string(transcription::ToString(ctx.problem->objective.kind));
+  j["objective_kind"] = std::string(ToString(ctx.problem->objective.kind));
   j["objective"] = sr.has_solution() ? Num(sr.objective) : nullptr;
   j["best_bound"] = Num(sr.best_bound);
   j["gap"] = Num(sr.gap);

@@ -94,11 +94,11 @@ TEST(SimulateSection, DefaultsAndFields) {
       ScenarioText(R"({"duration_s": 259200, "failures": [{"thrusters": ["NE"], "from_s": 3600,
                        "opposite_also_off": true}]})"),
       "x.json");
-  const transcription::LongHorizonOptions& o = s.options;
+  const planning::LongHorizonOptions& o = s.options;
   EXPECT_DOUBLE_EQ(o.duration_s, 259200);
   EXPECT_DOUBLE_EQ(o.cycle_s, 86400);  // the horizon section's duration
   EXPECT_DOUBLE_EQ(o.step_s, 600);
-  EXPECT_EQ(o.mode, transcription::HorizonMode::kFixed);
+  EXPECT_EQ(o.mode, planning::HorizonMode::kFixed);
   EXPECT_EQ(o.terminal.kind, transcription::TerminalKind::kStationKeepingSets);
   EXPECT_EQ(o.terminal.facets_cone_minus, 16);
   EXPECT_DOUBLE_EQ(o.solve.solve.time_limit_s, 30.0);
@@ -120,7 +120,7 @@ TEST(SimulateSection, DefaultsAndFields) {
                        "cycle_time_limit_s": 5, "cycle_relative_gap": 0.5,
                        "cycle_lp_algorithm": "primal", "timeline_cycle": 2})"),
       "x.json");
-  EXPECT_EQ(r.options.mode, transcription::HorizonMode::kReceding);
+  EXPECT_EQ(r.options.mode, planning::HorizonMode::kReceding);
   EXPECT_EQ(r.options.terminal.kind, transcription::TerminalKind::kFree);  // thesis 5.4
   EXPECT_EQ(r.options.num_cycles(), 6);
   EXPECT_DOUBLE_EQ(r.options.solve.solve.time_limit_s, 5);
@@ -192,15 +192,15 @@ TEST(SimulateSection, ErrorsNameTheField) {
 }
 
 TEST(SimulateCheckpoint, RecordRoundTripIsExact) {
-  transcription::CycleRecord r;
+  planning::CycleRecord r;
   r.index = 4;
   r.start_s = 345600.0;
   r.applied_end_s = 432000.0;
   r.prediction_end_s = 432000.0;
-  r.fallback = transcription::Fallback::kSoftWindow;
+  r.fallback = planning::Fallback::kSoftWindow;
   r.status = milp::SolveStatus::kFeasible;
-  r.attempts.push_back({transcription::Fallback::kNone, milp::SolveStatus::kInfeasible, 1.5, "x"});
-  r.attempts.push_back({transcription::Fallback::kSoftWindow, milp::SolveStatus::kFeasible, 2.5, "y"});
+  r.attempts.push_back({planning::Fallback::kNone, milp::SolveStatus::kInfeasible, 1.5, "x"});
+  r.attempts.push_back({planning::Fallback::kSoftWindow, milp::SolveStatus::kFeasible, 2.5, "y"});
   r.objective = 0.1 + 0.2;  // not representable in few digits
   r.gap = std::nan("");
   r.burns = {{1, 600.0, 1200.0}, {3, 3000.0, 3300.0}};
@@ -212,9 +212,9 @@ TEST(SimulateCheckpoint, RecordRoundTripIsExact) {
   r.initial_state = Eigen::VectorXd::LinSpaced(6, 0.1, 0.7);
   r.final_state = r.initial_state / 3.0;
   const nlohmann::json j = nlohmann::json::parse(CycleRecordJson(r).dump());
-  const transcription::CycleRecord b = CycleRecordFromJson(j, "c");
+  const planning::CycleRecord b = CycleRecordFromJson(j, "c");
   EXPECT_EQ(b.index, 4);
-  EXPECT_EQ(b.fallback, transcription::Fallback::kSoftWindow);
+  EXPECT_EQ(b.fallback, planning::Fallback::kSoftWindow);
   EXPECT_EQ(b.status, milp::SolveStatus::kFeasible);
   ASSERT_EQ(b.attempts.size(), 2u);
   EXPECT_EQ(b.attempts[0].status, milp::SolveStatus::kInfeasible);

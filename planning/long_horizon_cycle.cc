@@ -7,10 +7,10 @@
 #include <limits>
 
 #include "dynamics/propagation.h"
-#include "transcription/internal/long_horizon_cycle.h"
+#include "planning/internal/long_horizon_cycle.h"
 #include "transcription/operations.h"
 
-namespace thrustsched::transcription::internal {
+namespace thrustsched::planning::internal {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -42,7 +42,7 @@ void RecordAccepted(const ScheduleResult& accepted, CycleRecord* rec) {
 void ApplyPlan(const std::vector<Burn>& planned, double applied_end_s,
                const dynamics::ThrusterSet& thrusters, CycleRecord* rec) {
   for (const Burn& b : planned) {
-    if (b.start_s < applied_end_s - kTimeTolerance) {
+    if (b.start_s < applied_end_s - transcription::kTimeTolerance) {
       Burn a = b;
       a.end_s = std::min(a.end_s, applied_end_s);
       rec->burns.push_back(a);
@@ -122,4 +122,4 @@ void ReplayApplied(const ReplaySpec& spec, const ScheduleResult* accepted,
   rec->final_state = rec->sample_states.back();
 }
 
-}  // namespace thrustsched::transcription::internal
+}  // namespace thrustsched::planning::internal

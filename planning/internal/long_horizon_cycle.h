@@ -5,17 +5,20 @@
 //   internal::RecordAccepted(accepted, &rec);
 //   internal::ApplyPlan(accepted.schedule.burns, applied_end_s, thrusters, &rec);
 //   internal::ReplayApplied({...}, &accepted, eci_start, &rec);
-#ifndef THRUSTSCHED_TRANSCRIPTION_INTERNAL_LONG_HORIZON_CYCLE_H_
-#define THRUSTSCHED_TRANSCRIPTION_INTERNAL_LONG_HORIZON_CYCLE_H_
+#ifndef THRUSTSCHED_PLANNING_INTERNAL_LONG_HORIZON_CYCLE_H_
+#define THRUSTSCHED_PLANNING_INTERNAL_LONG_HORIZON_CYCLE_H_
 
 #include <vector>
 
 #include "dynamics/geo_simulator.h"
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 #include "transcription/problem.h"
 #include "transcription/solve.h"
 
-namespace thrustsched::transcription::internal {
+namespace thrustsched::planning::internal {
+
+using transcription::Schedule;
+using transcription::WindowSpec;
 
 /// Status, objective, bound, gap and the checker's linear verdict of the
 /// accepted schedule into *rec.
@@ -45,6 +48,6 @@ struct ReplaySpec {
 void ReplayApplied(const ReplaySpec& spec, const ScheduleResult* accepted,
                    const dynamics::Vector6d& eci_start, CycleRecord* rec);
 
-}  // namespace thrustsched::transcription::internal
+}  // namespace thrustsched::planning::internal
 
-#endif  // THRUSTSCHED_TRANSCRIPTION_INTERNAL_LONG_HORIZON_CYCLE_H_
+#endif  // THRUSTSCHED_PLANNING_INTERNAL_LONG_HORIZON_CYCLE_H_

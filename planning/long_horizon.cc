@@ -1,4 +1,4 @@
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,10 +9,15 @@
 
 #include "dynamics/geo_model.h"
 #include "dynamics/propagation.h"
-#include "transcription/internal/long_horizon_cycle.h"
+#include "planning/internal/long_horizon_cycle.h"
 #include "transcription/schedule_milp.h"
 
-namespace thrustsched::transcription {
+namespace thrustsched::planning {
+
+using transcription::BoundaryHistory;
+using transcription::ForcedOff;
+using transcription::InputMode;
+using transcription::kTimeTolerance;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -630,4 +635,4 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   return rec;
 }
 
-}  // namespace thrustsched::transcription
+}  // namespace thrustsched::planning

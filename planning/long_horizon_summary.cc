@@ -1,12 +1,12 @@
 // The totals and distributions of a long-horizon run (LongHorizonSummary,
-// transcription/long_horizon.h).
+// planning/long_horizon.h).
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
-namespace thrustsched::transcription {
+namespace thrustsched::planning {
 
 Distribution Distribute(std::vector<double> values) {
   values.erase(std::remove_if(values.begin(), values.end(),
@@ -90,4 +90,4 @@ LongHorizonSummary Summarise(const std::vector<CycleRecord>& cycles,
   return s;
 }
 
-}  // namespace thrustsched::transcription
+}  // namespace thrustsched::planning

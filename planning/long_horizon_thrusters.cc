@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
-namespace thrustsched::transcription {
+namespace thrustsched::planning {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -84,4 +84,4 @@ Controllability CheckControllability(const dynamics::ThrusterSet& thrusters,
   return c;
 }
 
-}  // namespace thrustsched::transcription
+}  // namespace thrustsched::planning
