@@ -286,8 +286,8 @@ int RunSolve(const SolveArgs& a) {
   // The best incumbent seen so far: progress reports between incumbents may
   // carry NaN for it, and the line should still show it.
   auto best = std::make_shared<double>(std::nan(""));
-  opt.milp.progress = [quiet, best, &err](const milp::SolveProgress& p) {
-    InterruptForTestAtIncumbent(p);
+  opt.milp.progress = [quiet, best, &err, hook = a.hooks.on_progress](const milp::SolveProgress& p) {
+    if (hook) hook(p);
     if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
     if (quiet || p.wall_seconds < 3.0) return;
     err << "  [" << Secs(p.wall_seconds) << "] " << ProgressLine(p, *best) << "\n";

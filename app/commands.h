@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/geo_products.h"
+#include "app/run_hooks.h"
 #include "app/scenario.h"
 
 namespace thrustsched::app {
@@ -37,6 +38,7 @@ struct SolveArgs {
   bool force = false;  // replace an earlier run's files in out_dir
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
+  RunHooks hooks;             // observers (tests, embedding programs): app/run_hooks.h
 };
 int RunSolve(const SolveArgs& args);
 

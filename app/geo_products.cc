@@ -257,7 +257,7 @@ Opm BuildManeuverOpm(const Scenario& s, const std::vector<ReplayLeg>& legs) {
   return o;
 }
 
-ReplayLeg CycleReplayLeg(const transcription::CycleRecord& c, double step_s) {
+ReplayLeg CycleReplayLeg(const planning::CycleRecord& c, double step_s) {
   ReplayLeg leg;
   leg.start_s = c.start_s;
   leg.end_s = c.applied_end_s;

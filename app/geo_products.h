@@ -25,7 +25,7 @@
 #include "app/ccsds_opm.h"
 #include "app/scenario.h"
 #include "dynamics/orbital_elements.h"
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 #include "transcription/operations.h"
 
 namespace thrustsched::app {
@@ -83,7 +83,7 @@ Opm BuildManeuverOpm(const Scenario& s, const std::vector<ReplayLeg>& legs);
 
 /// The leg a finished cycle of a year simulation flew: from its true state at
 /// the cycle start to the end of its applied part, data lines every `step_s`.
-ReplayLeg CycleReplayLeg(const transcription::CycleRecord& cycle, double step_s);
+ReplayLeg CycleReplayLeg(const planning::CycleRecord& cycle, double step_s);
 
 /// The CCSDS files a command was asked for (--oem FILE, --opm-maneuvers FILE).
 struct FlightDynamicsFiles {

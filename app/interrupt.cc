@@ -83,8 +83,8 @@ void InterruptWatcher::Watch() {
   }
 }
 
-void InterruptForTestAtIncumbent(const milp::SolveProgress& p) {
-  if (!p.new_incumbent || std::getenv("THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT") == nullptr) return;
+void InterruptSelfAtFirstIncumbent(const milp::SolveProgress& p) {
+  if (!p.new_incumbent) return;
   if (g_test_interrupt_sent.exchange(true)) return;
   kill(getpid(), SIGINT);
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);

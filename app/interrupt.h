@@ -55,12 +55,12 @@ class InterruptWatcher {
   std::thread thread_;
 };
 
-/// Test hook, for a deterministic Ctrl-C test: when the environment variable
-/// THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT is set, the first new incumbent
-/// reported by `p` sends SIGINT to this process and waits (up to 10 s) until
-/// the watcher has raised the flag, so the solve is interrupted right there,
-/// mid-search, through the same path as a real Ctrl-C. Otherwise does nothing.
-void InterruptForTestAtIncumbent(const milp::SolveProgress& p);
+/// A progress hook (RunHooks::on_progress) for a deterministic Ctrl-C test:
+/// the first new incumbent reported sends SIGINT to this process and waits
+/// (up to 10 s) until the watcher has raised the flag, so the solve is
+/// interrupted right there, mid-search, through the same path as a real
+/// Ctrl-C. Later reports do nothing.
+void InterruptSelfAtFirstIncumbent(const milp::SolveProgress& p);
 
 }  // namespace thrustsched::app
 

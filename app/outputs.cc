@@ -395,8 +395,8 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   }
   j["incumbents"] = inc;
   j["scheme"] = std::string(dynamics::ToString(s.build.discretisation.scheme));
-  j["formulation"] = std::string(transcription::ToString(s.build.formulation));
-  j["encoding"] = std::string(transcription::ToString(s.build.encoding));
+  j["formulation"] = std::string(ToString(s.build.formulation));
+  j["encoding"] = std::string(ToString(s.build.encoding));
   j["threads"] = s.solve.threads;
   j["time_limit_s"] = FiniteOrNull(s.solve.time_limit_s);
   j["relative_gap"] = s.solve.relative_gap;

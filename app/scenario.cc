@@ -1,3 +1,7 @@
+// Scenario files (JSON) into a ScheduleProblem and its options. One file on
+// purpose, ~700 lines: every section of the format (model, thrusters, rules,
+// window, terminal, solver) is read by the same field-checking helpers, in the
+// order data/scenarios/README.md documents them, so a field is found in one place.
 #include "app/scenario.h"
 
 #include "app/conjunction_section.h"

@@ -1,6 +1,6 @@
 // `thrustsched simulate`: a long station-keeping simulation (thesis ch. 5) of
 // chained cycle MILPs closed through the nonlinear GEO model
-// (transcription/long_horizon.h), driven by the "long_horizon" section of a
+// (planning/long_horizon.h), driven by the "long_horizon" section of a
 // GEO scenario file (fields in data/scenarios/README.md, "long_horizon").
 //
 //   app::SimulateArgs a;
@@ -13,7 +13,7 @@
 // with the replay, and checkpoint.json rewritten atomically with the exact
 // true state and every cycle's record); `resume` continues from the
 // checkpoint and gives the same files as an uninterrupted run (see the
-// determinism note in transcription/long_horizon.h). Ctrl-C stops the
+// determinism note in planning/long_horizon.h). Ctrl-C stops the
 // current cycle's solve and exits without recording that cycle.
 #ifndef THRUSTSCHED_APP_SIMULATE_H_
 #define THRUSTSCHED_APP_SIMULATE_H_
@@ -26,8 +26,9 @@
 #include <nlohmann/json.hpp>
 
 #include "app/geo_products.h"
+#include "app/run_hooks.h"
 #include "app/scenario.h"
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
 namespace thrustsched::app {
 
@@ -53,15 +54,18 @@ struct SimulateArgs {
   const std::atomic<bool>* interrupt = nullptr;
   /// Called after each finished cycle (from the calling thread) with its
   /// record, the number of cycles done and the number this run will reach.
-  std::function<void(const transcription::CycleRecord&, int done, int target)> on_cycle;
+  std::function<void(const planning::CycleRecord&, int done, int target)> on_cycle;
   /// False: nothing is written to stdout (the human summary).
   bool print_summary = true;
+  /// Observers for tests and embedding programs (app/run_hooks.h): every
+  /// solver progress report, and the start of each cycle's solve.
+  RunHooks hooks;
 };
 
 /// Exit codes: 0 every requested cycle ran (fallbacks included: see year.json),
 /// 2 bad input (scenario, section, checkpoint of another scenario, a folder
 ///   holding an earlier run without --resume or --force),
-/// 4 interrupted (resume with --resume), 1 internal error.
+/// 4 interrupted (kExitInterrupted: resume with --resume), 1 internal error.
 int RunSimulate(const SimulateArgs& args);
 
 /// A failure entry of long_horizon.failures, as written in the scenario.
@@ -76,7 +80,7 @@ struct FailureSpec {
 /// The parsed "long_horizon" section and the matching library inputs.
 struct SimulationSetup {
   Scenario scenario;
-  transcription::LongHorizonOptions options;
+  planning::LongHorizonOptions options;
   std::vector<FailureSpec> failures;
   double trajectory_sample_s = 3600.0;  // spacing of trajectory.csv (s)
   int timeline_cycle = -1;              // cycle (0-based) of timeline.svg; -1: busiest
@@ -90,17 +94,17 @@ SimulationSetup LoadSimulation(const std::string& path);
 SimulationSetup ParseSimulationText(const std::string& text, const std::string& source);
 
 /// One cycle as stored in checkpoint.json (no replay samples), and back.
-nlohmann::json CycleRecordJson(const transcription::CycleRecord& record);
+nlohmann::json CycleRecordJson(const planning::CycleRecord& record);
 /// @throws ScenarioError naming the field on malformed input.
-transcription::CycleRecord CycleRecordFromJson(const nlohmann::json& json, const std::string& path);
+planning::CycleRecord CycleRecordFromJson(const nlohmann::json& json, const std::string& path);
 
 /// Header and row of cycles.csv.
 std::string CyclesCsvHeader();
-std::string CyclesCsvRow(const transcription::CycleRecord& record, const std::string& epoch);
+std::string CyclesCsvRow(const planning::CycleRecord& record, const std::string& epoch);
 
 /// year.json content.
 nlohmann::json YearJson(const SimulationSetup& setup,
-                        const std::vector<transcription::CycleRecord>& cycles,
+                        const std::vector<planning::CycleRecord>& cycles,
                         int cycles_total, double this_run_wall_seconds);
 
 }  // namespace thrustsched::app

@@ -1,3 +1,7 @@
+// The scheduling MILP of a ScheduleProblem. One file on purpose, ~700 lines:
+// the columns, the dynamics rows (sparse or condensed, Gazzino 2018 (4.50)),
+// the window, the terminal set and the objective share one index layout
+// (ScheduleMilp's column maps), which splitting would spread over files.
 #include "transcription/schedule_milp.h"
 
 #include <algorithm>

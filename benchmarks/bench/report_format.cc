@@ -34,6 +34,12 @@ std::string Sec(double v) {
   return buf;
 }
 
+std::string Fixed1(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.1f", v);
+  return buf;
+}
+
 std::string Pct(double v) {
   if (!std::isfinite(v)) return "-";
   char buf[64];

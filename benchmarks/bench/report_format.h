@@ -16,6 +16,8 @@ namespace thrustsched::bench {
 std::string G(double v, int sig = 4);
 /// Seconds with a precision that suits their size; "-" for NaN, "not reached" for inf.
 std::string Sec(double v);
+/// One decimal, fixed ("130.0"), as the thesis prints its yearly figures.
+std::string Fixed1(double v);
 /// A fraction as a percentage with two decimals ("-" when not finite).
 std::string Pct(double v);
 /// Scientific notation with three digits ("-" for NaN, "0" for 0).

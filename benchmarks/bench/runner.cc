@@ -404,8 +404,8 @@ Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
   r.Set("target_gap_s", spec.target_gap_s);
   r.Set("model", std::string(app::ToString(s.model_type)));
   r.Set("scheme", std::string(dynamics::ToString(s.build.discretisation.scheme)));
-  r.Set("formulation", std::string(transcription::ToString(s.build.formulation)));
-  r.Set("encoding", std::string(transcription::ToString(s.build.encoding)));
+  r.Set("formulation", std::string(ToString(s.build.formulation)));
+  r.Set("encoding", std::string(ToString(s.build.encoding)));
   r.Set("step_s", s.step_s);
   r.Set("horizon_s", s.problem.horizon_s());
   r.Set("n_thrusters", s.problem.thrusters.size());

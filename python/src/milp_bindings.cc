@@ -134,7 +134,7 @@ int ThrusterIndex(const BuiltSchedule& b, const py::handle& thruster) {
 void RequireSparse(const BuiltSchedule& b) {
   if (b.milp->options().formulation != transcription::Formulation::kSparse) {
     throw std::invalid_argument("state columns exist in the sparse formulation only (this MILP is " +
-                                std::string(transcription::ToString(b.milp->options().formulation)) + ")");
+                                std::string(ToString(b.milp->options().formulation)) + ")");
   }
 }
 
@@ -429,7 +429,7 @@ void BindBuilt(py::module_& m) {
       .def_property_readonly("num_nonzeros", [](const BuiltSchedule& b) { return b.milp->lp().num_nonzeros(); })
       .def_property_readonly("objective_step", [](const BuiltSchedule& b) { return b.milp->objective_step(); })
       .def_property_readonly("formulation", [](const BuiltSchedule& b) {
-        return std::string(transcription::ToString(b.milp->options().formulation));
+        return std::string(ToString(b.milp->options().formulation));
       })
       .def_property_readonly("state_scale", [](const BuiltSchedule& b) {
         const Eigen::VectorXd s = StateScale(b);

@@ -161,7 +161,7 @@ py::dict ExportScenario(const ScenarioPtr& s, const std::string& path, bool obfu
   }
   py::dict d = BuildStatsDict(stats);
   d["path"] = path;
-  d["objective_kind"] = std::string(transcription::ToString(sc.problem.objective.kind));
+  d["objective_kind"] = std::string(ToString(sc.problem.objective.kind));
   return d;
 }
 
@@ -362,7 +362,7 @@ void BindScenario(py::module_& m) {
         return py::str(s.geo->epoch);
       })
       .def_property_readonly("objective_kind", [](const app::Scenario& s) {
-        return std::string(transcription::ToString(s.problem.objective.kind));
+        return std::string(ToString(s.problem.objective.kind));
       })
       .def_property_readonly("mean_motion_rad_s", [](const app::Scenario& s) -> py::object {
         if (const auto* h = dynamic_cast<const dynamics::HcwModel*>(s.problem.model.get())) {

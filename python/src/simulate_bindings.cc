@@ -43,11 +43,11 @@ py::tuple Simulate(const std::string& text, const std::string& source, const std
   a.command_line = "python: thrustsched.simulate";
   RunInterruptible(job, [a, code, j]() mutable {
     a.interrupt = &j->stop;
-    a.on_cycle = [j](const transcription::CycleRecord& c, int done, int target) {
+    a.on_cycle = [j](const planning::CycleRecord& c, int done, int target) {
       const double consumption = c.consumption_l1_m_s, gap = c.gap, solve = c.solve_seconds;
       const double lat = c.max_abs_lat_deg, lon = c.max_abs_lon_deg, out = c.time_outside_window_s;
       const std::string status = StatusName(c.status);
-      const std::string fallback(transcription::ToString(c.fallback));
+      const std::string fallback(ToString(c.fallback));
       const int index = c.index;
       j->Post([=](const py::handle& cb) {
         py::dict d;

@@ -13,10 +13,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -92,16 +94,18 @@ inline std::string TempDir(const std::string& tag) {
   return p.string();
 }
 
-/// Runs `program args...`; stdout/stderr captured through files in a temp
-/// dir. `on_started(pid)` is called in the parent after the fork (e.g. to send
-/// a signal later). Kills the child with SIGKILL after `timeout_s`.
-inline RunResult RunProgram(const std::string& program, const std::vector<std::string>& args,
-                            double timeout_s = 300.0,
-                            const std::function<void(pid_t, const std::string& err_path)>&
-                                on_started = nullptr) {
+/// Runs `child()` in a forked child process whose stdout/stderr go to files
+/// (read back into the result) and stdin is /dev/null; `child` must end the
+/// process (exec or _exit). `on_started(pid, err_path)` is called in the
+/// parent after the fork (e.g. to send a signal later). Kills the child with
+/// SIGKILL after `timeout_s`.
+inline RunResult RunForked(const std::function<void()>& child, double timeout_s,
+                           const std::function<void(pid_t, const std::string& err_path)>&
+                               on_started = nullptr) {
   const std::string dir = TempDir("run");
   const std::string out_path = dir + "/stdout", err_path = dir + "/stderr";
   RunResult r;
+  std::fflush(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
     const int o = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -110,11 +114,7 @@ inline RunResult RunProgram(const std::string& program, const std::vector<std::s
     dup2(o, 1);
     dup2(e, 2);
     dup2(in, 0);
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(program.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execvp(program.c_str(), argv.data());
+    child();
     _exit(127);
   }
   if (on_started) on_started(pid, err_path);
@@ -142,6 +142,37 @@ inline RunResult RunProgram(const std::string& program, const std::vector<std::s
   r.err = ReadFile(err_path);
   std::filesystem::remove_all(dir);
   return r;
+}
+
+/// Runs `program args...` (see RunForked).
+inline RunResult RunProgram(const std::string& program, const std::vector<std::string>& args,
+                            double timeout_s = 300.0,
+                            const std::function<void(pid_t, const std::string& err_path)>&
+                                on_started = nullptr) {
+  return RunForked(
+      [&] {
+        std::vector<char*> argv;
+        argv.push_back(const_cast<char*>(program.c_str()));
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execvp(program.c_str(), argv.data());
+      },
+      timeout_s, on_started);
+}
+
+/// Runs `body()` in a forked child and exits with what it returns (the
+/// streams flushed first): for in-process runs of the CLI with injected
+/// hooks (app/cli.h), whose crashes and signals stay in the child.
+inline RunResult RunInChild(const std::function<int()>& body, double timeout_s = 300.0) {
+  return RunForked(
+      [&] {
+        const int code = body();
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        _exit(code);
+      },
+      timeout_s);
 }
 
 #ifdef THRUSTSCHED_CLI

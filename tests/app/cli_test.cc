@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "app/cli.h"
+#include "app/interrupt.h"
 #include "tests/app/cli_runner.h"
 
 namespace thrustsched::testing {
@@ -259,17 +261,23 @@ TEST(Cli, NoSolutionWithinTheTimeLimitExitsFour) {
 }
 
 // Ctrl-C stops the solve like a time limit; the best schedule is checked and written.
-// The SIGINT is sent by the CLI to itself at its first incumbent (test hook
-// THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT, app/interrupt.h), so it always lands
-// mid-search whatever the machine's speed, and goes through the same watcher as
-// a real Ctrl-C. Without it the solve proves optimality (gap 0). CBC alone
-// (--no-search): the search proves this case optimal at its first incumbent.
+// The SIGINT is sent by the CLI to itself at its first incumbent (injected
+// progress hook, app/run_hooks.h; the CLI runs in a child process), so it
+// always lands mid-search whatever the machine's speed, and goes through the
+// same watcher as a real Ctrl-C. Without it the solve proves optimality (gap
+// 0). CBC alone (--no-search): the search proves this case optimal at its
+// first incumbent.
 TEST(Cli, SigintKeepsTheBestSchedule) {
   const std::string dir = TempDir("sigint");
-  const RunResult r = RunProgram(
-      "env", {"THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT=1", THRUSTSCHED_CLI, "solve",
-              kTestData + "geo_2day_5min.json", "--out", dir, "--gap", "0", "--time-limit", "250",
-              "--no-search"},
+  thrustsched::app::RunHooks hooks;
+  hooks.on_progress = thrustsched::app::InterruptSelfAtFirstIncumbent;
+  const RunResult r = thrustsched::testing::RunInChild(
+      [&] {
+        return thrustsched::app::RunCli({"thrustsched", "solve", kTestData + "geo_2day_5min.json",
+                                         "--out", dir, "--gap", "0", "--time-limit", "250",
+                                         "--no-search"},
+                                        hooks);
+      },
       280.0);
   ASSERT_TRUE(r.exited) << r.Describe();
   EXPECT_EQ(r.exit_code, 0) << r.Describe();

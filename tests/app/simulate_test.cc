@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "app/cli.h"
+#include "app/interrupt.h"
 #include "app/outputs.h"
 #include "tests/app/cli_runner.h"
 #include "transcription/checker.h"
@@ -92,11 +94,11 @@ TEST(SimulateSection, DefaultsAndFields) {
       ScenarioText(R"({"duration_s": 259200, "failures": [{"thrusters": ["NE"], "from_s": 3600,
                        "opposite_also_off": true}]})"),
       "x.json");
-  const transcription::LongHorizonOptions& o = s.options;
+  const planning::LongHorizonOptions& o = s.options;
   EXPECT_DOUBLE_EQ(o.duration_s, 259200);
   EXPECT_DOUBLE_EQ(o.cycle_s, 86400);  // the horizon section's duration
   EXPECT_DOUBLE_EQ(o.step_s, 600);
-  EXPECT_EQ(o.mode, transcription::HorizonMode::kFixed);
+  EXPECT_EQ(o.mode, planning::HorizonMode::kFixed);
   EXPECT_EQ(o.terminal.kind, transcription::TerminalKind::kStationKeepingSets);
   EXPECT_EQ(o.terminal.facets_cone_minus, 16);
   EXPECT_DOUBLE_EQ(o.solve.milp.time_limit_s, 30.0);
@@ -118,7 +120,7 @@ TEST(SimulateSection, DefaultsAndFields) {
                        "cycle_time_limit_s": 5, "cycle_relative_gap": 0.5,
                        "cycle_lp_algorithm": "primal", "timeline_cycle": 2})"),
       "x.json");
-  EXPECT_EQ(r.options.mode, transcription::HorizonMode::kReceding);
+  EXPECT_EQ(r.options.mode, planning::HorizonMode::kReceding);
   EXPECT_EQ(r.options.terminal.kind, transcription::TerminalKind::kFree);  // thesis 5.4
   EXPECT_EQ(r.options.num_cycles(), 6);
   EXPECT_DOUBLE_EQ(r.options.solve.milp.time_limit_s, 5);
@@ -190,15 +192,15 @@ TEST(SimulateSection, ErrorsNameTheField) {
 }
 
 TEST(SimulateCheckpoint, RecordRoundTripIsExact) {
-  transcription::CycleRecord r;
+  planning::CycleRecord r;
   r.index = 4;
   r.start_s = 345600.0;
   r.applied_end_s = 432000.0;
   r.prediction_end_s = 432000.0;
-  r.fallback = transcription::Fallback::kSoftWindow;
+  r.fallback = planning::Fallback::kSoftWindow;
   r.status = milp::SolveStatus::kFeasible;
-  r.attempts.push_back({transcription::Fallback::kNone, milp::SolveStatus::kInfeasible, 1.5, "x"});
-  r.attempts.push_back({transcription::Fallback::kSoftWindow, milp::SolveStatus::kFeasible, 2.5, "y"});
+  r.attempts.push_back({planning::Fallback::kNone, milp::SolveStatus::kInfeasible, 1.5, "x"});
+  r.attempts.push_back({planning::Fallback::kSoftWindow, milp::SolveStatus::kFeasible, 2.5, "y"});
   r.objective = 0.1 + 0.2;  // not representable in few digits
   r.gap = std::nan("");
   r.burns = {{1, 600.0, 1200.0}, {3, 3000.0, 3300.0}};
@@ -210,9 +212,9 @@ TEST(SimulateCheckpoint, RecordRoundTripIsExact) {
   r.initial_state = Eigen::VectorXd::LinSpaced(6, 0.1, 0.7);
   r.final_state = r.initial_state / 3.0;
   const nlohmann::json j = nlohmann::json::parse(CycleRecordJson(r).dump());
-  const transcription::CycleRecord b = CycleRecordFromJson(j, "c");
+  const planning::CycleRecord b = CycleRecordFromJson(j, "c");
   EXPECT_EQ(b.index, 4);
-  EXPECT_EQ(b.fallback, transcription::Fallback::kSoftWindow);
+  EXPECT_EQ(b.fallback, planning::Fallback::kSoftWindow);
   EXPECT_EQ(b.status, milp::SolveStatus::kFeasible);
   ASSERT_EQ(b.attempts.size(), 2u);
   EXPECT_EQ(b.attempts[0].status, milp::SolveStatus::kInfeasible);
@@ -445,13 +447,14 @@ TEST(SimulateCli, BadInputExitsTwo) {
 // runs the whole scenario.
 TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
   const std::string dir = TempDir("sim_int");
-  // The CLI interrupts itself at the first incumbent of cycle 1 (test hook
-  // THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT, app/interrupt.h): a Ctrl-C that
-  // always lands inside the first solve, through the real SIGINT path.
-  const auto r = thrustsched::testing::RunProgram(
-      "env", {"THRUSTSCHED_TEST_INTERRUPT_AT_INCUMBENT=1", THRUSTSCHED_CLI, "simulate", kScenario,
-              "--out", dir, "--no-plots"},
-      300);
+  // The CLI interrupts itself at the first incumbent of cycle 1 (injected
+  // progress hook, app/run_hooks.h): a Ctrl-C that always lands inside the
+  // first solve, through the real SIGINT path, in a child process.
+  RunHooks hooks;
+  hooks.on_progress = InterruptSelfAtFirstIncumbent;
+  const auto r = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots"}, hooks);
+  });
   ASSERT_TRUE(r.exited) << r.Describe();
   ASSERT_EQ(r.exit_code, 4) << r.Describe();
   EXPECT_NE(r.err.find("--resume"), std::string::npos) << r.err;
@@ -472,11 +475,15 @@ TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
 // same cycle stops with an error instead of looping.
 TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
   const std::string dir = TempDir("sim_crash");
-  // Cycle 2 dies (test hook THRUSTSCHED_TEST_DIE_IN_CYCLE: std::abort inside the cycle).
-  const auto r = thrustsched::testing::RunProgram(
-      "env", {"THRUSTSCHED_TEST_DIE_IN_CYCLE=2", THRUSTSCHED_CLI, "simulate", kScenario, "--out",
-              dir, "--no-plots", "--cycles", "2"},
-      300);
+  // Cycle 2 dies (injected hook: std::abort inside the cycle's crash guard).
+  RunHooks die_in_cycle_2;
+  die_in_cycle_2.in_cycle = [](int cycle) {
+    if (cycle == 2) std::abort();
+  };
+  const auto r = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2"},
+                  die_in_cycle_2);
+  });
   ASSERT_FALSE(r.exited && r.exit_code == 0) << r.Describe();
   ASSERT_TRUE(fs::exists(dir + "/in_progress.json")) << r.Describe();
   const nlohmann::json mark = ReadJson(dir + "/in_progress.json");
@@ -485,10 +492,11 @@ TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
   EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 2u);  // header + cycle 1
 
   // The same death again, now in the preprocessing-off attempt...
-  const auto r2 = thrustsched::testing::RunProgram(
-      "env", {"THRUSTSCHED_TEST_DIE_IN_CYCLE=2", THRUSTSCHED_CLI, "simulate", kScenario, "--out",
-              dir, "--no-plots", "--cycles", "2", "--resume"},
-      300);
+  const auto r2 = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2",
+                   "--resume"},
+                  die_in_cycle_2);
+  });
   ASSERT_FALSE(r2.exited && r2.exit_code == 0) << r2.Describe();
   EXPECT_NE(r2.err.find("preprocessing off"), std::string::npos) << r2.err;
   EXPECT_EQ(ReadJson(dir + "/in_progress.json")["solver_preprocessing_off"], true);

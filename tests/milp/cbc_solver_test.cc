@@ -1,6 +1,8 @@
 // Tests of the CBC/CLP backend (cbc_solver.h) against the hand-derived
 // catalogue, LP duals checked by perturbation, limits, callbacks, MIP starts,
-// determinism, concurrency and silence.
+// determinism, concurrency and silence. One file on purpose, ~700 lines: one
+// test executable per backend, so that its child-process and interrupt cases
+// share the same fixtures and LeakSanitizer suppression.
 #include "milp/cbc_solver.h"
 
 #include <unistd.h>

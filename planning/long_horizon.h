@@ -48,15 +48,15 @@
 //   transcription::ScheduleProblem base;        // model, thrusters, rules, window, objective
 //   base.model = geo;  base.thrusters = dynamics::ThrusterSet::Anzel4(0.265, 4850, 2005);
 //   ...
-//   transcription::LongHorizonOptions o;
+//   planning::LongHorizonOptions o;
 //   o.duration_s = 365 * 86400.0;  o.cycle_s = 7 * 86400.0;  o.step_s = 300;
 //   o.terminal.kind = transcription::TerminalKind::kStationKeepingSets;
 //   o.solve.milp.time_limit_s = 30;  o.solve.milp.relative_gap = 0.01;
-//   transcription::LongHorizonSimulation run(base, o, sim, milp::MakeCbcSolver());
-//   transcription::LongHorizonState state = run.InitialState();
-//   std::vector<transcription::CycleRecord> cycles;
+//   planning::LongHorizonSimulation run(base, o, sim, milp::MakeCbcSolver());
+//   planning::LongHorizonState state = run.InitialState();
+//   std::vector<planning::CycleRecord> cycles;
 //   while (state.next_cycle < run.num_cycles()) cycles.push_back(run.RunCycle(&state));
-//   transcription::LongHorizonSummary year = transcription::Summarize(cycles, base.thrusters);
+//   planning::LongHorizonSummary year = planning::Summarize(cycles, base.thrusters);
 //
 // Determinism: with threads = 1, cycles that reach the requested gap (or
 // prove optimality) before the time limit give the same schedules on every
@@ -64,8 +64,8 @@
 // A cycle stopped by the wall-clock time limit may differ between runs; set
 // milp::SolveOptions::max_nodes for a node budget instead (deterministic).
 // Units: SI; times are seconds since the model epoch; angles reported in deg.
-#ifndef THRUSTSCHED_TRANSCRIPTION_LONG_HORIZON_H_
-#define THRUSTSCHED_TRANSCRIPTION_LONG_HORIZON_H_
+#ifndef THRUSTSCHED_PLANNING_LONG_HORIZON_H_
+#define THRUSTSCHED_PLANNING_LONG_HORIZON_H_
 
 #include <limits>
 #include <memory>
@@ -82,6 +82,19 @@
 #include "transcription/solve.h"
 
 namespace thrustsched::transcription {
+class ScheduleMilp;
+}  // namespace thrustsched::transcription
+
+namespace thrustsched::planning {
+
+// The one-MILP vocabulary this loop plans with (transcription/).
+using transcription::Burn;
+using transcription::ScheduleMilp;
+using transcription::ScheduleProblem;
+using transcription::ScheduleResult;
+using transcription::SolveScheduleOptions;
+using transcription::TerminalKind;
+using transcription::TerminalSpec;
 
 enum class HorizonMode { kFixed, kReceding };
 std::string_view ToString(HorizonMode mode);
@@ -365,6 +378,21 @@ class LongHorizonSimulation {
   CycleRecord RunCycle(LongHorizonState* state) const;
 
  private:
+  // An attempt of a cycle: the nominal problem or a fallback, and whether
+  // CBC's preprocessing and presolve are off (`raw`).
+  struct Level {
+    Fallback level;
+    bool raw;
+  };
+  /// The attempts of a cycle in order of escalation.
+  std::vector<Level> Levels(bool controllable, const ScheduleProblem& nominal) const;
+  /// Builds and solves one attempt; fills *attempt and the build/check times of *rec.
+  ScheduleResult Attempt(const ScheduleProblem& p, const Level& level, int control_node,
+                         CycleAttempt* attempt, CycleRecord* rec) const;
+  /// Runs the attempts until one has a schedule (then improves it); false
+  /// when none has or the run was interrupted (rec->interrupted).
+  bool SolveCycle(const ScheduleProblem& nominal, bool controllable, int control_node,
+                  ScheduleResult* accepted, CycleRecord* rec) const;
   /// The cycle MILP of `p` (with the receding mode's control-boundary rows).
   ScheduleMilp BuildCycleMilp(const ScheduleProblem& p, int control_node) const;
   /// The improvement pass (LongHorizonOptions::improve_above_gap) on an
@@ -380,6 +408,6 @@ class LongHorizonSimulation {
   int num_cycles_ = 0;
 };
 
-}  // namespace thrustsched::transcription
+}  // namespace thrustsched::planning
 
-#endif  // THRUSTSCHED_TRANSCRIPTION_LONG_HORIZON_H_
+#endif  // THRUSTSCHED_PLANNING_LONG_HORIZON_H_

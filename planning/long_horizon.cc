@@ -1,4 +1,4 @@
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,22 +13,22 @@
 #include "common/timing.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/propagation.h"
+#include "planning/internal/long_horizon_cycle.h"
 #include "transcription/schedule_milp.h"
 
-namespace thrustsched::transcription {
+namespace thrustsched::planning {
 
-using common::Since;
+using common::Clock;
 using common::Fail;
 using common::FormatG;
-
+using common::Since;
+using transcription::BoundaryHistory;
+using transcription::ForcedOff;
+using transcription::InputMode;
+using transcription::kTimeTolerance;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-using common::kRadToDeg;
-constexpr double kDirectionTolerance = 1e-6;
-
-using common::Clock;
 
 double CpuSince(std::clock_t c0) {
   return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
@@ -84,76 +84,6 @@ Fallback ParseFallback(std::string_view name) {
   throw std::invalid_argument(
       "fallback must be one of none, soft_window, soft_window_free_terminal, zero_thrust; got \"" +
       std::string(name) + "\"");
-}
-
-// ---------------------------------------------------------------------------
-// Thruster geometry.
-
-int OppositeThruster(const dynamics::ThrusterSet& thrusters, int thruster) {
-  if (thruster < 0 || thruster >= thrusters.size()) {
-    throw std::invalid_argument("OppositeThruster: thruster index " + std::to_string(thruster) +
-                                " out of range (0.." + std::to_string(thrusters.size() - 1) + ")");
-  }
-  const Eigen::Vector3d d = thrusters.thruster(thruster).direction;
-  int best = -1;
-  double best_r = kInf;
-  for (int j = 0; j < thrusters.size(); ++j) {
-    if (j == thruster) continue;
-    const Eigen::Vector3d s = d + thrusters.thruster(j).direction;
-    if (std::abs(s(1)) > kDirectionTolerance || std::abs(s(2)) > kDirectionTolerance) continue;
-    if (std::abs(s(0)) < best_r) {
-      best_r = std::abs(s(0));
-      best = j;
-    }
-  }
-  if (best < 0) {
-    throw std::invalid_argument("OppositeThruster: no thruster is diametrically opposite to " +
-                                thrusters.thruster(thruster).name +
-                                " (none has its along-track and normal components reversed)");
-  }
-  return best;
-}
-
-ThrusterFaces FacesOf(const dynamics::Thruster& thruster) {
-  const Eigen::Vector3d& d = thruster.direction;
-  ThrusterFaces f;
-  f.north = d(2) < -kDirectionTolerance;
-  f.south = d(2) > kDirectionTolerance;
-  f.east = d(1) < -kDirectionTolerance;
-  f.west = d(1) > kDirectionTolerance;
-  return f;
-}
-
-Controllability CheckControllability(const dynamics::ThrusterSet& thrusters,
-                                     const std::vector<bool>& available) {
-  if (static_cast<int>(available.size()) != thrusters.size()) {
-    throw std::invalid_argument("CheckControllability: available has " +
-                                std::to_string(available.size()) + " entries for " +
-                                std::to_string(thrusters.size()) + " thrusters");
-  }
-  bool plus_n = false, minus_n = false, plus_t = false, minus_t = false;
-  std::string names;
-  for (int i = 0; i < thrusters.size(); ++i) {
-    if (!available[i]) continue;
-    const Eigen::Vector3d& d = thrusters.thruster(i).direction;
-    plus_n = plus_n || d(2) > kDirectionTolerance;
-    minus_n = minus_n || d(2) < -kDirectionTolerance;
-    plus_t = plus_t || d(1) > kDirectionTolerance;
-    minus_t = minus_t || d(1) < -kDirectionTolerance;
-    names += (names.empty() ? "" : ", ") + thrusters.thruster(i).name;
-  }
-  std::vector<std::string> missing;
-  if (!plus_n) missing.push_back("north (+N)");
-  if (!minus_n) missing.push_back("south (-N)");
-  if (!plus_t) missing.push_back("east (+T)");
-  if (!minus_t) missing.push_back("west (-T)");
-  Controllability c;
-  if (missing.empty()) return c;
-  c.controllable = false;
-  c.reason = "uncontrollable: no available thruster pushes ";
-  for (size_t k = 0; k < missing.size(); ++k) c.reason += (k ? ", " : "") + missing[k];
-  c.reason += "; available: " + (names.empty() ? std::string("none") : names);
-  return c;
 }
 
 // ---------------------------------------------------------------------------
@@ -229,91 +159,6 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
   std::string e;
   if (!solve.milp.IsValid(&e)) return Fail(error, "long_horizon.solve: " + e);
   return true;
-}
-
-// ---------------------------------------------------------------------------
-// Statistics.
-
-Distribution Distribute(std::vector<double> values) {
-  values.erase(std::remove_if(values.begin(), values.end(),
-                              [](double v) { return !std::isfinite(v); }),
-               values.end());
-  Distribution d;
-  d.count = static_cast<int>(values.size());
-  if (values.empty()) return d;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  d.median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-  const size_t rank = static_cast<size_t>(std::ceil(0.9 * static_cast<double>(n)));
-  d.p90 = values[std::max<size_t>(rank, 1) - 1];
-  d.max = values.back();
-  double s = 0.0;
-  for (double v : values) s += v;
-  d.mean = s / static_cast<double>(n);
-  return d;
-}
-
-LongHorizonSummary Summarize(const std::vector<CycleRecord>& cycles,
-                             const dynamics::ThrusterSet& thrusters) {
-  LongHorizonSummary s;
-  const int m = thrusters.size();
-  s.on_time_s.assign(m, 0.0);
-  s.thrust_days.assign(m, 0.0);
-  std::vector<double> solve, gap, wall, cpu;
-  for (const CycleRecord& c : cycles) {
-    ++s.cycles;
-    s.simulated_s += c.applied_end_s - c.start_s;
-    s.consumption_l1_m_s += c.consumption_l1_m_s;
-    s.delta_v_m_s += c.delta_v_m_s;
-    s.propellant_kg += c.propellant_kg;
-    s.normal_delta_v_m_s += c.normal_delta_v_m_s;
-    s.burns += static_cast<int>(c.burns.size());
-    for (int i = 0; i < m && i < static_cast<int>(c.on_time_s.size()); ++i) {
-      s.on_time_s[i] += c.on_time_s[i];
-    }
-    s.time_outside_window_s += c.time_outside_window_s;
-    s.max_abs_lat_deg = std::max(s.max_abs_lat_deg, c.max_abs_lat_deg);
-    s.max_abs_lon_deg = std::max(s.max_abs_lon_deg, c.max_abs_lon_deg);
-    if (c.max_window_violation_deg > s.max_window_violation_deg) {
-      s.max_window_violation_deg = c.max_window_violation_deg;
-      s.worst_time_s = c.worst_time_s;
-    }
-    switch (c.fallback) {
-      case Fallback::kNone:
-        break;
-      case Fallback::kSoftWindow:
-        ++s.fallback_soft_window;
-        break;
-      case Fallback::kSoftWindowFreeTerminal:
-        ++s.fallback_free_terminal;
-        break;
-      case Fallback::kZeroThrust:
-        ++s.fallback_zero_thrust;
-        break;
-    }
-    if (!c.controllable) ++s.uncontrollable_cycles;
-    if (c.status == milp::SolveStatus::kFeasible) ++s.time_limited_cycles;
-    s.rules_ok = s.rules_ok && c.rules_ok;
-    solve.push_back(c.solve_seconds);
-    gap.push_back(c.gap);
-    wall.push_back(c.wall_seconds);
-    cpu.push_back(c.cpu_seconds);
-    s.wall_seconds_total += c.wall_seconds;
-    s.cpu_seconds_total += c.cpu_seconds;
-  }
-  for (int i = 0; i < m; ++i) {
-    s.thrust_days[i] = s.on_time_s[i] / common::kSecondsPerDay;
-    const ThrusterFaces f = FacesOf(thrusters.thruster(i));
-    if (f.north) s.north_days += s.thrust_days[i];
-    if (f.south) s.south_days += s.thrust_days[i];
-    if (f.east) s.east_days += s.thrust_days[i];
-    if (f.west) s.west_days += s.thrust_days[i];
-  }
-  s.solve_seconds = Distribute(solve);
-  s.gap = Distribute(gap);
-  s.wall_seconds = Distribute(wall);
-  s.cpu_seconds = Distribute(cpu);
-  return s;
 }
 
 // ---------------------------------------------------------------------------
@@ -615,14 +460,111 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
   }
 }
 
+namespace {
+
+// Thrusters enabled but under an outage during the cycle, as a note.
+std::string OutageNote(const dynamics::ThrusterSet& thrusters, const std::vector<bool>& available) {
+  std::string off;
+  for (int i = 0; i < thrusters.size(); ++i) {
+    if (thrusters.thruster(i).enabled && !available[i]) {
+      off += (off.empty() ? "" : ", ") + thrusters.thruster(i).name;
+    }
+  }
+  return off.empty() ? std::string() : "unavailable (outage): " + off;
+}
+
+}  // namespace
+
+std::vector<LongHorizonSimulation::Level> LongHorizonSimulation::Levels(
+    bool controllable, const ScheduleProblem& nominal) const {
+  // Attempts in order of escalation. An uncontrollable cycle goes straight to
+  // the best-effort problem (the nominal one is infeasible in general).
+  // raw: the nominal problem again with CBC's preprocessing and presolve off
+  // (retry_without_preprocessing), only after a nominal attempt that a limit
+  // stopped without a schedule.
+  std::vector<Level> levels;
+  if (!controllable) return {{Fallback::kSoftWindowFreeTerminal, false}};
+  levels.push_back({Fallback::kNone, false});
+  if (options_.retry_without_preprocessing && options_.solve.milp.presolve) {
+    levels.push_back({Fallback::kNone, true});
+  }
+  levels.push_back({Fallback::kSoftWindow, false});
+  if (nominal.terminal.kind != TerminalKind::kFree) {
+    levels.push_back({Fallback::kSoftWindowFreeTerminal, false});
+  }
+  return levels;
+}
+
+ScheduleResult LongHorizonSimulation::Attempt(const ScheduleProblem& p, const Level& lv,
+                                              int control_node, CycleAttempt* attempt,
+                                              CycleRecord* rec) const {
+  attempt->level = lv.level;
+  ScheduleResult r;
+  try {
+    const Clock::time_point tb = Clock::now();
+    ScheduleMilp milp = BuildCycleMilp(p, control_node);
+    rec->build_seconds += Since(tb);
+    SolveScheduleOptions opt = options_.solve;
+    opt.check.nonlinear.reset();
+    opt.check.nonlinear_default = false;  // replayed below, from the true state
+    if (lv.level == Fallback::kSoftWindowFreeTerminal) {
+      // Zero thrust is feasible here (the window is soft, the end free):
+      // start from it, so that a schedule exists whatever the time limit.
+      opt.warm_start.clear();
+      opt.milp.initial_solution = milp.StartFromBurns({});
+    }
+    if (lv.raw) opt.milp.presolve = false;
+    r = SolveBuilt(milp, *solver_, opt);
+    attempt->status = r.solve.status;
+    attempt->solve_seconds = r.solve.wall_seconds;
+    attempt->detail =
+        std::string(lv.raw ? "retry with CBC preprocessing and presolve off: " : "") +
+        r.solve.detail;
+    for (const std::string& reason : r.infeasibility_reasons) {
+      attempt->detail += (attempt->detail.empty() ? "" : "; ") + reason;
+    }
+    rec->check_seconds += r.check_seconds;
+  } catch (const std::exception& e) {
+    attempt->status = milp::SolveStatus::kError;
+    attempt->detail = e.what();
+  }
+  return r;
+}
+
+bool LongHorizonSimulation::SolveCycle(const ScheduleProblem& nominal, bool controllable,
+                                       int control_node, ScheduleResult* accepted,
+                                       CycleRecord* rec) const {
+  const milp::SolveOptions& so = options_.solve.milp;
+  for (const Level& lv : Levels(controllable, nominal)) {
+    if (lv.raw && rec->attempts.back().status != milp::SolveStatus::kNoSolutionFound) continue;
+    ScheduleProblem p = nominal;
+    if (lv.level != Fallback::kNone) p.window.soft = true;
+    if (lv.level == Fallback::kSoftWindowFreeTerminal) p.terminal = TerminalSpec{};
+    CycleAttempt attempt;
+    ScheduleResult r = Attempt(p, lv, control_node, &attempt, rec);
+    rec->solve_seconds += attempt.solve_seconds;
+    rec->attempts.push_back(attempt);
+    if (Interrupted(so)) {
+      rec->interrupted = true;
+      return false;
+    }
+    if (r.has_schedule()) {
+      *accepted = std::move(r);
+      rec->fallback = lv.level;
+      ImproveAccepted(p, control_node, lv.raw, accepted, rec);
+      if (Interrupted(so)) rec->interrupted = true;
+      return !rec->interrupted;
+    }
+  }
+  return false;
+}
+
 CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   const Clock::time_point t_cycle = Clock::now();
   const std::clock_t cpu_cycle = std::clock();
   const ScheduleProblem nominal = CycleProblem(*state);
   const int k = state->next_cycle;
   const CycleTimes t = Times(k);
-  const int m = base_.thrusters.size();
-  const milp::SolveOptions& so = options_.solve.milp;
 
   CycleRecord rec;
   rec.index = k;
@@ -631,215 +573,43 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   rec.prediction_end_s = t.prediction_end_s;
   rec.eci_start = state->eci;
   rec.initial_state = nominal.initial_state;
-  rec.on_time_s.assign(m, 0.0);
+  rec.on_time_s.assign(base_.thrusters.size(), 0.0);
 
   const std::vector<bool> available = Available(k);
   const Controllability ctrl = CheckControllability(base_.thrusters, available);
   rec.controllable = ctrl.controllable;
   if (!ctrl.controllable) rec.note = ctrl.reason;
-  {
-    std::string off;
-    for (int i = 0; i < m; ++i) {
-      if (base_.thrusters.thruster(i).enabled && !available[i]) {
-        off += (off.empty() ? "" : ", ") + base_.thrusters.thruster(i).name;
-      }
-    }
-    if (!off.empty()) {
-      rec.note += std::string(rec.note.empty() ? "" : "; ") + "unavailable (outage): " + off;
-    }
-  }
+  const std::string outage = OutageNote(base_.thrusters, available);
+  if (!outage.empty()) rec.note += std::string(rec.note.empty() ? "" : "; ") + outage;
 
   // Receding mode: the boundary node of the applied part.
   const int control_node = options_.mode == HorizonMode::kReceding
                                ? Steps(options_.step_s, t.applied_end_s - t.start_s)
                                : -1;
-
-  // Attempts in order of escalation. An uncontrollable cycle goes straight to
-  // the best-effort problem (the nominal one is infeasible in general).
-  // raw: the nominal problem again with CBC's preprocessing and presolve off
-  // (retry_without_preprocessing), only after a nominal attempt that a limit
-  // stopped without a schedule.
-  struct Level {
-    Fallback level;
-    bool raw;
-  };
-  std::vector<Level> levels;
-  if (ctrl.controllable) {
-    levels.push_back({Fallback::kNone, false});
-    if (options_.retry_without_preprocessing && so.presolve) {
-      levels.push_back({Fallback::kNone, true});
-    }
-    levels.push_back({Fallback::kSoftWindow, false});
-    if (nominal.terminal.kind != TerminalKind::kFree) {
-      levels.push_back({Fallback::kSoftWindowFreeTerminal, false});
-    }
-  } else {
-    levels.push_back({Fallback::kSoftWindowFreeTerminal, false});
-  }
-
   ScheduleResult accepted;
-  bool have = false;
-  for (const auto [level, raw] : levels) {
-    if (raw && rec.attempts.back().status != milp::SolveStatus::kNoSolutionFound) continue;
-    ScheduleProblem p = nominal;
-    if (level != Fallback::kNone) p.window.soft = true;
-    if (level == Fallback::kSoftWindowFreeTerminal) p.terminal = TerminalSpec{};
-    CycleAttempt attempt;
-    attempt.level = level;
-    ScheduleResult r;
-    try {
-      const Clock::time_point tb = Clock::now();
-      ScheduleMilp milp = BuildCycleMilp(p, control_node);
-      rec.build_seconds += Since(tb);
-      SolveScheduleOptions opt = options_.solve;
-      opt.check.nonlinear.reset();
-      opt.check.nonlinear_default = false;  // replayed below, from the true state
-      if (level == Fallback::kSoftWindowFreeTerminal) {
-        // Zero thrust is feasible here (the window is soft, the end free):
-        // start from it, so that a schedule exists whatever the time limit.
-        opt.warm_start.clear();
-        opt.milp.initial_solution = milp.StartFromBurns({});
-      }
-      if (raw) opt.milp.presolve = false;
-      r = SolveBuilt(milp, *solver_, opt);
-      attempt.status = r.solve.status;
-      attempt.solve_seconds = r.solve.wall_seconds;
-      attempt.detail = std::string(raw ? "retry with CBC preprocessing and presolve off: " : "") +
-                       r.solve.detail;
-      for (const std::string& reason : r.infeasibility_reasons) {
-        attempt.detail += (attempt.detail.empty() ? "" : "; ") + reason;
-      }
-      rec.check_seconds += r.check_seconds;
-    } catch (const std::exception& e) {
-      attempt.status = milp::SolveStatus::kError;
-      attempt.detail = e.what();
-    }
-    rec.solve_seconds += attempt.solve_seconds;
-    rec.attempts.push_back(attempt);
-    if (Interrupted(so)) {
-      rec.interrupted = true;
-      rec.wall_seconds = Since(t_cycle);
-      rec.cpu_seconds = CpuSince(cpu_cycle);
-      return rec;
-    }
-    if (r.has_schedule()) {
-      accepted = std::move(r);
-      rec.fallback = level;
-      have = true;
-      ImproveAccepted(p, control_node, raw, &accepted, &rec);
-      if (Interrupted(so)) {
-        rec.interrupted = true;
-        rec.wall_seconds = Since(t_cycle);
-        rec.cpu_seconds = CpuSince(cpu_cycle);
-        return rec;
-      }
-      break;
-    }
+  const bool have = SolveCycle(nominal, ctrl.controllable, control_node, &accepted, &rec);
+  if (rec.interrupted) {
+    rec.wall_seconds = Since(t_cycle);
+    rec.cpu_seconds = CpuSince(cpu_cycle);
+    return rec;
   }
-
-  std::vector<Burn> planned;
   if (have) {
-    rec.status = accepted.solve.status;
-    rec.objective = accepted.solve.objective;
-    rec.best_bound = accepted.solve.best_bound;
-    rec.gap = accepted.solve.gap;
-    rec.nodes = accepted.solve.nodes;
-    if (!accepted.solve.incumbents.empty()) {
-      rec.first_solution_seconds = accepted.solve.incumbents.front().wall_seconds;
-    }
-    planned = accepted.schedule.burns;
-    rec.planned_burns = static_cast<int>(planned.size());
-    if (accepted.checked) {
-      rec.checked = true;
-      rec.rules_ok = accepted.check.operational_ok;
-      rec.linear_window_violation_deg = accepted.check.max_window_violation_at_nodes * kRadToDeg;
-      if (rec.fallback != Fallback::kNone) rec.soft_violation_deg = rec.linear_window_violation_deg;
-    }
+    internal::RecordAccepted(accepted, &rec);
   } else {
     rec.fallback = Fallback::kZeroThrust;
     rec.status = rec.attempts.empty() ? milp::SolveStatus::kError : rec.attempts.back().status;
   }
-
-  // Applied part.
-  for (const Burn& b : planned) {
-    if (b.start_s < t.applied_end_s - kTimeTolerance) {
-      Burn a = b;
-      a.end_s = std::min(a.end_s, t.applied_end_s);
-      rec.burns.push_back(a);
-    }
-  }
-  {
-    Schedule applied;
-    applied.burns = rec.burns;
-    ComputeTotals(base_.thrusters, &applied);
-    rec.consumption_l1_m_s = applied.consumption_l1_m_s;
-    rec.delta_v_m_s = applied.delta_v_m_s;
-    rec.propellant_kg = applied.propellant_kg;
-    rec.on_time_s = applied.on_time_s;
-    rec.on_time_s.resize(m, 0.0);
-    const double acc = base_.thrusters.acceleration();
-    for (const Burn& b : rec.burns) {
-      rec.normal_delta_v_m_s +=
-          acc * std::abs(base_.thrusters.thruster(b.thruster).direction(2)) * b.duration_s();
-    }
-  }
-
-  // Nonlinear replay from the true state.
-  const Clock::time_point tr = Clock::now();
-  const int applied_steps = Steps(options_.step_s, t.applied_end_s - t.start_s);
-  const int q = options_.replay_samples_per_step;
-  std::vector<double> times;
-  times.reserve(static_cast<size_t>(applied_steps) * q + 1);
-  for (int j = 0; j < applied_steps; ++j) {
-    for (int s = 0; s < q; ++s) {
-      times.push_back(t.start_s + (j + static_cast<double>(s) / q) * options_.step_s);
-    }
-  }
-  times.push_back(t.applied_end_s);
-  std::vector<dynamics::InputPulse> pulses;
-  for (const Burn& b : rec.burns) pulses.push_back({b.thruster, b.start_s, b.end_s});
-  const std::vector<dynamics::Vector6d> eci = simulator_->Propagate(
-      state->eci, t.start_s, base_.thrusters.AccelerationMatrix(), pulses, times);
-  const WindowSpec& w = nominal.window;
-  bool prev_outside = false;
-  rec.sample_times = times;
-  rec.sample_outputs.reserve(times.size());
-  rec.sample_states.reserve(times.size());
-  for (size_t s = 0; s < times.size(); ++s) {
-    const Eigen::Vector3d y = simulator_->RelativeOutputs(eci[s], times[s]);
-    rec.sample_outputs.push_back(y);
-    rec.sample_states.push_back(simulator_->RelativeFromEci(eci[s], times[s]));
-    rec.max_abs_lat_deg = std::max(rec.max_abs_lat_deg, std::abs(y(1)) * kRadToDeg);
-    rec.max_abs_lon_deg = std::max(rec.max_abs_lon_deg, std::abs(y(2)) * kRadToDeg);
-    bool outside = false;
-    if (s > 0) {
-      for (size_t o = 0; o < w.outputs.size(); ++o) {
-        if (w.outputs[o] != 1 && w.outputs[o] != 2) continue;
-        const double excess = (std::abs(y(w.outputs[o])) - w.half_widths[o]) * kRadToDeg;
-        outside = outside || excess > 0.0;
-        if (excess > rec.max_window_violation_deg) {
-          rec.max_window_violation_deg = excess;
-          rec.worst_time_s = times[s];
-        }
-      }
-      rec.time_outside_window_s +=
-          0.5 * (times[s] - times[s - 1]) * ((prev_outside ? 1 : 0) + (outside ? 1 : 0));
-    }
-    prev_outside = outside;
-    // Synthesis-model error at grid nodes of the applied part.
-    if (have && s % static_cast<size_t>(q) == 0) {
-      const size_t node = s / static_cast<size_t>(q);
-      if (node < accepted.schedule.outputs.size()) {
-        const Eigen::VectorXd& yl = accepted.schedule.outputs[node];
-        const double e = std::max(std::abs(yl(1) - y(1)), std::abs(yl(2) - y(2))) * kRadToDeg;
-        rec.prediction_error_deg = std::max(rec.prediction_error_deg, e);
-      }
-    }
-  }
-  if (!have) rec.prediction_error_deg = kNaN;
-  rec.replay_seconds = Since(tr);
-  rec.eci_end = eci.back();
-  rec.final_state = rec.sample_states.back();
+  internal::ApplyPlan(have ? accepted.schedule.burns : std::vector<Burn>{}, t.applied_end_s,
+                      base_.thrusters, &rec);
+  internal::ReplaySpec replay;
+  replay.simulator = simulator_.get();
+  replay.thrusters = &base_.thrusters;
+  replay.window = &nominal.window;
+  replay.start_s = t.start_s;
+  replay.applied_end_s = t.applied_end_s;
+  replay.step_s = options_.step_s;
+  replay.samples_per_step = options_.replay_samples_per_step;
+  internal::ReplayApplied(replay, have ? &accepted : nullptr, state->eci, &rec);
 
   // Hand over.
   state->next_cycle = k + 1;
@@ -853,4 +623,4 @@ CycleRecord LongHorizonSimulation::RunCycle(LongHorizonState* state) const {
   return rec;
 }
 
-}  // namespace thrustsched::transcription
+}  // namespace thrustsched::planning

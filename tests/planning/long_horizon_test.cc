@@ -1,10 +1,12 @@
+// One file on purpose, ~900 lines: the cases below share the short GEO
+// fixture and its independent references, whose set-up is most of the file.
 // LongHorizonSimulation (chained cycles, nonlinear hand-over) on short GEO
 // cycles (1 day at a 10-min step, the thesis rules 5 / 20 / 5 min) so that the
 // whole file runs in seconds. References are independent of the driver: the
 // nonlinear simulator called directly on the applied burns, the continuous-time
 // rule checker on the concatenated burns of all cycles, closed forms of the
 // thruster geometry, and a second run (resume = uninterrupted).
-#include "transcription/long_horizon.h"
+#include "planning/long_horizon.h"
 
 #include <algorithm>
 #include <atomic>
@@ -22,8 +24,11 @@
 #include "milp/model.h"
 #include "transcription/checker.h"
 
-namespace thrustsched::transcription {
+namespace thrustsched::planning {
 namespace {
+
+// The one-MILP vocabulary (transcription/) the loop is tested with.
+using namespace thrustsched::transcription;  // NOLINT(build/namespaces)
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
@@ -468,7 +473,7 @@ class PresolveSpySolver final : public milp::Solver {
       r.detail = "spy: node limit without a schedule";
       return r;
     }
-    milp::SolveResult r = transcription::Solver()->Solve(lp, o);
+    milp::SolveResult r = planning::Solver()->Solve(lp, o);
     if (weaken_first_raw_ && !o.presolve &&
         std::count(presolve_calls.begin(), presolve_calls.end(), false) == 1 && r.has_solution()) {
       r.status = milp::SolveStatus::kFeasible;
@@ -479,7 +484,7 @@ class PresolveSpySolver final : public milp::Solver {
   }
   milp::LpRelaxationResult DoSolveLpRelaxation(const milp::LpData& lp,
                                                const milp::SolveOptions& o) const override {
-    return transcription::Solver()->SolveLpRelaxation(lp, o);
+    return planning::Solver()->SolveLpRelaxation(lp, o);
   }
   bool starve_presolved_;
   bool weaken_first_raw_;
@@ -890,4 +895,4 @@ TEST(NodeLimit, StopsDeterministicallyAfterTheBudget) {
 }
 
 }  // namespace
-}  // namespace thrustsched::transcription
+}  // namespace thrustsched::planning
