@@ -19,6 +19,7 @@
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
+#include "app/format_units.h"
 #include "app/run_folder.h"
 #include "dynamics/time.h"
 #include "milp/cbc_solver.h"
@@ -1199,7 +1200,7 @@ int RunSimulate(const SimulateArgs& a) {
       << G(sum.max_abs_lon_deg, 4) << " deg; "
       << (sum.max_window_violation_deg > 0
               ? "OUTSIDE by up to " + G(sum.max_window_violation_deg, 3) + " deg for " +
-                    G(sum.time_outside_window_s, 4) + " s (first worst at " +
+                    FormatDuration(sum.time_outside_window_s) + " (first worst at " +
                     Utc(epoch, sum.worst_time_s) + ")"
               : std::string("inside the box for the whole run (nonlinear replay)"))
       << "\n"
@@ -1209,8 +1210,8 @@ int RunSimulate(const SimulateArgs& a) {
       << sum.time_limited_cycles << " cycle(s) stopped by the time limit\n"
       << "solve time    median " << G(sum.solve_seconds.median, 3) << " s, p90 "
       << G(sum.solve_seconds.p90, 3) << " s, max " << G(sum.solve_seconds.max, 3)
-      << " s; gap median " << G(100 * sum.gap.median, 3) << "%, max " << G(100 * sum.gap.max, 3)
-      << "%; wall " << Hms(sum.wall_seconds_total) << " over all cycles\n"
+      << " s; gap median " << FormatPercent(sum.gap.median) << ", max "
+      << FormatPercent(sum.gap.max) << "; wall " << Hms(sum.wall_seconds_total) << " over all cycles\n"
       << "output        " << dir << " (";
   for (size_t i = 0; i < files.size(); ++i) out << (i ? ", " : "") << files[i];
   out << ")\n";
