@@ -17,6 +17,7 @@
 
 #include "app/conjunction_report.h"
 #include "app/format_units.h"
+#include "app/html_report.h"
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
@@ -384,6 +385,14 @@ int RunSolve(const SolveArgs& a) {
                                              conjunction ? &*conjunction : nullptr);
   }
   WriteJsonFile(dir + "/summary.json", summary);
+  if (!a.no_report) {
+    try {
+      WriteSolveReport(dir, s, summary);
+      files.push_back(kReportName);
+    } catch (const std::exception& e) {
+      err << "note: " << kReportName << " not written: " << e.what() << "\n";
+    }
+  }
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) err << "note: " << replaced << "\n";
 

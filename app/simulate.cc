@@ -20,6 +20,7 @@
 #include "app/outputs.h"
 #include "app/plots.h"
 #include "app/format_units.h"
+#include "app/html_report.h"
 #include "app/run_folder.h"
 #include "dynamics/time.h"
 #include "milp/cbc_solver.h"
@@ -990,11 +991,12 @@ int RunSimulate(const SimulateArgs& a) {
   PrepareFolder(dir, a, err);
   MakeDirectory(dir);
   MakeDirectory(dir + "/cycles");
-  WriteManifest(dir, {"checkpoint.json", kInProgressFile, "cycles.csv", "cycles", "year.json",
-                      "trajectory.csv", "gnuplot.log", "consumption.gp", "consumption.svg",
-                      "vectors.gp", "vectors.svg", "latlon.gp", "latlon.svg", "timeline.gp",
-                      "timeline.svg"},
-                a.command_line);
+  std::vector<std::string> manifest = {
+      "checkpoint.json", kInProgressFile, "cycles.csv",  "cycles",      "year.json",
+      "trajectory.csv",  "gnuplot.log",   "consumption.gp", "consumption.svg", "vectors.gp",
+      "vectors.svg",     "latlon.gp",     "latlon.svg",  "timeline.gp", "timeline.svg"};
+  for (const std::string& f : YearReportFiles()) manifest.push_back(f);
+  WriteManifest(dir, manifest, a.command_line);
   const Scenario& s = setup.scenario;
   const std::string epoch = s.geo->epoch;
   CheckFlightDynamicsFiles(s, a.ccsds, setup.options.start_s,
@@ -1179,6 +1181,12 @@ int RunSimulate(const SimulateArgs& a) {
     const PlotFiles p = WriteYearPlots(dir, setup, cycles, !a.no_plots);
     files.insert(files.end(), p.images.begin(), p.images.end());
     if (!p.message.empty()) err << "note: " << p.message << "\n";
+    if (!a.no_report) {
+      const YearReport rep = WriteYearReport(dir, s, year, !a.no_plots);
+      files.insert(files.end(), rep.images.begin(), rep.images.end());
+      files.push_back(kReportName);
+      if (!rep.message.empty()) err << "note: " << rep.message << "\n";
+    }
   }
 
   if (!a.print_summary) return interrupted ? kExitNoSolution : kExitOk;

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "app/format_units.h"
+#include "app/html_report.h"
 #include "app/outputs.h"
 #include "app/plots.h"
 #include "app/scenario.h"
@@ -291,6 +292,16 @@ TEST(FormatUnits, GapsAndDurationsInHumanUnits) {
   EXPECT_EQ(FormatDuration(42), "42 s");
   EXPECT_EQ(FormatDuration(1500), "25 min");
   EXPECT_EQ(FormatDuration(86400 * 53.0), "53 d");
+}
+
+TEST(HtmlReport, InlinedSvgHasNoPrologAndAScalableSize) {
+  const std::string svg = InlineSvg(
+      "<?xml version=\"1.0\" encoding=\"utf-8\"  standalone=\"no\"?>\n<svg \n viewBox=\"0 0 800 "
+      "600\"\n xmlns=\"http://www.w3.org/2000/svg\"><script>alert(1)</script><g/></svg>\n");
+  EXPECT_EQ(svg.find("<?xml"), std::string::npos);
+  EXPECT_EQ(svg.find("<script"), std::string::npos);
+  EXPECT_EQ(svg.rfind("<svg width=\"800\" height=\"600\"", 0), 0u) << svg;
+  EXPECT_EQ(HtmlEscape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
 }
 
 }  // namespace
