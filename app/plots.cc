@@ -148,7 +148,8 @@ std::string WindowScript(const Scenario& s, bool nl, const std::vector<int>& fir
   os << Header("window.svg", 800, 860, s);
   os << "set title " << Quote(s.name + ": trajectory in the window plane") << "\n";
   // Below the plot: inside it, the legend covered a corner of the box.
-  os << "set key below horizontal box\n";
+  // (Three columns at most, with room for them under the x label.)
+  os << "set key below horizontal box samplen 2 maxcols 3\nset bmargin 8\n";
   os << "set size ratio -1\n";
   os << "colors = \"" << kColors << "\"\n";
   os << CountRows();
@@ -198,7 +199,7 @@ std::string XyScript(const Scenario& s, const std::vector<int>& fired) {
   os << "set title " << Quote(s.name + ": radial against along-track") << "\n";
   // Below the plot, with room for the x label (without a fixed aspect ratio
   // gnuplot lets the two overlap).
-  os << "set key below horizontal box\nset bmargin 6\n";
+  os << "set key below horizontal box samplen 2 maxcols 3\nset bmargin 8\n";
   os << "colors = \"" << kColors << "\"\n";
   os << CountRows();
   os << "set xlabel 'y, along-track (km)'\nset ylabel 'x, radial (km)'\n";
