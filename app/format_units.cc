@@ -14,6 +14,14 @@ std::string ThreeDigits(double v, const char* unit) {
 
 }  // namespace
 
+std::string FormatSignificant(double v, int digits) {
+  if (std::isnan(v)) return "n/a";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
+  return buf;
+}
+
 std::string FormatPercent(double fraction) {
   if (std::isnan(fraction)) return "n/a";
   if (std::isinf(fraction)) return fraction > 0 ? "inf %" : "-inf %";

@@ -19,6 +19,10 @@ inline constexpr double kZeroGap = 1e-9;
 /// |fraction| < kZeroGap -> "0 %"; NaN -> "n/a"; infinite -> "inf %".
 std::string FormatPercent(double fraction);
 
+/// `v` with `digits` significant digits (%g style: "0.0163918", "1.5e-07");
+/// NaN -> "n/a", infinities -> "inf" / "-inf".
+std::string FormatSignificant(double v, int digits = 6);
+
 /// Seconds in s (< 2 min), min (< 2 h), h (< 10 d) or d, 3 significant
 /// digits; 0 -> "0 s"; NaN -> "n/a".
 std::string FormatDuration(double seconds);

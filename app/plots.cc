@@ -409,6 +409,22 @@ bool RunGnuplot(const std::string& dir, const std::string& script, const std::st
   return Run(dir, program, {script}) == 0;
 }
 
+std::vector<std::string> RunGnuplotScripts(const std::string& dir,
+                                           const std::vector<std::string>& bases,
+                                           std::string* message, const std::string& program) {
+  std::vector<std::string> images;
+  std::string failed;
+  for (const std::string& base : bases) {
+    if (Run(dir, program, {base + ".gp"}) == 0) {
+      images.push_back(base + ".svg");
+    } else {
+      failed += (failed.empty() ? "" : ", ") + base + ".gp";
+    }
+  }
+  *message = failed.empty() ? "" : "gnuplot failed on " + failed + " (see " + dir + "/gnuplot.log)";
+  return images;
+}
+
 bool HasXyView(const Scenario& s) {
   if (s.model_type == ModelType::kGeo) return false;
   const std::vector<std::string> names = s.problem.model->state_names();
@@ -461,17 +477,10 @@ PlotResult WritePlots(const std::string& dir, const Scenario& s, bool has_nonlin
                 " once gnuplot is installed";
     return r;
   }
-  std::string failed;
-  for (const auto& [base, text] : scripts) {
-    const int rc = Run(dir, options.gnuplot, {base + ".gp"});
-    if (rc == 0) {
-      r.images.push_back(base + ".svg");
-    } else {
-      failed += (failed.empty() ? "" : ", ") + base + ".gp";
-    }
-  }
-  r.ok = failed.empty();
-  if (!r.ok) r.message = "gnuplot failed on " + failed + " (see " + dir + "/gnuplot.log)";
+  std::vector<std::string> bases;
+  for (const auto& script : scripts) bases.push_back(script.first);
+  r.images = RunGnuplotScripts(dir, bases, &r.message, options.gnuplot);
+  r.ok = r.message.empty();
   return r;
 }
 

@@ -53,6 +53,14 @@ bool HasXyView(const Scenario& scenario);
 /// True if `program` can be executed (it is run with --version).
 bool GnuplotAvailable(const std::string& program = "gnuplot");
 
+/// Runs gnuplot on `<base>.gp` in `dir` for each base (scripts already
+/// written). Returns the images produced (`<base>.svg`); *message says which
+/// scripts failed ("" if none).
+std::vector<std::string> RunGnuplotScripts(const std::string& dir,
+                                           const std::vector<std::string>& bases,
+                                           std::string* message,
+                                           const std::string& program = "gnuplot");
+
 /// Runs `program script` with `dir` as the working directory, its output
 /// appended to dir/gnuplot.log. True if it exited with status 0.
 bool RunGnuplot(const std::string& dir, const std::string& script,
