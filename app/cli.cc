@@ -104,6 +104,9 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
   AddCcsdsOptions(c_solve, &solve.ccsds);
   c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
   c_solve->add_flag("--no-plots", solve.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  c_solve->add_flag("--no-report", solve.no_report,
+                    "do not write report.html (the self-contained page with the scenario, result, "
+                    "checker verdict, plots and schedule)");
   c_solve->add_flag("--force", solve.force,
                     "replace the files of an earlier run in the --out folder (without it, such a "
                     "folder is refused with exit 2)");
@@ -190,6 +193,8 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
                        "with exit 2)");
   c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
   c_simulate->add_flag("--no-plots", sim.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  c_simulate->add_flag("--no-report", sim.no_report,
+                       "do not write report.html (nor the year plots only it shows)");
   AddCcsdsOptions(c_simulate, &sim.ccsds);
 
   // `thrustsched help [command]`, and a misspelt command named as such.

@@ -16,6 +16,8 @@
 #include <sstream>
 
 #include "app/conjunction_report.h"
+#include "app/format_units.h"
+#include "app/html_report.h"
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/plots.h"
@@ -46,13 +48,6 @@ std::string F(double v, int digits = 6) {
 std::string Secs(double v) {
   char buf[48];
   std::snprintf(buf, sizeof(buf), "%.2f s", v);
-  return buf;
-}
-
-std::string Percent(double gap) {
-  if (std::isnan(gap)) return "n/a";
-  char buf[48];
-  std::snprintf(buf, sizeof(buf), "%.3g%%", 100.0 * gap);
   return buf;
 }
 
@@ -158,8 +153,8 @@ void PrintCheck(std::ostream& os, const Scenario& s, const transcription::CheckR
   if (r.nonlinear_checked) {
     os << "nonlinear     window violation " << F(r.max_window_violation_nonlinear_deg, 4)
        << " deg, max |lat| " << F(r.max_abs_lat_deg, 4) << " deg, max |lon - station| "
-       << F(r.max_abs_lon_deg, 4) << " deg, ~" << F(r.time_outside_window_nonlinear_s, 4)
-       << " s outside\n";
+       << F(r.max_abs_lon_deg, 4) << " deg, ~"
+       << FormatDuration(r.time_outside_window_nonlinear_s) << " outside\n";
   }
   for (const std::string& f : v.findings) os << "  finding: " << f << "\n";
 }
@@ -244,7 +239,7 @@ std::string ProgressLine(const milp::SolveProgress& p, double best) {
     gap = milp::RelativeGap(inc, p.best_bound);
   }
   os << milp::ToString(p.phase) << ": incumbent " << F(inc) << ", bound " << F(p.best_bound)
-     << ", gap " << Percent(gap) << ", " << p.nodes << " nodes"
+     << ", gap " << FormatPercent(gap) << ", " << p.nodes << " nodes"
      << (p.new_incumbent ? " (new incumbent)" : "");
   return os.str();
 }
@@ -381,6 +376,14 @@ int RunSolve(const SolveArgs& a) {
                                              conjunction ? &*conjunction : nullptr);
   }
   WriteJsonFile(dir + "/summary.json", summary);
+  if (!a.no_report) {
+    try {
+      WriteSolveReport(dir, s, summary);
+      files.push_back(kReportName);
+    } catch (const std::exception& e) {
+      err << "note: " << kReportName << " not written: " << e.what() << "\n";
+    }
+  }
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) err << "note: " << replaced << "\n";
 
@@ -395,7 +398,7 @@ int RunSolve(const SolveArgs& a) {
   if (interrupted) out << " (interrupted)";
   if (sr.has_solution()) {
     out << ", objective " << F(sr.objective, 8) << " (" << ToString(s.problem.objective.kind)
-        << "), best bound " << F(sr.best_bound, 8) << ", gap " << Percent(sr.gap);
+        << "), best bound " << F(sr.best_bound, 8) << ", gap " << FormatPercent(sr.gap);
   }
   out << "\n";
   if (rounds) PrintConjunctionSolve(out, *rounds);

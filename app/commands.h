@@ -35,6 +35,7 @@ struct SolveArgs {
   std::string export_mps, export_lp;
   bool quiet = false;
   bool no_plots = false;
+  bool no_report = false;  // skip report.html
   bool force = false;  // replace an earlier run's files in out_dir
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)

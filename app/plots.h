@@ -10,7 +10,11 @@
 // Plots: window.svg (trajectory in the window plane with the box: y-z in km
 // for Cartesian models, longitude offset-latitude in deg for GEO),
 // timeline.svg (per-thruster firing timeline; impulses for impulsive
-// problems), outputs.svg (window outputs against time, with the box limits).
+// problems; forced-off windows and disabled thrusters shaded), outputs.svg
+// (window outputs against time, with the box limits), and for Cartesian
+// models xy.svg (radial against along-track). The trajectory plots mark the
+// start, the end and the burns, and for a rendezvous the target and the aim
+// point.
 #ifndef THRUSTSCHED_APP_PLOTS_H_
 #define THRUSTSCHED_APP_PLOTS_H_
 
@@ -34,7 +38,7 @@ struct PlotResult {
   std::string message;               // why plots were skipped or failed
 };
 
-/// Writes window.gp, timeline.gp, outputs.gp into `dir` (which must already
+/// Writes window.gp, timeline.gp, outputs.gp (and xy.gp) into `dir` (which must already
 /// hold trajectory.csv and schedule.csv or impulses.csv) and runs gnuplot on
 /// them (its messages go to dir/gnuplot.log). Never throws for a missing or
 /// failing gnuplot (see PlotResult); @throws std::runtime_error if a script
@@ -42,8 +46,20 @@ struct PlotResult {
 PlotResult WritePlots(const std::string& dir, const Scenario& scenario, bool has_nonlinear,
                       const PlotOptions& options = {});
 
+/// True if WritePlots also draws xy.svg (radial against along-track, the
+/// rendezvous view): Cartesian models with x and y positions.
+bool HasXyView(const Scenario& scenario);
+
 /// True if `program` can be executed (it is run with --version).
 bool GnuplotAvailable(const std::string& program = "gnuplot");
+
+/// Runs gnuplot on `<base>.gp` in `dir` for each base (scripts already
+/// written). Returns the images produced (`<base>.svg`); *message says which
+/// scripts failed ("" if none).
+std::vector<std::string> RunGnuplotScripts(const std::string& dir,
+                                           const std::vector<std::string>& bases,
+                                           std::string* message,
+                                           const std::string& program = "gnuplot");
 
 /// Runs `program script` with `dir` as the working directory, its output
 /// appended to dir/gnuplot.log. True if it exited with status 0.

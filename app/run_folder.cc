@@ -29,7 +29,9 @@ const std::set<std::string>& KnownNames() {
       "gnuplot.log",   "window.gp",     "window.svg",     "timeline.gp",    "timeline.svg",
       "outputs.gp",    "outputs.svg",   "consumption.gp", "consumption.svg", "vectors.gp",
       "vectors.svg",   "latlon.gp",     "latlon.svg",     "checkpoint.json", "in_progress.json",
-      "year.json",     "cycles.csv",    "cycles"};
+      "year.json",     "cycles.csv",    "cycles",         "xy.gp",          "xy.svg",
+      "report.html",   "gap.gp",        "gap.svg",        "thrust_days.gp", "thrust_days.svg",
+      "box.gp",        "box.svg"};
   return names;
 }
 

@@ -14,6 +14,8 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/format_units.h"
+#include "app/html_report.h"
 #include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/run_folder.h"
@@ -96,11 +98,12 @@ void StartRun(YearRun* y) {
   PrepareFolder(y->dir, a, y->err);
   MakeDirectory(y->dir);
   MakeDirectory(y->dir + "/cycles");
-  WriteManifest(y->dir, {"checkpoint.json", kInProgressFile, "cycles.csv", "cycles", "year.json",
-                         "trajectory.csv", "gnuplot.log", "consumption.gp", "consumption.svg",
-                         "vectors.gp", "vectors.svg", "latlon.gp", "latlon.svg", "timeline.gp",
-                         "timeline.svg"},
-                a.command_line);
+  std::vector<std::string> manifest = {
+      "checkpoint.json", kInProgressFile, "cycles.csv",     "cycles",          "year.json",
+      "trajectory.csv",  "gnuplot.log",   "consumption.gp", "consumption.svg", "vectors.gp",
+      "vectors.svg",     "latlon.gp",     "latlon.svg",     "timeline.gp",     "timeline.svg"};
+  for (const std::string& f : YearReportFiles()) manifest.push_back(f);
+  WriteManifest(y->dir, manifest, a.command_line);
   const Scenario& s = y->scenario();
   y->epoch = s.geo->epoch;
   CheckFlightDynamicsFiles(s, a.ccsds, y->setup.options.start_s,
@@ -275,7 +278,8 @@ std::vector<std::string> WriteRunFiles(const YearRun& y) {
     }
   }
   WriteTextFile(dir + "/trajectory.csv", text);
-  WriteJsonFile(dir + "/year.json", YearJson(y.setup, y.cycles, y.total, Since(y.started)));
+  const nlohmann::json year = YearJson(y.setup, y.cycles, y.total, Since(y.started));
+  WriteJsonFile(dir + "/year.json", year);
   std::vector<std::string> files = {"cycles.csv", "year.json", "trajectory.csv", "checkpoint.json",
                                     "cycles/"};
   if (y.args.ccsds.any() && !y.cycles.empty()) {
@@ -289,6 +293,12 @@ std::vector<std::string> WriteRunFiles(const YearRun& y) {
     const PlotFiles p = WriteYearPlots(dir, y.setup, y.cycles, !y.args.no_plots);
     files.insert(files.end(), p.images.begin(), p.images.end());
     if (!p.message.empty()) y.err << "note: " << p.message << "\n";
+    if (!y.args.no_report) {
+      const YearReport rep = WriteYearReport(dir, y.scenario(), year, !y.args.no_plots);
+      files.insert(files.end(), rep.images.begin(), rep.images.end());
+      files.push_back(kReportName);
+      if (!rep.message.empty()) y.err << "note: " << rep.message << "\n";
+    }
   }
   return files;
 }
@@ -317,7 +327,7 @@ void PrintSummary(const YearRun& y, const std::vector<std::string>& files, bool 
       << G(sum.max_abs_lon_deg, 4) << " deg; "
       << (sum.max_window_violation_deg > 0
               ? "OUTSIDE by up to " + G(sum.max_window_violation_deg, 3) + " deg for " +
-                    G(sum.time_outside_window_s, 4) + " s (first worst at " +
+                    FormatDuration(sum.time_outside_window_s) + " (first worst at " +
                     Utc(y.epoch, sum.worst_time_s) + ")"
               : std::string("inside the box for the whole run (nonlinear replay)"))
       << "\n"
@@ -327,8 +337,9 @@ void PrintSummary(const YearRun& y, const std::vector<std::string>& files, bool 
       << sum.time_limited_cycles << " cycle(s) stopped by the time limit\n"
       << "solve time    median " << G(sum.solve_seconds.median, 3) << " s, p90 "
       << G(sum.solve_seconds.p90, 3) << " s, max " << G(sum.solve_seconds.max, 3)
-      << " s; gap median " << G(100 * sum.gap.median, 3) << "%, max " << G(100 * sum.gap.max, 3)
-      << "%; wall " << Hms(sum.wall_seconds_total) << " over all cycles\n"
+      << " s; gap median " << FormatPercent(sum.gap.median) << ", max "
+      << FormatPercent(sum.gap.max) << "; wall " << Hms(sum.wall_seconds_total)
+      << " over all cycles\n"
       << "output        " << y.dir << " (";
   for (size_t i = 0; i < files.size(); ++i) out << (i ? ", " : "") << files[i];
   out << ")\n";

@@ -40,6 +40,7 @@ struct SimulateArgs {
   bool force = false;    // start over in a folder holding an earlier run (its files removed)
   bool quiet = false;    // no progress on stderr
   bool no_plots = false; // write the gnuplot scripts but do not run gnuplot
+  bool no_report = false; // skip report.html (and the year plots only it shows)
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers: the whole run's replay and burns
 

@@ -95,6 +95,8 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
        << "set xlabel 'cycle start (days since t_0)'\n"
        << "set ylabel 'per cycle (m/s)'\nset y2label 'cumulative (m/s)'\n"
        << "set ytics nomirror\nset y2tics\nset key top left\n"
+       // Bars from 0: an axis from the smallest cycle exaggerated the differences.
+       << "set yrange [0:*]\nset y2range [0:*]\n"
        << "set style fill solid 0.5\n"
        << "cum = 0\n"
        << "t0 = " << G(setup.options.start_s, 15) << "\n"

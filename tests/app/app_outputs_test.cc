@@ -289,7 +289,8 @@ TEST(Plots, ScriptsAlwaysWrittenGnuplotOptional) {
   EXPECT_FALSE(p.gnuplot_found);
   EXPECT_FALSE(p.ok);
   EXPECT_HAS(p.message, "plots skipped");
-  EXPECT_EQ(p.scripts, (std::vector<std::string>{"window.gp", "timeline.gp", "outputs.gp"}));
+  EXPECT_EQ(p.scripts,
+            (std::vector<std::string>{"window.gp", "timeline.gp", "outputs.gp", "xy.gp"}));
   for (const auto& f : p.scripts) EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
   EXPECT_HAS(ReadFile(dir + "/window.gp"), "set terminal svg");
   EXPECT_HAS(ReadFile(dir + "/timeline.gp"), "names = \"+R +T +N -R -T -N\"");

@@ -76,6 +76,38 @@ TEST(Cli, UsageErrorsExitTwo) {
   fs::remove_all(dir);
 }
 
+// report.html: one self-contained page with the scenario, the result, the
+// checker's verdict, the plots inlined and the schedule; --no-report skips it.
+TEST(Cli, SolveWritesTheReportUnlessNoReport) {
+  const std::string dir = TempDir("report");
+  RunResult r = RunCli({"solve", kScenarios + "hcw_table41_1d.json", "--out", dir + "/a",
+                        "--threads", "1", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_HAS(r.out, "gap 0 %");  // not 1e-14-level noise
+  EXPECT_HAS(r.out, "report.html)");
+  const std::string html = ReadFile(dir + "/a/report.html");
+  for (const char* part : {"<!DOCTYPE html>", "<h1>hcw_table41_1d</h1>", "HCW (Hill-Clohessy-Wiltshire)",
+                           "each burn at least 5 min", "optimal", "0.016391753", "PASSED",
+                           "<td>-T</td>", "@media print"}) {
+    EXPECT_HAS(html, part);
+  }
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);
+  if (HaveProgram("gnuplot")) {
+    size_t plots = 0;
+    for (size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1)) ++plots;
+    EXPECT_EQ(plots, 4u);  // window, xy, timeline, outputs
+    EXPECT_HAS(html, "id=\"p2_gnuplot_canvas\"");  // ids made unique per plot
+  }
+  EXPECT_HAS(ReadFile(dir + "/a/.thrustsched-run.json"), "report.html");
+  r = RunCli({"solve", kScenarios + "hcw_table41_1d.json", "--out", dir + "/b", "--threads", "1",
+              "--quiet", "--no-report", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_FALSE(fs::exists(dir + "/b/report.html"));
+  EXPECT_EQ(r.out.find("report.html"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // Thesis Table 4.1, 1 day: one 5-min tangential slot, 0.0164 m/s published
 // (exactly 0.265/4850*300 = 0.016391753 m/s), drift term 1.7752 km at tf.
 TEST(Cli, SolveWritesConsistentResults) {

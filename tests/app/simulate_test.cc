@@ -399,6 +399,47 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
 }
 
 // A folder holding an earlier run is never silently started over: without
+// The run's report.html with the per-cycle table and the year plots; the
+// consumption bars start at 0 (the axis started at the smallest cycle,
+// exaggerating the differences).
+TEST(SimulateCli, WritesTheReportAndTheYearPlots) {
+  const std::string dir = TempDir("sim_report");
+  auto r = RunCli({"simulate", kScenario, "--out", dir + "/a", "--cycles", "1", "--quiet"}, 300);
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  const std::string html = ReadFile(dir + "/a/report.html");
+  for (const char* part : {"<h1>year_test_4cycles</h1>", "1 of 4", "<h2>Cycles</h2>",
+                           "2034-01-01T00:00:00Z", "consumption (m/s)", "inside the box"}) {
+    EXPECT_NE(html.find(part), std::string::npos) << part;
+  }
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_NE(ReadFile(dir + "/a/.thrustsched-run.json").find("report.html"), std::string::npos);
+  EXPECT_NE(ReadFile(dir + "/a/consumption.gp").find("set yrange [0:*]"), std::string::npos);
+  if (thrustsched::testing::HaveProgram("gnuplot")) {
+    for (const char* f : {"gap.svg", "thrust_days.svg", "box.svg", "consumption.svg"}) {
+      EXPECT_TRUE(fs::exists(dir + "/a/" + f)) << f;
+    }
+    // The left axis of consumption.svg has a tic labelled 0.
+    const std::string svg = ReadFile(dir + "/a/consumption.svg");
+    bool zero = false;
+    for (size_t at = svg.find("text-anchor=\"end\""); at != std::string::npos && !zero;
+         at = svg.find("text-anchor=\"end\"", at + 1)) {
+      const size_t open = svg.find(">", svg.find("<tspan", at)) + 1;
+      const std::string label = svg.substr(open, svg.find("</tspan>", open) - open);
+      zero = label.find_first_not_of(" 0.") == std::string::npos;
+    }
+    EXPECT_TRUE(zero) << "no 0 on the consumption axis";
+    size_t plots = 0;
+    for (size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1)) ++plots;
+    EXPECT_EQ(plots, 7u);
+  }
+  r = RunCli({"simulate", kScenario, "--out", dir + "/b", "--cycles", "1", "--quiet", "--no-plots",
+              "--no-report"},
+             300);
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_FALSE(fs::exists(dir + "/b/report.html"));
+  fs::remove_all(dir);
+}
+
 // --resume or --force the command refuses (exit 2, naming both) and changes
 // nothing; --force starts over with the earlier run's files removed (no stale
 // cycles/cycle_002* left beside a one-cycle run).

@@ -209,7 +209,9 @@ TEST(OutputFolder, HoldsOneRunOnly) {
   }
   EXPECT_EQ(ReadFile(out + "/my_notes.txt"), "mine");
   const json manifest = ReadJson(out + "/.thrustsched-run.json");
-  EXPECT_EQ(manifest["files"], json::array({"summary.json"}));
+  // The report of the new run (its status and reason), not the earlier one's.
+  EXPECT_EQ(manifest["files"], json::array({"report.html", "summary.json"}));
+  EXPECT_HAS(ReadFile(out + "/report.html"), "infeasible");
   // Nothing is left beside it (the temporary folder is gone).
   for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
     EXPECT_EQ(e.path().filename().string(), "o");
