@@ -613,7 +613,11 @@ std::vector<std::string> TrajectoryColumns(const Scenario& s, bool with_nonlinea
 
 std::string TrajectoryCsvText(const Scenario& s, const transcription::CheckReport& r,
                               const std::vector<transcription::Burn>& burns) {
+  // The nonlinear columns need the scenario's simulator (for the geographic
+  // position): a report replayed by another simulator, with the scenario's
+  // switched off, gets the linear columns only.
   const bool nl = s.model_type == ModelType::kGeo && r.nonlinear_checked &&
+                  s.check.nonlinear != nullptr &&
                   r.nonlinear_eci.size() == r.sample_times.size();
   const std::vector<std::string> cols = TrajectoryColumns(s, nl);
   std::ostringstream os;

@@ -80,15 +80,15 @@ struct SolveProgress {
 /// initial_solution entries finite.
 /// Algorithm for LP relaxations (and the root LP of a MILP).
 enum class LpAlgorithm {
-  kPrimal,   // primal simplex: measured 25-250x faster than dual on the
-             // station-keeping transcriptions (free state columns, equality
-             // dynamics rows), e.g. the 3-day Table 4.1 root LP 0.9 s vs 26 s
+  kPrimal,   // primal simplex: the fastest simplex on the station-keeping
+             // transcriptions (free state columns, equality dynamics rows);
+             // measurements in docs/bench/report.md, section 3
   kDual,     // dual simplex: CLP's and the cbc program's default
   kBarrier,  // interior point + crossover
   /// Interior point without crossover, without presolve: a near-optimal,
   /// near-feasible point (not a vertex) and near-optimal duals, in a fraction
-  /// of a simplex's time on the schedule MILPs' relaxations (GEO week: ~4 s
-  /// against ~35 s); its bound comes from the duals through SafeDualBound
+  /// of a simplex's time on the schedule MILPs' relaxations (measured in
+  /// docs/bench/report.md, section 8); its bound comes from the duals through SafeDualBound
   /// (LpRelaxationResult::dual_bound), valid whatever its accuracy. LP
   /// relaxations only: a MILP's root falls back to primal simplex.
   kBarrierNoCrossover,

@@ -16,6 +16,8 @@ PACKAGES=(
   pybind11-dev python3-dev python3-numpy python3-pandas python3-matplotlib python3-pytest
   # the test that opens report.html in a real browser (headless)
   chromium
+  # the format check of CI (scripts/check_format.sh)
+  clang-format
 )
 
 # THRUSTSCHED_DEPS_PACKAGES (space-separated) replaces the list: used by the

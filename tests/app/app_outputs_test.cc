@@ -276,6 +276,23 @@ TEST(Outputs, TrajectoryCsvFollowsTheCheckerSamples) {
   std::filesystem::remove_all(dir);
 }
 
+// A GEO report replayed through the nonlinear model by a caller whose
+// scenario has its simulator switched off: the trajectory has the linear
+// columns only (it used to dereference the missing simulator and crash).
+TEST(Outputs, TrajectoryCsvOfANonlinearReportWithoutTheScenarioSimulator) {
+  Scenario s = LoadScenario(std::string(THRUSTSCHED_DATA_DIR) + "/scenarios/geo_2day_anzel4.json");
+  ASSERT_TRUE(s.check.nonlinear != nullptr);
+  const transcription::CheckReport r = transcription::CheckSchedule(s.problem, {}, s.check);
+  ASSERT_TRUE(r.nonlinear_checked);
+  s.check.nonlinear.reset();
+  const std::string text = TrajectoryCsvText(s, r, {});
+  const std::string header = text.substr(0, text.find('\n'));
+  EXPECT_NE(header.find("lin_lat_deg"), std::string::npos) << header;
+  EXPECT_EQ(header.find(",lat_deg"), std::string::npos) << header;
+  EXPECT_EQ(static_cast<size_t>(std::count(text.begin(), text.end(), '\n')),
+            r.sample_times.size() + 1);
+}
+
 TEST(Plots, ScriptsAlwaysWrittenGnuplotOptional) {
   const Scenario s = Hcw();
   const std::string dir = TempDir("plots");
