@@ -25,7 +25,8 @@ std::string Trim(std::string_view s) {
 bool IsKeyword(std::string_view s) {
   if (s.empty()) return false;
   for (char c : s) {
-    if (!(std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_')) {
+    if (!(std::isupper(static_cast<unsigned char>(c)) ||
+          std::isdigit(static_cast<unsigned char>(c)) || c == '_')) {
       return false;
     }
   }
@@ -50,7 +51,8 @@ void SplitUnits(const std::string& rest, KvnLine* line) {
 }
 
 dynamics::Epoch FromUnixSeconds(long long seconds) {
-  return dynamics::Epoch::Parse("2000-01-01T00:00:00Z").PlusSeconds(static_cast<double>(seconds - kUnixSecondsAt2000));
+  return dynamics::Epoch::Parse("2000-01-01T00:00:00Z")
+      .PlusSeconds(static_cast<double>(seconds - kUnixSecondsAt2000));
 }
 
 }  // namespace
@@ -92,7 +94,8 @@ std::vector<KvnLine> ReadKvn(std::string_view text) {
 }
 
 void KvnFail(const std::string& source, const KvnLine& line, const std::string& why) {
-  const std::string what = line.kind == KvnLine::kKeyValue ? line.keyword + " = " + line.value : line.text;
+  const std::string what =
+      line.kind == KvnLine::kKeyValue ? line.keyword + " = " + line.value : line.text;
   throw ScenarioError(source + ":" + std::to_string(line.number) + ": " + what + ": " + why);
 }
 
@@ -100,11 +103,12 @@ double KvnNumber(const std::string& source, const KvnLine& line, std::string_vie
   const std::string& s = line.value;
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) KvnFail(source, line, "not a finite number");
+  if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v))
+    KvnFail(source, line, "not a finite number");
   if (!line.units.empty() && Upper(line.units) != Upper(units)) {
     KvnFail(source, line,
-            "units [" + line.units + "] where " + (units.empty() ? "none" : "[" + std::string(units) + "]") +
-                " are expected");
+            "units [" + line.units + "] where " +
+                (units.empty() ? "none" : "[" + std::string(units) + "]") + " are expected");
   }
   return v;
 }
@@ -119,13 +123,15 @@ dynamics::TimeScale KvnTimeSystem(const std::string& source, const KvnLine& line
 
 dynamics::InertialFrame KvnFrame(const std::string& source, const KvnLine& line) {
   if (auto f = dynamics::ParseInertialFrame(line.value)) return *f;
-  KvnFail(source, line,
-          "unsupported reference frame (supported: EME2000, also spelt J2000, and GCRF; Earth-fixed, "
-          "true-of-date and TEME states must be converted first)");
+  KvnFail(
+      source, line,
+      "unsupported reference frame (supported: EME2000, also spelt J2000, and GCRF; Earth-fixed, "
+      "true-of-date and TEME states must be converted first)");
 }
 
 void KvnCheckCenter(const std::string& source, const KvnLine& line) {
-  if (line.value != "EARTH") KvnFail(source, line, "unsupported centre (the GEO models are geocentric: EARTH)");
+  if (line.value != "EARTH")
+    KvnFail(source, line, "unsupported centre (the GEO models are geocentric: EARTH)");
 }
 
 dynamics::Epoch ParseCcsdsEpoch(std::string_view text, dynamics::TimeScale scale) {
@@ -133,8 +139,8 @@ dynamics::Epoch ParseCcsdsEpoch(std::string_view text, dynamics::TimeScale scale
   if (!s.empty() && (s.back() == 'Z' || s.back() == 'z')) s.pop_back();
   // Day-of-year form YYYY-DDDThh:mm:ss: rewritten as January 1 plus days.
   const bool doy = s.size() >= 9 && s[4] == '-' && std::isdigit(static_cast<unsigned char>(s[5])) &&
-                   std::isdigit(static_cast<unsigned char>(s[6])) && std::isdigit(static_cast<unsigned char>(s[7])) &&
-                   (s[8] == 'T' || s[8] == 't');
+                   std::isdigit(static_cast<unsigned char>(s[6])) &&
+                   std::isdigit(static_cast<unsigned char>(s[7])) && (s[8] == 'T' || s[8] == 't');
   const size_t colon = s.find(':');
   if (colon != std::string::npos && s.size() >= colon + 6 && s.compare(colon + 4, 2, "60") == 0) {
     throw std::invalid_argument("a leap second (ss = 60) cannot be represented");
@@ -144,18 +150,22 @@ dynamics::Epoch ParseCcsdsEpoch(std::string_view text, dynamics::TimeScale scale
   const int year = std::atoi(s.substr(0, 4).c_str());
   const int days_in_year = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0 ? 366 : 365;
   if (day < 1 || day > days_in_year) {
-    throw std::invalid_argument("day of year " + std::to_string(day) + " not in 1.." + std::to_string(days_in_year));
+    throw std::invalid_argument("day of year " + std::to_string(day) + " not in 1.." +
+                                std::to_string(days_in_year));
   }
   const dynamics::Epoch jan1 = dynamics::Epoch::Parse(s.substr(0, 4) + "-01-01T" + s.substr(9));
   return dynamics::UtcFromScale(jan1.PlusSeconds((day - 1) * common::kSecondsPerDay), scale);
 }
 
-dynamics::Epoch KvnEpoch(const std::string& source, const KvnLine& line, dynamics::TimeScale scale) {
+dynamics::Epoch KvnEpoch(const std::string& source, const KvnLine& line,
+                         dynamics::TimeScale scale) {
   try {
     return ParseCcsdsEpoch(line.value, scale);
   } catch (const std::invalid_argument& e) {
-    KvnFail(source, line, std::string("not a CCSDS epoch (YYYY-MM-DDThh:mm:ss[.d][Z] or YYYY-DDDThh:mm:ss[.d][Z]): ") +
-                              e.what());
+    KvnFail(source, line,
+            std::string(
+                "not a CCSDS epoch (YYYY-MM-DDThh:mm:ss[.d][Z] or YYYY-DDDThh:mm:ss[.d][Z]): ") +
+                e.what());
   }
 }
 
@@ -175,8 +185,8 @@ std::string KvnKeyValue(std::string_view keyword, std::string_view value, std::s
 }
 
 std::string KvnHeader(std::string_view version_keyword, std::string_view version,
-                      const std::vector<std::string>& comments, const dynamics::Epoch& creation_date,
-                      std::string_view originator) {
+                      const std::vector<std::string>& comments,
+                      const dynamics::Epoch& creation_date, std::string_view originator) {
   std::string out = KvnKeyValue(version_keyword, version) + "\n";
   for (const std::string& c : comments) out += "COMMENT " + c + "\n";
   out += KvnKeyValue("CREATION_DATE", CcsdsEpochText(creation_date)) + "\n";
@@ -195,8 +205,10 @@ dynamics::Epoch CreationDate() {
     char* end = nullptr;
     const long long v = std::strtoll(sde, &end, 10);
     if (*sde == '\0' || *end != '\0') {
-      throw ScenarioError(std::string("SOURCE_DATE_EPOCH: expected whole seconds since 1970-01-01T00:00:00Z, got \"") +
-                          sde + "\"");
+      throw ScenarioError(
+          std::string(
+              "SOURCE_DATE_EPOCH: expected whole seconds since 1970-01-01T00:00:00Z, got \"") +
+          sde + "\"");
     }
     return Wrap("SOURCE_DATE_EPOCH", [&] { return FromUnixSeconds(v); });
   }

@@ -4,9 +4,11 @@
 // share (epochs, time systems, frames, centres, numbers with units).
 //
 //   for (const app::KvnLine& l : app::ReadKvn(text)) {
-//     if (l.kind == app::KvnLine::kKeyValue && l.keyword == "X") x_km = app::KvnNumber("orbit.opm", l, "km");
+//     if (l.kind == app::KvnLine::kKeyValue && l.keyword == "X") x_km = app::KvnNumber("orbit.opm",
+//     l, "km");
 //   }
-//   std::string row = app::KvnKeyValue("MAN_DURATION", "600.000", "s");  // "MAN_DURATION  ... = 600.000 [s]"
+//   std::string row = app::KvnKeyValue("MAN_DURATION", "600.000", "s");  // "MAN_DURATION  ... =
+//   600.000 [s]"
 //
 // Every reading error is a ScenarioError (bad input, exit 2) whose message
 // names the file, the line, the keyword and its value.
@@ -67,12 +69,13 @@ dynamics::Epoch ParseCcsdsEpoch(std::string_view text, dynamics::TimeScale scale
 std::string CcsdsEpochText(const dynamics::Epoch& epoch);
 /// "KEYWORD = value" or "KEYWORD = value [units]", keyword padded so that the
 /// '=' signs of a block line up.
-std::string KvnKeyValue(std::string_view keyword, std::string_view value, std::string_view units = "");
+std::string KvnKeyValue(std::string_view keyword, std::string_view value,
+                        std::string_view units = "");
 /// The header lines of a message: "<version_keyword> = <version>", the
 /// comments, CREATION_DATE and ORIGINATOR (CCSDS 502.0-B-3 §3.2.2, §5.2.2).
 std::string KvnHeader(std::string_view version_keyword, std::string_view version,
-                      const std::vector<std::string>& comments, const dynamics::Epoch& creation_date,
-                      std::string_view originator);
+                      const std::vector<std::string>& comments,
+                      const dynamics::Epoch& creation_date, std::string_view originator);
 /// Fixed-point text of a number with `decimals` decimals.
 std::string KvnFixed(double value, int decimals);
 

@@ -19,9 +19,9 @@ struct MetaBlock {
 
 const std::vector<std::string>& MetaKeywords() {
   static const std::vector<std::string> k = {
-      "OBJECT_NAME",        "OBJECT_ID",          "CENTER_NAME",   "REF_FRAME",
-      "REF_FRAME_EPOCH",    "TIME_SYSTEM",        "START_TIME",    "USEABLE_START_TIME",
-      "USEABLE_STOP_TIME",  "STOP_TIME",          "INTERPOLATION", "INTERPOLATION_DEGREE"};
+      "OBJECT_NAME",       "OBJECT_ID",   "CENTER_NAME",   "REF_FRAME",
+      "REF_FRAME_EPOCH",   "TIME_SYSTEM", "START_TIME",    "USEABLE_START_TIME",
+      "USEABLE_STOP_TIME", "STOP_TIME",   "INTERPOLATION", "INTERPOLATION_DEGREE"};
   return k;
 }
 
@@ -48,8 +48,11 @@ OemPoint ParseDataLine(const std::string& source, const KvnLine& line, dynamics:
     v.push_back(x);
   }
   if (v.size() != 6 && v.size() != 9) {
-    KvnFail(source, line, "a data line holds an epoch and 6 numbers (x y z in km, x_dot y_dot z_dot in km/s) or 9 "
-                          "(with accelerations), got " + std::to_string(v.size()));
+    KvnFail(
+        source, line,
+        "a data line holds an epoch and 6 numbers (x y z in km, x_dot y_dot z_dot in km/s) or 9 "
+        "(with accelerations), got " +
+            std::to_string(v.size()));
   }
   OemPoint p;
   try {
@@ -63,8 +66,8 @@ OemPoint ParseDataLine(const std::string& source, const KvnLine& line, dynamics:
 
 // Fills a segment's metadata from a META block (mandatory keywords checked).
 OemSegment SegmentFromMeta(const std::string& source, const MetaBlock& m) {
-  for (const char* k : {"OBJECT_NAME", "OBJECT_ID", "CENTER_NAME", "REF_FRAME", "TIME_SYSTEM", "START_TIME",
-                        "STOP_TIME"}) {
+  for (const char* k : {"OBJECT_NAME", "OBJECT_ID", "CENTER_NAME", "REF_FRAME", "TIME_SYSTEM",
+                        "START_TIME", "STOP_TIME"}) {
     if (m.keys.count(k) == 0) {
       throw ScenarioError(source + ":" + std::to_string(m.start_line) +
                           ": META block lacks the mandatory keyword " + k);
@@ -77,12 +80,14 @@ OemSegment SegmentFromMeta(const std::string& source, const MetaBlock& m) {
   s.center_name = "EARTH";
   s.frame = KvnFrame(source, m.keys.at("REF_FRAME"));
   if (m.keys.count("REF_FRAME_EPOCH") > 0) {
-    KvnFail(source, m.keys.at("REF_FRAME_EPOCH"), "not used with EME2000 or GCRF (their epoch is fixed)");
+    KvnFail(source, m.keys.at("REF_FRAME_EPOCH"),
+            "not used with EME2000 or GCRF (their epoch is fixed)");
   }
   s.time_system = KvnTimeSystem(source, m.keys.at("TIME_SYSTEM"));
   s.start_time = KvnEpoch(source, m.keys.at("START_TIME"), s.time_system);
   s.stop_time = KvnEpoch(source, m.keys.at("STOP_TIME"), s.time_system);
-  if (s.stop_time.SecondsSince(s.start_time) < 0) KvnFail(source, m.keys.at("STOP_TIME"), "before START_TIME");
+  if (s.stop_time.SecondsSince(s.start_time) < 0)
+    KvnFail(source, m.keys.at("STOP_TIME"), "before START_TIME");
   s.interpolation = m.keys.count("INTERPOLATION") ? m.keys.at("INTERPOLATION").value : "";
   s.interpolation_degree = -1;
   if (m.keys.count("INTERPOLATION_DEGREE")) {
@@ -119,7 +124,8 @@ std::string FormatOem(const OemFile& f) {
       const double t = s.points[k].epoch.SecondsSince(s.start_time);
       if (t < -1e-6 || s.stop_time.SecondsSince(s.points[k].epoch) < -1e-6 ||
           (k > 0 && !(s.points[k].epoch.SecondsSince(s.points[k - 1].epoch) > 0))) {
-        throw std::invalid_argument("FormatOem: points must increase within [start_time, stop_time]");
+        throw std::invalid_argument(
+            "FormatOem: points must increase within [start_time, stop_time]");
       }
     }
     os << "\nMETA_START\n"
@@ -151,8 +157,10 @@ std::string FormatOem(const OemFile& f) {
 OemFile ParseOem(std::string_view text, const std::string& source) {
   const std::vector<KvnLine> lines = ReadKvn(text);
   OemFile f;
-  if (lines.empty() || lines[0].kind != KvnLine::kKeyValue || lines[0].keyword != "CCSDS_OEM_VERS") {
-    throw ScenarioError(source + ": not a CCSDS OEM in KVN form (the first line must be CCSDS_OEM_VERS = ...)");
+  if (lines.empty() || lines[0].kind != KvnLine::kKeyValue ||
+      lines[0].keyword != "CCSDS_OEM_VERS") {
+    throw ScenarioError(
+        source + ": not a CCSDS OEM in KVN form (the first line must be CCSDS_OEM_VERS = ...)");
   }
   f.version = lines[0].value;
   if (f.version != "1.0" && f.version != "2.0" && f.version != "3.0") {
@@ -160,7 +168,9 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
   }
   size_t i = 1;
   bool have_creation = false, have_originator = false;
-  for (; i < lines.size() && !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_START"); ++i) {
+  for (;
+       i < lines.size() && !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_START");
+       ++i) {
     const KvnLine& l = lines[i];
     if (l.kind == KvnLine::kComment) {
       f.comments.push_back(l.value);
@@ -170,7 +180,8 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
     } else if (l.kind == KvnLine::kKeyValue && l.keyword == "ORIGINATOR") {
       f.originator = l.value;
       have_originator = true;
-    } else if (!(l.kind == KvnLine::kKeyValue && (l.keyword == "MESSAGE_ID" || l.keyword == "CLASSIFICATION"))) {
+    } else if (!(l.kind == KvnLine::kKeyValue &&
+                 (l.keyword == "MESSAGE_ID" || l.keyword == "CLASSIFICATION"))) {
       KvnFail(source, l, "unexpected in the OEM header");
     }
   }
@@ -185,7 +196,9 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
     }
     MetaBlock m;
     m.start_line = start.number;
-    for (; i < lines.size() && !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_STOP"); ++i) {
+    for (; i < lines.size() &&
+           !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_STOP");
+         ++i) {
       const KvnLine& l = lines[i];
       if (l.kind == KvnLine::kComment) continue;
       if (l.kind != KvnLine::kKeyValue || !Contains(MetaKeywords(), l.keyword)) {
@@ -194,16 +207,20 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
       if (!m.keys.emplace(l.keyword, l).second) KvnFail(source, l, "repeated in the META block");
     }
     if (i == lines.size()) {
-      throw ScenarioError(source + ":" + std::to_string(start.number) + ": META_START without META_STOP");
+      throw ScenarioError(source + ":" + std::to_string(start.number) +
+                          ": META_START without META_STOP");
     }
     ++i;
     OemSegment s = SegmentFromMeta(source, m);
     bool in_covariance = false;
-    for (; i < lines.size() && !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_START"); ++i) {
+    for (; i < lines.size() &&
+           !(lines[i].kind == KvnLine::kMarker && lines[i].keyword == "META_START");
+         ++i) {
       const KvnLine& l = lines[i];
       if (l.kind == KvnLine::kMarker && l.keyword == "COVARIANCE_START") in_covariance = true;
       if (l.kind == KvnLine::kMarker && l.keyword == "COVARIANCE_STOP") in_covariance = false;
-      if (l.kind == KvnLine::kMarker && l.keyword != "COVARIANCE_START" && l.keyword != "COVARIANCE_STOP") {
+      if (l.kind == KvnLine::kMarker && l.keyword != "COVARIANCE_START" &&
+          l.keyword != "COVARIANCE_STOP") {
         KvnFail(source, l, "unexpected block keyword in an ephemeris data block");
       }
       if (in_covariance || l.kind == KvnLine::kMarker) continue;  // covariance is not used
@@ -216,7 +233,8 @@ OemFile ParseOem(std::string_view text, const std::string& source) {
       CheckPoints(source, s, l);
     }
     if (s.points.empty()) {
-      throw ScenarioError(source + ":" + std::to_string(start.number) + ": segment without data lines");
+      throw ScenarioError(source + ":" + std::to_string(start.number) +
+                          ": segment without data lines");
     }
     s.time_system = dynamics::TimeScale::kUtc;  // epochs are held in UTC from here on
     f.segments.push_back(std::move(s));

@@ -12,7 +12,16 @@ namespace {
 constexpr double kDeg = common::kDegToRad;
 
 // Logical blocks of an OPM, in the order §3.2 prescribes.
-enum Block { kHeader, kMetadata, kState, kKeplerian, kSpacecraft, kCovariance, kManeuver, kUserDefined };
+enum Block {
+  kHeader,
+  kMetadata,
+  kState,
+  kKeplerian,
+  kSpacecraft,
+  kCovariance,
+  kManeuver,
+  kUserDefined
+};
 
 bool IsCovarianceKeyword(const std::string& k) {
   if (k == "COV_REF_FRAME") return true;
@@ -27,20 +36,43 @@ bool IsCovarianceKeyword(const std::string& k) {
 }
 
 std::optional<Block> BlockOf(const std::string& k) {
-  static const std::map<std::string, Block> kBlocks = {
-      {"CREATION_DATE", kHeader},     {"ORIGINATOR", kHeader},        {"MESSAGE_ID", kHeader},
-      {"CLASSIFICATION", kHeader},    {"OBJECT_NAME", kMetadata},     {"OBJECT_ID", kMetadata},
-      {"CENTER_NAME", kMetadata},     {"REF_FRAME", kMetadata},       {"REF_FRAME_EPOCH", kMetadata},
-      {"TIME_SYSTEM", kMetadata},     {"EPOCH", kState},              {"X", kState},
-      {"Y", kState},                  {"Z", kState},                  {"X_DOT", kState},
-      {"Y_DOT", kState},              {"Z_DOT", kState},              {"SEMI_MAJOR_AXIS", kKeplerian},
-      {"ECCENTRICITY", kKeplerian},   {"INCLINATION", kKeplerian},    {"RA_OF_ASC_NODE", kKeplerian},
-      {"ARG_OF_PERICENTER", kKeplerian}, {"TRUE_ANOMALY", kKeplerian}, {"MEAN_ANOMALY", kKeplerian},
-      {"GM", kKeplerian},             {"MASS", kSpacecraft},          {"SOLAR_RAD_AREA", kSpacecraft},
-      {"SOLAR_RAD_COEFF", kSpacecraft}, {"DRAG_AREA", kSpacecraft},   {"DRAG_COEFF", kSpacecraft},
-      {"MAN_EPOCH_IGNITION", kManeuver}, {"MAN_DURATION", kManeuver}, {"MAN_DELTA_MASS", kManeuver},
-      {"MAN_REF_FRAME", kManeuver},   {"MAN_DV_1", kManeuver},        {"MAN_DV_2", kManeuver},
-      {"MAN_DV_3", kManeuver}};
+  static const std::map<std::string, Block> kBlocks = {{"CREATION_DATE", kHeader},
+                                                       {"ORIGINATOR", kHeader},
+                                                       {"MESSAGE_ID", kHeader},
+                                                       {"CLASSIFICATION", kHeader},
+                                                       {"OBJECT_NAME", kMetadata},
+                                                       {"OBJECT_ID", kMetadata},
+                                                       {"CENTER_NAME", kMetadata},
+                                                       {"REF_FRAME", kMetadata},
+                                                       {"REF_FRAME_EPOCH", kMetadata},
+                                                       {"TIME_SYSTEM", kMetadata},
+                                                       {"EPOCH", kState},
+                                                       {"X", kState},
+                                                       {"Y", kState},
+                                                       {"Z", kState},
+                                                       {"X_DOT", kState},
+                                                       {"Y_DOT", kState},
+                                                       {"Z_DOT", kState},
+                                                       {"SEMI_MAJOR_AXIS", kKeplerian},
+                                                       {"ECCENTRICITY", kKeplerian},
+                                                       {"INCLINATION", kKeplerian},
+                                                       {"RA_OF_ASC_NODE", kKeplerian},
+                                                       {"ARG_OF_PERICENTER", kKeplerian},
+                                                       {"TRUE_ANOMALY", kKeplerian},
+                                                       {"MEAN_ANOMALY", kKeplerian},
+                                                       {"GM", kKeplerian},
+                                                       {"MASS", kSpacecraft},
+                                                       {"SOLAR_RAD_AREA", kSpacecraft},
+                                                       {"SOLAR_RAD_COEFF", kSpacecraft},
+                                                       {"DRAG_AREA", kSpacecraft},
+                                                       {"DRAG_COEFF", kSpacecraft},
+                                                       {"MAN_EPOCH_IGNITION", kManeuver},
+                                                       {"MAN_DURATION", kManeuver},
+                                                       {"MAN_DELTA_MASS", kManeuver},
+                                                       {"MAN_REF_FRAME", kManeuver},
+                                                       {"MAN_DV_1", kManeuver},
+                                                       {"MAN_DV_2", kManeuver},
+                                                       {"MAN_DV_3", kManeuver}};
   auto it = kBlocks.find(k);
   if (it != kBlocks.end()) return it->second;
   if (IsCovarianceKeyword(k)) return kCovariance;
@@ -73,18 +105,25 @@ OpmLines Sort(const std::string& source, const std::vector<KvnLine>& lines) {
       pending.push_back(l.value);
       continue;
     }
-    if (l.kind != KvnLine::kKeyValue) KvnFail(source, l, "an OPM holds only KEYWORD = value lines and comments");
+    if (l.kind != KvnLine::kKeyValue)
+      KvnFail(source, l, "an OPM holds only KEYWORD = value lines and comments");
     const std::optional<Block> b = BlockOf(l.keyword);
     if (!b) KvnFail(source, l, "unknown OPM keyword");
-    if (*b < current) KvnFail(source, l, "out of order (the OPM blocks are header, metadata, state vector, Keplerian "
-                                         "elements, spacecraft parameters, covariance, maneuvers, user-defined)");
+    if (*b < current)
+      KvnFail(source, l,
+              "out of order (the OPM blocks are header, metadata, state vector, Keplerian "
+              "elements, spacecraft parameters, covariance, maneuvers, user-defined)");
     current = *b;
     if (*b == kManeuver) {
-      if (l.keyword == "MAN_EPOCH_IGNITION") out.maneuvers.push_back({std::move(pending), {}, l.number});
-      if (out.maneuvers.empty()) KvnFail(source, l, "a maneuver block starts with MAN_EPOCH_IGNITION");
+      if (l.keyword == "MAN_EPOCH_IGNITION")
+        out.maneuvers.push_back({std::move(pending), {}, l.number});
+      if (out.maneuvers.empty())
+        KvnFail(source, l, "a maneuver block starts with MAN_EPOCH_IGNITION");
       ManeuverLines& m = out.maneuvers.back();
-      if (l.keyword != "MAN_EPOCH_IGNITION") m.comments.insert(m.comments.end(), pending.begin(), pending.end());
-      if (!m.keys.emplace(l.keyword, l).second) KvnFail(source, l, "repeated in the maneuver block");
+      if (l.keyword != "MAN_EPOCH_IGNITION")
+        m.comments.insert(m.comments.end(), pending.begin(), pending.end());
+      if (!m.keys.emplace(l.keyword, l).second)
+        KvnFail(source, l, "repeated in the maneuver block");
     } else {
       auto& sink = *b == kHeader ? out.header_comments : out.state_comments;
       if (*b == kHeader || *b == kState) sink.insert(sink.end(), pending.begin(), pending.end());
@@ -95,9 +134,11 @@ OpmLines Sort(const std::string& source, const std::vector<KvnLine>& lines) {
   return out;
 }
 
-const KvnLine& Need(const std::string& source, const Keys& keys, const char* keyword, const char* block) {
+const KvnLine& Need(const std::string& source, const Keys& keys, const char* keyword,
+                    const char* block) {
   auto it = keys.find(keyword);
-  if (it == keys.end()) throw ScenarioError(source + ": the " + block + " lacks the mandatory keyword " + keyword);
+  if (it == keys.end())
+    throw ScenarioError(source + ": the " + block + " lacks the mandatory keyword " + keyword);
   return it->second;
 }
 
@@ -115,7 +156,8 @@ OpmKeplerian ReadKeplerian(const std::string& source, const Keys& k) {
     KvnFail(source, k.at("MEAN_ANOMALY"), "give TRUE_ANOMALY or MEAN_ANOMALY, not both");
   }
   if (!mean && k.count("TRUE_ANOMALY") == 0) {
-    throw ScenarioError(source + ": the Keplerian elements block lacks TRUE_ANOMALY or MEAN_ANOMALY");
+    throw ScenarioError(source +
+                        ": the Keplerian elements block lacks TRUE_ANOMALY or MEAN_ANOMALY");
   }
   e.anomaly = mean ? dynamics::AnomalyKind::kMean : dynamics::AnomalyKind::kTrue;
   e.anomaly_rad = KvnNumber(source, k.at(mean ? "MEAN_ANOMALY" : "TRUE_ANOMALY"), "deg") * kDeg;
@@ -125,17 +167,20 @@ OpmKeplerian ReadKeplerian(const std::string& source, const Keys& k) {
   try {
     dynamics::EquinoctialFromKeplerian(e);  // range checks (a > 0, 0 <= e < 1, 0 <= i < 180 deg)
   } catch (const std::invalid_argument& ex) {
-    KvnFail(source, k.at("SEMI_MAJOR_AXIS"), std::string("invalid Keplerian elements: ") + ex.what());
+    KvnFail(source, k.at("SEMI_MAJOR_AXIS"),
+            std::string("invalid Keplerian elements: ") + ex.what());
   }
   return out;
 }
 
-OpmManeuver ReadManeuver(const std::string& source, const ManeuverLines& m, dynamics::TimeScale scale) {
+OpmManeuver ReadManeuver(const std::string& source, const ManeuverLines& m,
+                         dynamics::TimeScale scale) {
   const char* block = "maneuver block";
-  for (const char* key : {"MAN_EPOCH_IGNITION", "MAN_DURATION", "MAN_DELTA_MASS", "MAN_REF_FRAME", "MAN_DV_1",
-                          "MAN_DV_2", "MAN_DV_3"}) {
+  for (const char* key : {"MAN_EPOCH_IGNITION", "MAN_DURATION", "MAN_DELTA_MASS", "MAN_REF_FRAME",
+                          "MAN_DV_1", "MAN_DV_2", "MAN_DV_3"}) {
     if (m.keys.count(key) == 0) {
-      throw ScenarioError(source + ":" + std::to_string(m.first_line) + ": the " + block + " lacks " + key);
+      throw ScenarioError(source + ":" + std::to_string(m.first_line) + ": the " + block +
+                          " lacks " + key);
     }
   }
   OpmManeuver out;
@@ -144,7 +189,8 @@ OpmManeuver ReadManeuver(const std::string& source, const ManeuverLines& m, dyna
   out.duration_s = KvnNumber(source, m.keys.at("MAN_DURATION"), "s");
   if (out.duration_s < 0) KvnFail(source, m.keys.at("MAN_DURATION"), "must be >= 0");
   out.delta_mass_kg = KvnNumber(source, m.keys.at("MAN_DELTA_MASS"), "kg");
-  if (out.delta_mass_kg > 0) KvnFail(source, m.keys.at("MAN_DELTA_MASS"), "must be <= 0 (mass lost)");
+  if (out.delta_mass_kg > 0)
+    KvnFail(source, m.keys.at("MAN_DELTA_MASS"), "must be <= 0 (mass lost)");
   out.ref_frame = m.keys.at("MAN_REF_FRAME").value;
   const char* dv[3] = {"MAN_DV_1", "MAN_DV_2", "MAN_DV_3"};
   for (int i = 0; i < 3; ++i) out.dv_m_s[i] = KvnNumber(source, m.keys.at(dv[i]), "km/s") * 1e3;
@@ -167,7 +213,8 @@ std::string FormatOpm(const Opm& o) {
   os << KvnKeyValue("EPOCH", CcsdsEpochText(o.epoch)) << "\n";
   const char* names[6] = {"X", "Y", "Z", "X_DOT", "Y_DOT", "Z_DOT"};
   for (int i = 0; i < 6; ++i) {
-    os << KvnKeyValue(names[i], KvnFixed(o.rv[i] / 1e3, i < 3 ? 6 : 9), i < 3 ? "km" : "km/s") << "\n";
+    os << KvnKeyValue(names[i], KvnFixed(o.rv[i] / 1e3, i < 3 ? 6 : 9), i < 3 ? "km" : "km/s")
+       << "\n";
   }
   if (o.keplerian) {
     const dynamics::KeplerianElements& k = o.keplerian->elements;
@@ -199,7 +246,8 @@ std::string FormatOpm(const Opm& o) {
        << KvnKeyValue("MAN_DELTA_MASS", KvnFixed(m.delta_mass_kg, 6), "kg") << "\n"
        << KvnKeyValue("MAN_REF_FRAME", m.ref_frame) << "\n";
     for (int i = 0; i < 3; ++i) {
-      os << KvnKeyValue("MAN_DV_" + std::to_string(i + 1), KvnFixed(m.dv_m_s[i] / 1e3, 12), "km/s") << "\n";
+      os << KvnKeyValue("MAN_DV_" + std::to_string(i + 1), KvnFixed(m.dv_m_s[i] / 1e3, 12), "km/s")
+         << "\n";
     }
   }
   return os.str();
@@ -207,8 +255,10 @@ std::string FormatOpm(const Opm& o) {
 
 Opm ParseOpm(std::string_view text, const std::string& source) {
   const std::vector<KvnLine> lines = ReadKvn(text);
-  if (lines.empty() || lines[0].kind != KvnLine::kKeyValue || lines[0].keyword != "CCSDS_OPM_VERS") {
-    throw ScenarioError(source + ": not a CCSDS OPM in KVN form (the first line must be CCSDS_OPM_VERS = ...)");
+  if (lines.empty() || lines[0].kind != KvnLine::kKeyValue ||
+      lines[0].keyword != "CCSDS_OPM_VERS") {
+    throw ScenarioError(
+        source + ": not a CCSDS OPM in KVN form (the first line must be CCSDS_OPM_VERS = ...)");
   }
   Opm o;
   o.version = lines[0].value;
@@ -219,20 +269,25 @@ Opm ParseOpm(std::string_view text, const std::string& source) {
   const Keys& k = s.single;
   o.comments = s.header_comments;
   o.state_comments = s.state_comments;
-  o.creation_date = KvnEpoch(source, Need(source, k, "CREATION_DATE", "header"), dynamics::TimeScale::kUtc);
+  o.creation_date =
+      KvnEpoch(source, Need(source, k, "CREATION_DATE", "header"), dynamics::TimeScale::kUtc);
   o.originator = Need(source, k, "ORIGINATOR", "header").value;
   o.object_name = Need(source, k, "OBJECT_NAME", "metadata").value;
   o.object_id = Need(source, k, "OBJECT_ID", "metadata").value;
   KvnCheckCenter(source, Need(source, k, "CENTER_NAME", "metadata"));
   o.frame = KvnFrame(source, Need(source, k, "REF_FRAME", "metadata"));
-  if (k.count("REF_FRAME_EPOCH")) KvnFail(source, k.at("REF_FRAME_EPOCH"), "not used with EME2000 or GCRF");
-  const dynamics::TimeScale scale = KvnTimeSystem(source, Need(source, k, "TIME_SYSTEM", "metadata"));
+  if (k.count("REF_FRAME_EPOCH"))
+    KvnFail(source, k.at("REF_FRAME_EPOCH"), "not used with EME2000 or GCRF");
+  const dynamics::TimeScale scale =
+      KvnTimeSystem(source, Need(source, k, "TIME_SYSTEM", "metadata"));
   o.epoch = KvnEpoch(source, Need(source, k, "EPOCH", "state vector"), scale);
   const char* names[6] = {"X", "Y", "Z", "X_DOT", "Y_DOT", "Z_DOT"};
   for (int i = 0; i < 6; ++i) {
-    o.rv[i] = KvnNumber(source, Need(source, k, names[i], "state vector"), i < 3 ? "km" : "km/s") * 1e3;
+    o.rv[i] =
+        KvnNumber(source, Need(source, k, names[i], "state vector"), i < 3 ? "km" : "km/s") * 1e3;
   }
-  if (k.count("SEMI_MAJOR_AXIS") || k.count("ECCENTRICITY") || k.count("GM") || k.count("INCLINATION")) {
+  if (k.count("SEMI_MAJOR_AXIS") || k.count("ECCENTRICITY") || k.count("GM") ||
+      k.count("INCLINATION")) {
     o.keplerian = ReadKeplerian(source, k);
   }
   if (k.count("MASS")) {

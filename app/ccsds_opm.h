@@ -39,10 +39,10 @@ struct OpmSpacecraft {
 
 struct OpmManeuver {
   std::vector<std::string> comments;
-  dynamics::Epoch ignition;        // UTC
+  dynamics::Epoch ignition;  // UTC
   double duration_s = 0.0;
-  double delta_mass_kg = 0.0;      // < 0
-  std::string ref_frame = "RTN";   // as written in the file
+  double delta_mass_kg = 0.0;     // < 0
+  std::string ref_frame = "RTN";  // as written in the file
   Eigen::Vector3d dv_m_s = Eigen::Vector3d::Zero();
 };
 
@@ -54,7 +54,7 @@ struct Opm {
   std::string object_name, object_id;
   dynamics::InertialFrame frame = dynamics::InertialFrame::kEme2000;
   std::vector<std::string> state_comments;
-  dynamics::Epoch epoch;                        // UTC
+  dynamics::Epoch epoch;                               // UTC
   dynamics::Vector6d rv = dynamics::Vector6d::Zero();  // m, m/s
   std::optional<OpmKeplerian> keplerian;
   std::optional<OpmSpacecraft> spacecraft;

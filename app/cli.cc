@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <iostream>
-#include <vector>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -39,7 +39,8 @@ struct OverrideFlags {
                                "discretisation scheme: exact_zoh, frozen_start, frozen_mid, "
                                "hermite_simpson, rk4, trapezoid, euler, reference");
     o_formulation = app->add_option("--formulation", formulation, "sparse | condensed");
-    o_encoding = app->add_option("--encoding", encoding, "operational-rule encoding: thesis | tight");
+    o_encoding =
+        app->add_option("--encoding", encoding, "operational-rule encoding: thesis | tight");
   }
   void AddSolverOptions(CLI::App* app) {
     o_time = app->add_option("--time-limit", time_limit, "solver wall-clock limit (s)");
@@ -60,10 +61,12 @@ struct OverrideFlags {
 
 // --oem FILE and --opm-maneuvers FILE (GEO scenarios).
 void AddCcsdsOptions(CLI::App* app, FlightDynamicsFiles* files) {
-  app->add_option("--oem", files->oem,
-                  "also write the nonlinear replay as a CCSDS OEM 2.0 (KVN, EME2000, UTC; GEO only)");
-  app->add_option("--opm-maneuvers", files->opm_maneuvers,
-                  "also write the plan as a CCSDS OPM 2.0 with one maneuver block per burn (GEO only)");
+  app->add_option(
+      "--oem", files->oem,
+      "also write the nonlinear replay as a CCSDS OEM 2.0 (KVN, EME2000, UTC; GEO only)");
+  app->add_option(
+      "--opm-maneuvers", files->opm_maneuvers,
+      "also write the plan as a CCSDS OPM 2.0 with one maneuver block per burn (GEO only)");
 }
 
 std::string CommandLine(int argc, char** argv) {
@@ -81,9 +84,8 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       "Scenario files are JSON, documented in data/scenarios/README.md.\n"
       "Exit codes: 0 solved (optimal or feasible) or check passed, 1 internal error, 2 bad input, "
       "3 infeasible, 4 no solution within the time limit, 5 check failed."};
-  cli.set_version_flag("-V,--version",
-                       std::string("thrustsched ") + THRUSTSCHED_VERSION + " (" +
-                           milp::CbcVersion() + ")");
+  cli.set_version_flag("-V,--version", std::string("thrustsched ") + THRUSTSCHED_VERSION + " (" +
+                                           milp::CbcVersion() + ")");
   cli.require_subcommand(1);
 
   // solve
@@ -96,14 +98,16 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       "Build, solve, check and write results (summary.json, schedule.csv, trajectory.csv, SVG "
       "plots). Command-line options override the scenario.");
   c_solve->add_option("scenario", solve.scenario, "scenario file (JSON)")->required();
-  c_solve->add_option("--out", solve.out_dir, "output directory (default out/<scenario file stem>)");
+  c_solve->add_option("--out", solve.out_dir,
+                      "output directory (default out/<scenario file stem>)");
   solve_flags.AddSolverOptions(c_solve);
   solve_flags.AddModelOptions(c_solve);
   c_solve->add_option("--export-mps", solve.export_mps, "also write the model as free MPS");
   c_solve->add_option("--export-lp", solve.export_lp, "also write the model as CPLEX LP");
   AddCcsdsOptions(c_solve, &solve.ccsds);
   c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
-  c_solve->add_flag("--no-plots", solve.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  c_solve->add_flag("--no-plots", solve.no_plots,
+                    "write the gnuplot scripts but do not run gnuplot");
   c_solve->add_flag("--no-report", solve.no_report,
                     "do not write report.html (the self-contained page with the scenario, result, "
                     "checker verdict, plots and schedule)");
@@ -151,7 +155,8 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       "Map another solver's solution of the exported model back to a schedule, by column names.\n"
       "  cbc model.mps sec 60 solve solu sol.txt            -> --format cbc\n"
       "  glpsol --freemps model.mps --tmlim 60 -o sol.txt   -> --format glpsol\n"
-      "  glpsol --freemps model.mps --tmlim 60 -w sol.raw   -> --format glpsol-raw (full precision)\n"
+      "  glpsol --freemps model.mps --tmlim 60 -w sol.raw   -> --format glpsol-raw (full "
+      "precision)\n"
       "Use the same --scheme/--formulation/--encoding as for the export.");
   c_import->add_option("scenario", imp.scenario, "scenario file (JSON)")->required();
   c_import->add_option("solution", imp.solution, "the solver's solution file")->required();
@@ -180,9 +185,11 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       "year.json, trajectory.csv, per-cycle schedules, checkpoint.json and SVG plots. Exit 0 "
       "when every requested cycle ran (fallbacks are reported, not errors), 4 if interrupted "
       "(continue with --resume).");
-  c_simulate->add_option("scenario", sim.scenario, "scenario file (JSON) with a long_horizon section")
+  c_simulate
+      ->add_option("scenario", sim.scenario, "scenario file (JSON) with a long_horizon section")
       ->required();
-  c_simulate->add_option("--out", sim.out_dir, "output directory (default out/<scenario file stem>)");
+  c_simulate->add_option("--out", sim.out_dir,
+                         "output directory (default out/<scenario file stem>)");
   c_simulate->add_option("--cycles", sim.cycles, "stop once this many cycles (in total) are done")
       ->check(CLI::PositiveNumber);
   c_simulate->add_flag("--resume", sim.resume,
@@ -192,7 +199,8 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
                        "are removed; without --resume or --force such a directory is refused "
                        "with exit 2)");
   c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
-  c_simulate->add_flag("--no-plots", sim.no_plots, "write the gnuplot scripts but do not run gnuplot");
+  c_simulate->add_flag("--no-plots", sim.no_plots,
+                       "write the gnuplot scripts but do not run gnuplot");
   c_simulate->add_flag("--no-report", sim.no_report,
                        "do not write report.html (nor the year plots only it shows)");
   AddCcsdsOptions(c_simulate, &sim.ccsds);

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -108,8 +108,8 @@ std::string ModelFileExtension(const std::string& path, const std::string& optio
 
 // The model file of a scenario: its NAME is the scenario's name; every
 // failure is bad input (exit code 2).
-void WriteScenarioModelFile(const std::string& path, const milp::LpData& model, const std::string& name,
-                            bool obfuscate) {
+void WriteScenarioModelFile(const std::string& path, const milp::LpData& model,
+                            const std::string& name, bool obfuscate) {
   milp::LpData lp = model;
   lp.name = name;
   ModelFileExtension(path);  // a ScenarioError for a name ending in neither .mps nor .lp
@@ -122,7 +122,8 @@ void WriteScenarioModelFile(const std::string& path, const milp::LpData& model, 
 
 // Runs the checker on burns; a failing nonlinear replay (e.g. the orbit leaves
 // the model's validity) is reported and the linear check kept.
-transcription::CheckReport RunChecker(const Scenario& s, const std::vector<transcription::Burn>& burns,
+transcription::CheckReport RunChecker(const Scenario& s,
+                                      const std::vector<transcription::Burn>& burns,
                                       std::string* nonlinear_error) {
   try {
     return transcription::CheckSchedule(s.problem, burns, s.check);
@@ -153,14 +154,14 @@ void PrintCheck(std::ostream& os, const Scenario& s, const transcription::CheckR
   if (r.nonlinear_checked) {
     os << "nonlinear     window violation " << F(r.max_window_violation_nonlinear_deg, 4)
        << " deg, max |lat| " << F(r.max_abs_lat_deg, 4) << " deg, max |lon - station| "
-       << F(r.max_abs_lon_deg, 4) << " deg, ~"
-       << FormatDuration(r.time_outside_window_nonlinear_s) << " outside\n";
+       << F(r.max_abs_lon_deg, 4) << " deg, ~" << FormatDuration(r.time_outside_window_nonlinear_s)
+       << " outside\n";
   }
   for (const std::string& f : v.findings) os << "  finding: " << f << "\n";
 }
 
-void PrintImpulsiveCheck(std::ostream& os, const Scenario& s, const transcription::ImpulsiveCheck& c,
-                         const CheckVerdict& v) {
+void PrintImpulsiveCheck(std::ostream& os, const Scenario& s,
+                         const transcription::ImpulsiveCheck& c, const CheckVerdict& v) {
   os << "check         " << (v.passed ? "PASSED" : "FAILED");
   if (s.problem.window.enabled()) {
     os << ": window violation " << F(c.max_window_violation * s.window_unit_per_output_unit, 4)
@@ -176,7 +177,8 @@ std::string BurnCounts(const Scenario& s, const transcription::Schedule& sch) {
   for (const auto& i : sch.impulses) ++count[i.thruster];
   std::string out;
   const auto names = s.thruster_names();
-  for (const auto& [i, c] : count) out += (out.empty() ? "" : ", ") + names[i] + " " + std::to_string(c);
+  for (const auto& [i, c] : count)
+    out += (out.empty() ? "" : ", ") + names[i] + " " + std::to_string(c);
   return out;
 }
 
@@ -262,8 +264,8 @@ int RunSolve(const SolveArgs& a) {
   const transcription::ScheduleMilp milp(s.problem, s.build);
   if (!a.quiet) {
     err << "model: " << MilpLine(milp, s) << "; discretised in "
-        << Secs(milp.stats().discretise_seconds) << ", built in " << Secs(milp.stats().build_seconds)
-        << "\n";
+        << Secs(milp.stats().discretise_seconds) << ", built in "
+        << Secs(milp.stats().build_seconds) << "\n";
   }
   for (const std::string& reason : milp.infeasibility_reasons()) {
     err << "note: infeasible by construction: " << reason << "\n";
@@ -281,7 +283,8 @@ int RunSolve(const SolveArgs& a) {
   // The best incumbent seen so far: progress reports between incumbents may
   // carry NaN for it, and the line should still show it.
   auto best = std::make_shared<double>(std::nan(""));
-  opt.milp.progress = [quiet, best, &err, hook = a.hooks.on_progress](const milp::SolveProgress& p) {
+  opt.milp.progress = [quiet, best, &err,
+                       hook = a.hooks.on_progress](const milp::SolveProgress& p) {
     if (hook) hook(p);
     if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
     if (quiet || p.wall_seconds < 3.0) return;
@@ -312,8 +315,8 @@ int RunSolve(const SolveArgs& a) {
   }
   interrupted = InterruptWatcher::interrupted();
   if (interrupted) {
-    err << "interrupted (" << InterruptWatcher::signal_name() << ") after "
-        << Secs(Since(t_start)) << ": "
+    err << "interrupted (" << InterruptWatcher::signal_name() << ") after " << Secs(Since(t_start))
+        << ": "
         << (r.has_schedule() ? "checking and writing the best schedule found"
                              : "no schedule was found; writing the summary")
         << "\n";
@@ -356,9 +359,9 @@ int RunSolve(const SolveArgs& a) {
     }
     WritePlotsReport(folder, s, r.check.nonlinear_checked, a.no_plots, &files, err);
     if (a.ccsds.any()) {
-      for (const std::string& f :
-           WriteFlightDynamicsFiles(s, InFolder(a.ccsds, folder),
-                                    {ScenarioReplayLeg(s, r.schedule.burns, r.check.sample_times)})) {
+      for (const std::string& f : WriteFlightDynamicsFiles(
+               s, InFolder(a.ccsds, folder),
+               {ScenarioReplayLeg(s, r.schedule.burns, r.check.sample_times)})) {
         files.push_back(ShownPath(folder, f));
       }
     }
@@ -403,7 +406,8 @@ int RunSolve(const SolveArgs& a) {
   out << "\n";
   if (rounds) PrintConjunctionSolve(out, *rounds);
   if (!sr.detail.empty() && !sr.has_solution()) out << "solver says   " << sr.detail << "\n";
-  for (const std::string& reason : r.infeasibility_reasons) out << "reason        " << reason << "\n";
+  for (const std::string& reason : r.infeasibility_reasons)
+    out << "reason        " << reason << "\n";
   if (r.has_schedule()) {
     const transcription::Schedule& sch = r.schedule;
     out << "consumption   " << F(sch.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
@@ -418,7 +422,8 @@ int RunSolve(const SolveArgs& a) {
   }
   out << "times         discretise " << Secs(r.stats.discretise_seconds) << ", build "
       << Secs(r.stats.build_seconds) << ", solve " << Secs(sr.wall_seconds);
-  if (!sr.incumbents.empty()) out << " (first solution " << Secs(sr.incumbents.front().wall_seconds) << ")";
+  if (!sr.incumbents.empty())
+    out << " (first solution " << Secs(sr.incumbents.front().wall_seconds) << ")";
   if (r.diagnosis_seconds > 0.0) out << ", diagnose " << Secs(r.diagnosis_seconds);
   if (r.checked) out << ", check " << Secs(r.check_seconds);
   out << ", total " << Secs(facts.total_seconds) << "\n";
@@ -428,7 +433,8 @@ int RunSolve(const SolveArgs& a) {
     } else {
       PrintCheck(out, s, r.check, Judge(s, r.check));
     }
-    if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
+    if (!nonlinear_error.empty())
+      out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
   }
   if (conjunction) PrintConjunctionCheck(out, *conjunction);
   out << "output        " << target << " (" << JoinNames(files) << ")\n";
@@ -456,7 +462,7 @@ int RunExport(const ExportArgs& a) {
   std::cout << "wrote " << a.file << ": " << MilpLine(milp, s) << "\n"
             << "objective: " << ToString(s.problem.objective.kind)
             << (s.problem.objective.kind == transcription::ObjectiveKind::kPropellant ? " (kg)"
-                                                                                     : " (m/s)")
+                                                                                      : " (m/s)")
             << ", minimisation; binaries named on_<thruster index>_<interval> (thrusters: "
             << JoinNames(s.thruster_names()) << ")\n";
   return kExitOk;
@@ -480,8 +486,8 @@ int RunCheck(const CheckArgs& a) {
     sch.impulses = imp;
     double dv = 0.0;
     for (const auto& i : imp) dv += i.delta_v_m_s;
-    out << "schedule      " << a.schedule << ": " << imp.size() << " impulses, total "
-        << F(dv, 8) << " m/s\n";
+    out << "schedule      " << a.schedule << ": " << imp.size() << " impulses, total " << F(dv, 8)
+        << " m/s\n";
     PrintImpulsiveCheck(out, s, c, v);
     const auto conjunction = VerifyConjunction(s, {}, imp);
     if (conjunction) PrintConjunctionCheck(out, *conjunction);
@@ -509,7 +515,8 @@ int RunCheck(const CheckArgs& a) {
         << F(sch.consumption_l1_m_s, 8) << " m/s (L1), delta-v " << F(sch.delta_v_m_s, 8)
         << " m/s, propellant " << F(sch.propellant_kg, 8) << " kg\n";
     PrintCheck(out, s, r, v);
-    if (!nonlinear_error.empty()) out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
+    if (!nonlinear_error.empty())
+      out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
     const auto conjunction = VerifyConjunction(s, burns, {});
     if (conjunction) PrintConjunctionCheck(out, *conjunction);
     passed = v.passed && (!conjunction || conjunction->passed());

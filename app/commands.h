@@ -16,17 +16,17 @@ namespace thrustsched::app {
 
 /// Exit codes of the CLI: a contract scripts rely on (README.md,
 /// data/scenarios/README.md section 1).
-inline constexpr int kExitOk = 0;            // solved (optimal or feasible) / check passed
-inline constexpr int kExitInternal = 1;      // internal error
-inline constexpr int kExitBadInput = 2;      // bad input (scenario, files, options)
-inline constexpr int kExitInfeasible = 3;    // proven infeasible
-inline constexpr int kExitNoSolution = 4;    // no solution within the limits
+inline constexpr int kExitOk = 0;          // solved (optimal or feasible) / check passed
+inline constexpr int kExitInternal = 1;    // internal error
+inline constexpr int kExitBadInput = 2;    // bad input (scenario, files, options)
+inline constexpr int kExitInfeasible = 3;  // proven infeasible
+inline constexpr int kExitNoSolution = 4;  // no solution within the limits
 /// `simulate` stopped by a signal before every requested cycle ran (continue
 /// with --resume). The same number as kExitNoSolution because the documented
 /// contract gives 4 to both (data/scenarios/README.md section 1); a name of its
 /// own so that the code says which case it means.
 inline constexpr int kExitInterrupted = 4;
-inline constexpr int kExitCheckFailed = 5;   // `check`: the schedule fails the checks
+inline constexpr int kExitCheckFailed = 5;  // `check`: the schedule fails the checks
 
 struct SolveArgs {
   std::string scenario;
@@ -36,7 +36,7 @@ struct SolveArgs {
   bool quiet = false;
   bool no_plots = false;
   bool no_report = false;  // skip report.html
-  bool force = false;  // replace an earlier run's files in out_dir
+  bool force = false;      // replace an earlier run's files in out_dir
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
   RunHooks hooks;             // observers (tests, embedding programs): app/run_hooks.h

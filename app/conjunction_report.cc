@@ -31,14 +31,15 @@ std::optional<transcription::ConjunctionCheckReport> VerifyConjunction(
 }
 
 void PrintKeepOut(std::ostream& os, const transcription::KeepOutStats& k) {
-  os << "keep-out      " << k.num_checks << " checks (" << k.checks_clear << " clear whatever the plan, "
-     << k.checks_single_face << " with one possible face, " << k.checks_with_binaries
-     << " with binaries): " << k.num_binaries << " binaries, " << k.num_rows << " rows; big-M "
-     << G(k.big_m_min_m) << " to " << G(k.big_m_max_m) << " m (median " << G(k.big_m_median_m)
-     << "), from the cost budget " << G(k.cost_budget) << "; eps' " << G(k.threshold) << ", margin up to "
-     << G(k.margin_max_m) << " m";
+  os << "keep-out      " << k.num_checks << " checks (" << k.checks_clear
+     << " clear whatever the plan, " << k.checks_single_face << " with one possible face, "
+     << k.checks_with_binaries << " with binaries): " << k.num_binaries << " binaries, "
+     << k.num_rows << " rows; big-M " << G(k.big_m_min_m) << " to " << G(k.big_m_max_m)
+     << " m (median " << G(k.big_m_median_m) << "), from the cost budget " << G(k.cost_budget)
+     << "; eps' " << G(k.threshold) << ", margin up to " << G(k.margin_max_m) << " m";
   if (k.covariance_repaired) {
-    os << "; covariance repaired (smallest eigenvalue " << G(k.covariance_min_eigenvalue) << " clipped to 0)";
+    os << "; covariance repaired (smallest eigenvalue " << G(k.covariance_min_eigenvalue)
+       << " clipped to 0)";
   }
   os << "\n";
 }
@@ -46,10 +47,10 @@ void PrintKeepOut(std::ostream& os, const transcription::KeepOutStats& k) {
 void PrintConjunctionCheck(std::ostream& os, const transcription::ConjunctionCheckReport& r) {
   os << "conjunction   " << (r.passed() ? "PASSED" : "FAILED") << ": max instantaneous risk "
      << G(r.max_risk) << " at t = " << G(r.max_risk_time_s, 8) << " s (threshold " << G(r.threshold)
-     << "; without manoeuvre " << G(r.max_risk_unmanoeuvred) << " at t = "
-     << G(r.max_risk_unmanoeuvred_time_s, 8) << " s); closest mean approach "
-     << G(r.min_mean_distance_m) << " m (without manoeuvre " << G(r.min_mean_distance_unmanoeuvred_m)
-     << " m)\n";
+     << "; without manoeuvre " << G(r.max_risk_unmanoeuvred)
+     << " at t = " << G(r.max_risk_unmanoeuvred_time_s, 8) << " s); closest mean approach "
+     << G(r.min_mean_distance_m) << " m (without manoeuvre "
+     << G(r.min_mean_distance_unmanoeuvred_m) << " m)\n";
   if (r.samples > 0) {
     os << "monte carlo   " << r.samples << " samples, step " << G(r.step_s) << " s: linear "
        << r.collisions_linear << " collisions (closest " << G(r.min_distance_linear_m) << " m; "
@@ -66,15 +67,15 @@ void PrintConjunctionCheck(std::ostream& os, const transcription::ConjunctionChe
 
 void PrintConjunctionSolve(std::ostream& os, const transcription::ConjunctionSolve& cs) {
   if (!std::isnan(cs.start_objective)) {
-    os << "start         " << G(cs.start_objective, 6) << " (fixed faces: " << cs.start_label << "), "
-       << G(cs.start_seconds, 3) << " s\n";
+    os << "start         " << G(cs.start_objective, 6) << " (fixed faces: " << cs.start_label
+       << "), " << G(cs.start_seconds, 3) << " s\n";
   }
   for (size_t i = 0; i < cs.rounds.size(); ++i) {
     const transcription::BudgetRound& b = cs.rounds[i];
-    os << "round " << i + 1 << "       budget " << G(b.budget, 6) << ": " << b.binaries << " keep-out binaries, "
-       << StatusName(b.status) << ", objective " << G(b.objective, 6) << ", bound " << G(b.best_bound, 6)
-       << ", " << G(b.seconds, 3) << " s" << (b.restarted ? " (cheaper plan found: rebuilt with its cost)" : "")
-       << "\n";
+    os << "round " << i + 1 << "       budget " << G(b.budget, 6) << ": " << b.binaries
+       << " keep-out binaries, " << StatusName(b.status) << ", objective " << G(b.objective, 6)
+       << ", bound " << G(b.best_bound, 6) << ", " << G(b.seconds, 3) << " s"
+       << (b.restarted ? " (cheaper plan found: rebuilt with its cost)" : "") << "\n";
   }
 }
 
@@ -126,25 +127,26 @@ nlohmann::json ConjunctionJson(const std::optional<transcription::KeepOutStats>&
     j["verification"] = nullptr;
     return j;
   }
-  j["verification"] = {{"passed", v->passed()},
-                       {"threshold", v->threshold},
-                       {"max_risk", v->max_risk},
-                       {"max_risk_time_s", FiniteOrNull(v->max_risk_time_s)},
-                       {"max_risk_unmanoeuvred", v->max_risk_unmanoeuvred},
-                       {"max_risk_unmanoeuvred_time_s", FiniteOrNull(v->max_risk_unmanoeuvred_time_s)},
-                       {"min_mean_distance_m", FiniteOrNull(v->min_mean_distance_m)},
-                       {"min_mean_distance_time_s", FiniteOrNull(v->min_mean_distance_time_s)},
-                       {"min_mean_distance_unmanoeuvred_m", FiniteOrNull(v->min_mean_distance_unmanoeuvred_m)},
-                       {"monte_carlo_samples", v->samples},
-                       {"monte_carlo_step_s", v->step_s},
-                       {"collisions_linear", v->collisions_linear},
-                       {"collisions_unmanoeuvred_linear", v->collisions_unmanoeuvred_linear},
-                       {"min_distance_linear_m", FiniteOrNull(v->min_distance_linear_m)},
-                       {"nonlinear_checked", v->nonlinear_checked},
-                       {"nonlinear_note", v->nonlinear_note},
-                       {"collisions_nonlinear", v->collisions_nonlinear},
-                       {"min_distance_nonlinear_m", FiniteOrNull(v->min_distance_nonlinear_m)},
-                       {"seconds", v->seconds}};
+  j["verification"] = {
+      {"passed", v->passed()},
+      {"threshold", v->threshold},
+      {"max_risk", v->max_risk},
+      {"max_risk_time_s", FiniteOrNull(v->max_risk_time_s)},
+      {"max_risk_unmanoeuvred", v->max_risk_unmanoeuvred},
+      {"max_risk_unmanoeuvred_time_s", FiniteOrNull(v->max_risk_unmanoeuvred_time_s)},
+      {"min_mean_distance_m", FiniteOrNull(v->min_mean_distance_m)},
+      {"min_mean_distance_time_s", FiniteOrNull(v->min_mean_distance_time_s)},
+      {"min_mean_distance_unmanoeuvred_m", FiniteOrNull(v->min_mean_distance_unmanoeuvred_m)},
+      {"monte_carlo_samples", v->samples},
+      {"monte_carlo_step_s", v->step_s},
+      {"collisions_linear", v->collisions_linear},
+      {"collisions_unmanoeuvred_linear", v->collisions_unmanoeuvred_linear},
+      {"min_distance_linear_m", FiniteOrNull(v->min_distance_linear_m)},
+      {"nonlinear_checked", v->nonlinear_checked},
+      {"nonlinear_note", v->nonlinear_note},
+      {"collisions_nonlinear", v->collisions_nonlinear},
+      {"min_distance_nonlinear_m", FiniteOrNull(v->min_distance_nonlinear_m)},
+      {"seconds", v->seconds}};
   return j;
 }
 

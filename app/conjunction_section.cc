@@ -40,7 +40,8 @@ void ParseChecks(JsonObject ch, transcription::ConjunctionSpec* c) {
   c->num_checks = ch.Integer("count", 1, 100000);
   if (auto t = ch.OptionalNumber("start_s")) c->check_start_s = *t;
   if (auto t = ch.OptionalNumber("end_s")) c->check_end_s = *t;
-  if (!std::isnan(c->check_start_s) && !std::isnan(c->check_end_s) && !(c->check_end_s > c->check_start_s)) {
+  if (!std::isnan(c->check_start_s) && !std::isnan(c->check_end_s) &&
+      !(c->check_end_s > c->check_start_s)) {
     ch.Fail("end_s", FormatNumber(c->check_end_s) + " s is not after start_s " +
                          FormatNumber(c->check_start_s) + " s");
   }
@@ -60,7 +61,8 @@ void ParseSolveStrategy(JsonObject v, transcription::ConjunctionSolveOptions* o)
 }
 
 void ParseVerification(JsonObject v, transcription::ConjunctionCheckOptions* o) {
-  o->monte_carlo_samples = v.OptionalInteger("monte_carlo_samples", 0, 10000000).value_or(o->monte_carlo_samples);
+  o->monte_carlo_samples =
+      v.OptionalInteger("monte_carlo_samples", 0, 10000000).value_or(o->monte_carlo_samples);
   o->seed = static_cast<std::uint64_t>(v.OptionalInteger("seed", 0, 2147483647).value_or(1));
   o->sample_step_s = v.OptionalNumber("sample_step_s", Bound::kPositive).value_or(0.0);
   o->nonlinear = v.OptionalBool("nonlinear").value_or(true);
@@ -68,7 +70,8 @@ void ParseVerification(JsonObject v, transcription::ConjunctionCheckOptions* o) 
 }
 
 // Polytope: "cube" or {"faces": [[ax, ay, az], ...], "offsets_m": [...]}, in the section's frame.
-void ParsePolytope(JsonObject& c, const Eigen::Matrix3d& to_local, transcription::ConjunctionSpec* spec) {
+void ParsePolytope(JsonObject& c, const Eigen::Matrix3d& to_local,
+                   transcription::ConjunctionSpec* spec) {
   if (!c.Has("polytope")) return;
   const nlohmann::json& v = c.Raw("polytope");
   if (v.is_string()) {
@@ -104,7 +107,8 @@ void ParseConjunction(JsonObject c, Scenario* s) {
   JsonObject sec = c.Object("secondary");
   spec.state_time_s = sec.OptionalNumber("time_s").value_or(s->start_s);
   spec.secondary_state.resize(6);
-  spec.secondary_state << to_local * ReadVector3(sec, "position_m"), to_local * ReadVector3(sec, "velocity_m_s");
+  spec.secondary_state << to_local * ReadVector3(sec, "position_m"),
+      to_local * ReadVector3(sec, "velocity_m_s");
   sec.Finish();
 
   Eigen::MatrixXd t6 = Eigen::MatrixXd::Zero(6, 6);
@@ -130,8 +134,9 @@ void ParseConjunction(JsonObject c, Scenario* s) {
     const double a = std::isnan(spec.check_start_s) ? s->problem.grid.front() : spec.check_start_s;
     const double b = std::isnan(spec.check_end_s) ? s->problem.grid.back() : spec.check_end_s;
     if (!(risk < 1.0)) c.Fail("risk_threshold", "must be in (0, 1), got " + FormatNumber(risk));
-    spec.instantaneous_threshold =
-        Wrap(c.FieldPath("risk_threshold"), [&] { return transcription::InstantaneousThreshold(risk, b - a, t0); });
+    spec.instantaneous_threshold = Wrap(c.FieldPath("risk_threshold"), [&] {
+      return transcription::InstantaneousThreshold(risk, b - a, t0);
+    });
   }
   ParsePolytope(c, to_local, &spec);
   if (auto budget = c.OptionalNumber("cost_budget", Bound::kPositive)) spec.cost_budget = *budget;

@@ -4,7 +4,8 @@
 // Every field is documented in data/scenarios/README.md.
 //
 //   app::JsonObject top(json, "scenario");
-//   app::ParseConjunction(top.Object("conjunction"), &scenario);   // after model, spacecraft, horizon
+//   app::ParseConjunction(top.Object("conjunction"), &scenario);   // after model, spacecraft,
+//   horizon
 //   // scenario.problem.conjunction and scenario.conjunction_check are set
 //
 // Errors are ScenarioError naming the field path and the value.

@@ -46,18 +46,21 @@ std::vector<double> Unique(std::vector<double> t) {
 void CheckNoLeapSecond(const Scenario& s, double t0, double t1) {
   const dynamics::Epoch from = ModelEpoch(s).PlusSeconds(t0);
   if (dynamics::CrossesLeapSecond(from, t1 - t0)) {
-    throw ScenarioError("UTC labels: the run from " + from.ToIso8601() + " to " +
-                        from.PlusSeconds(t1 - t0).ToIso8601() +
-                        " crosses a leap second; the model clock is uniform, so UTC labels after it would be 1 s "
-                        "late (start the scenario after the leap second)");
+    throw ScenarioError(
+        "UTC labels: the run from " + from.ToIso8601() + " to " +
+        from.PlusSeconds(t1 - t0).ToIso8601() +
+        " crosses a leap second; the model clock is uniform, so UTC labels after it would be 1 s "
+        "late (start the scenario after the leap second)");
   }
 }
 
 std::string ObjectName(const Scenario& s) {
-  return s.initial_orbit && !s.initial_orbit->object_name.empty() ? s.initial_orbit->object_name : s.name;
+  return s.initial_orbit && !s.initial_orbit->object_name.empty() ? s.initial_orbit->object_name
+                                                                  : s.name;
 }
 std::string ObjectId(const Scenario& s) {
-  return s.initial_orbit && !s.initial_orbit->object_id.empty() ? s.initial_orbit->object_id : "UNKNOWN";
+  return s.initial_orbit && !s.initial_orbit->object_id.empty() ? s.initial_orbit->object_id
+                                                                : "UNKNOWN";
 }
 
 // Indices of the burns on during (t0, t1) (tested at the midpoint).
@@ -70,29 +73,34 @@ std::vector<int> OnDuring(const std::vector<Burn>& burns, double t0, double t1) 
   return on;
 }
 
-std::string ArcComment(const Scenario& s, const std::vector<Burn>& burns, const std::vector<int>& on) {
+std::string ArcComment(const Scenario& s, const std::vector<Burn>& burns,
+                       const std::vector<int>& on) {
   if (on.empty()) return "coast arc (no thrust)";
   std::ostringstream os;
   os << "burn arc:";
   for (int k : on) {
     const dynamics::Thruster& t = s.problem.thrusters.thruster(burns[k].thruster);
-    os << " " << t.name << " on, " << s.problem.thrusters.thrust_n() << " N along RTN [" << KvnFixed(t.direction.x(), 6)
-       << " " << KvnFixed(t.direction.y(), 6) << " " << KvnFixed(t.direction.z(), 6) << "];";
+    os << " " << t.name << " on, " << s.problem.thrusters.thrust_n() << " N along RTN ["
+       << KvnFixed(t.direction.x(), 6) << " " << KvnFixed(t.direction.y(), 6) << " "
+       << KvnFixed(t.direction.z(), 6) << "];";
   }
   return os.str();
 }
 
 std::vector<std::string> HeaderComments(const Scenario& s) {
-  return {"thrustsched nonlinear replay of scenario \"" + s.name + "\" (station " +
-              KvnFixed(s.geo->station_longitude_deg, 4) + " deg E)",
-          "model frame: mean equator and equinox of " + s.geo->epoch +
-              " (IAU 1976 precession), rotated to EME2000 for this file; nutation neglected; UT1 = UTC",
-          std::string("UTC labels on a uniform clock with TAI-UTC = 37 s; the leap-second table is known up to ") +
-              dynamics::kLeapSecondsKnownUntil,
-          "segments are split at every burn start and end: do not interpolate across them"};
+  return {
+      "thrustsched nonlinear replay of scenario \"" + s.name + "\" (station " +
+          KvnFixed(s.geo->station_longitude_deg, 4) + " deg E)",
+      "model frame: mean equator and equinox of " + s.geo->epoch +
+          " (IAU 1976 precession), rotated to EME2000 for this file; nutation neglected; UT1 = UTC",
+      std::string("UTC labels on a uniform clock with TAI-UTC = 37 s; the leap-second table is "
+                  "known up to ") +
+          dynamics::kLeapSecondsKnownUntil,
+      "segments are split at every burn start and end: do not interpolate across them"};
 }
 
-std::vector<OemSegment> LegSegments(const Scenario& s, const dynamics::GeoSimulator& sim, const ReplayLeg& leg) {
+std::vector<OemSegment> LegSegments(const Scenario& s, const dynamics::GeoSimulator& sim,
+                                    const ReplayLeg& leg) {
   std::vector<double> events = {leg.start_s, leg.end_s};
   for (const Burn& b : leg.burns) {
     if (b.start_s < leg.start_s - kTimeTolerance || b.end_s > leg.end_s + kTimeTolerance) {
@@ -107,10 +115,11 @@ std::vector<OemSegment> LegSegments(const Scenario& s, const dynamics::GeoSimula
     if (t >= leg.start_s - kTimeTolerance && t <= leg.end_s + kTimeTolerance) times.push_back(t);
   }
   times = Unique(times);
-  const std::vector<dynamics::Vector6d> states =
-      sim.Propagate(leg.eci, leg.start_s, s.problem.thrusters.AccelerationMatrix(), Pulses(leg.burns), times);
+  const std::vector<dynamics::Vector6d> states = sim.Propagate(
+      leg.eci, leg.start_s, s.problem.thrusters.AccelerationMatrix(), Pulses(leg.burns), times);
   const dynamics::Epoch epoch = ModelEpoch(s);
-  const Eigen::Matrix3d to_eme = dynamics::ModelFrameRotation(dynamics::InertialFrame::kEme2000, epoch).transpose();
+  const Eigen::Matrix3d to_eme =
+      dynamics::ModelFrameRotation(dynamics::InertialFrame::kEme2000, epoch).transpose();
   std::vector<OemSegment> out;
   size_t k = 0;
   for (size_t e = 0; e + 1 < events.size(); ++e) {
@@ -126,7 +135,8 @@ std::vector<OemSegment> LegSegments(const Scenario& s, const dynamics::GeoSimula
     }
     seg.start_time = seg.points.front().epoch;
     seg.stop_time = seg.points.back().epoch;
-    seg.interpolation_degree = std::min(kMaxInterpolationDegree, static_cast<int>(seg.points.size()) - 1);
+    seg.interpolation_degree =
+        std::min(kMaxInterpolationDegree, static_cast<int>(seg.points.size()) - 1);
     out.push_back(std::move(seg));
   }
   return out;
@@ -136,8 +146,8 @@ std::vector<OemSegment> LegSegments(const Scenario& s, const dynamics::GeoSimula
 // nonlinear motion of this burn from x0: the thrust is fixed in the turning
 // RTN frame, so the net velocity increment is below |a| (t1 - t0). Composite
 // Simpson on at most 10-s steps (the frame turns 7e-4 rad in 10 s).
-double DeliveredDeltaV(const dynamics::GeoSimulator& sim, const Eigen::Vector3d& a_rtn, const dynamics::Vector6d& x0,
-                       double t0, double t1) {
+double DeliveredDeltaV(const dynamics::GeoSimulator& sim, const Eigen::Vector3d& a_rtn,
+                       const dynamics::Vector6d& x0, double t0, double t1) {
   if (!(t1 > t0)) return 0.0;
   const int n = 2 * static_cast<int>(std::ceil((t1 - t0) / 20.0));  // even number of steps
   const double h = (t1 - t0) / n;
@@ -167,14 +177,16 @@ ReplayLeg ScenarioReplayLeg(const Scenario& s, const std::vector<Burn>& burns,
   return leg;
 }
 
-std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s, const std::vector<Burn>& burns, const ReplayLeg& leg) {
+std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s, const std::vector<Burn>& burns,
+                                        const ReplayLeg& leg) {
   const std::shared_ptr<const dynamics::GeoSimulator> sim = Simulator(s);
   if (burns.empty()) return {};
   const dynamics::Epoch epoch = ModelEpoch(s);
   const Eigen::MatrixXd accel = s.problem.thrusters.AccelerationMatrix();
   std::vector<size_t> order(burns.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return burns[a].start_s < burns[b].start_s; });
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return burns[a].start_s < burns[b].start_s; });
   std::vector<double> starts;
   for (size_t k : order) starts.push_back(std::max(burns[k].start_s, leg.start_s));
   const std::vector<dynamics::Vector6d> at_start =
@@ -208,7 +220,8 @@ OemFile BuildReplayOem(const Scenario& s, const std::vector<ReplayLeg>& legs) {
         OemSegment& prev = f.segments.back();
         prev.points.insert(prev.points.end(), seg.points.begin() + 1, seg.points.end());
         prev.stop_time = prev.points.back().epoch;
-        prev.interpolation_degree = std::min(kMaxInterpolationDegree, static_cast<int>(prev.points.size()) - 1);
+        prev.interpolation_degree =
+            std::min(kMaxInterpolationDegree, static_cast<int>(prev.points.size()) - 1);
         continue;
       }
       f.segments.push_back(std::move(seg));
@@ -225,8 +238,10 @@ Opm BuildManeuverOpm(const Scenario& s, const std::vector<ReplayLeg>& legs) {
   Opm o;
   o.comments = HeaderComments(s);
   o.comments.pop_back();
-  o.comments.push_back("finite burns: thrust constant in the satellite's RTN frame for MAN_DURATION; MAN_DV = F/m x "
-                       "duration x direction; thrustsched holds the mass constant (MAN_DELTA_MASS = propellant used)");
+  o.comments.push_back(
+      "finite burns: thrust constant in the satellite's RTN frame for MAN_DURATION; MAN_DV = F/m x "
+      "duration x direction; thrustsched holds the mass constant (MAN_DELTA_MASS = propellant "
+      "used)");
   o.creation_date = CreationDate();
   o.originator = "THRUSTSCHED";
   o.object_name = ObjectName(s);
@@ -242,7 +257,8 @@ Opm BuildManeuverOpm(const Scenario& s, const std::vector<ReplayLeg>& legs) {
   o.spacecraft = sc;  // no drag at GEO: DRAG_AREA = DRAG_COEFF = 0
   std::vector<Burn> burns;
   for (const ReplayLeg& leg : legs) burns.insert(burns.end(), leg.burns.begin(), leg.burns.end());
-  std::stable_sort(burns.begin(), burns.end(), [](const Burn& a, const Burn& b) { return a.start_s < b.start_s; });
+  std::stable_sort(burns.begin(), burns.end(),
+                   [](const Burn& a, const Burn& b) { return a.start_s < b.start_s; });
   for (size_t k = 0; k < burns.size(); ++k) {
     const Burn& b = burns[k];
     OpmManeuver m;
@@ -264,18 +280,22 @@ ReplayLeg CycleReplayLeg(const planning::CycleRecord& c, double step_s) {
   leg.eci = c.eci_start;
   leg.burns = c.burns;
   const int n = static_cast<int>(std::ceil((c.applied_end_s - c.start_s) / step_s - 1e-9));
-  for (int k = 0; k <= n; ++k) leg.sample_times.push_back(std::min(c.start_s + k * step_s, c.applied_end_s));
+  for (int k = 0; k <= n; ++k)
+    leg.sample_times.push_back(std::min(c.start_s + k * step_s, c.applied_end_s));
   return leg;
 }
 
-void CheckFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& files, double t0, double t1) {
+void CheckFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& files, double t0,
+                              double t1) {
   if (!files.any()) return;
-  const std::string option = files.oem.empty() ? "--opm-maneuvers " + files.opm_maneuvers : "--oem " + files.oem;
+  const std::string option =
+      files.oem.empty() ? "--opm-maneuvers " + files.opm_maneuvers : "--oem " + files.oem;
   if (!s.geo) {
     throw ScenarioError(option + ": CCSDS files need a GEO scenario (model.type \"geo\"), got \"" +
                         std::string(ToString(s.model_type)) + "\"");
   }
-  if (s.impulsive()) throw ScenarioError(option + ": CCSDS files need on-off thrusters, not impulsive mode");
+  if (s.impulsive())
+    throw ScenarioError(option + ": CCSDS files need on-off thrusters, not impulsive mode");
   try {
     CheckNoLeapSecond(s, t0, t1);
   } catch (const ScenarioError& e) {
@@ -283,7 +303,8 @@ void CheckFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& file
   }
 }
 
-std::vector<std::string> WriteFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& files,
+std::vector<std::string> WriteFlightDynamicsFiles(const Scenario& s,
+                                                  const FlightDynamicsFiles& files,
                                                   const std::vector<ReplayLeg>& legs) {
   std::vector<std::string> written;
   if (!files.oem.empty()) {

@@ -61,7 +61,8 @@ struct BurnFacts {
 };
 /// `leg` gives the replay start (the scenario's, or a cycle's true state).
 /// @throws std::invalid_argument if the scenario is not GEO.
-std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s, const std::vector<transcription::Burn>& burns,
+std::vector<BurnFacts> ComputeBurnFacts(const Scenario& s,
+                                        const std::vector<transcription::Burn>& burns,
                                         const ReplayLeg& leg);
 
 /// The replay of consecutive legs as an OEM 2.0 in EME2000 and UTC: one
@@ -93,10 +94,12 @@ struct FlightDynamicsFiles {
 /// Checked before any work: the files need a GEO scenario with on-off
 /// thrusters and a run [t0, t1] (model time) without a leap second of the
 /// table. @throws ScenarioError naming the option and the value.
-void CheckFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& files, double t0, double t1);
+void CheckFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& files, double t0,
+                              double t1);
 /// Writes the requested files for the legs; returns their paths.
 /// @throws std::runtime_error naming the path on I/O failure.
-std::vector<std::string> WriteFlightDynamicsFiles(const Scenario& s, const FlightDynamicsFiles& files,
+std::vector<std::string> WriteFlightDynamicsFiles(const Scenario& s,
+                                                  const FlightDynamicsFiles& files,
                                                   const std::vector<ReplayLeg>& legs);
 
 }  // namespace thrustsched::app

@@ -145,20 +145,20 @@ std::string ScenarioTable(const Scenario& s) {
     names += (names.empty() ? "" : ", ") + t.name;
     if (!t.enabled) disabled += (disabled.empty() ? "" : ", ") + t.name;
   }
-  std::string thrusters = std::to_string(thr.size()) + " (" + names + "), " + Sig(thr.thrust_n(), 4) +
-                          " N each; spacecraft " + Sig(thr.mass_kg(), 6) + " kg, Isp " +
-                          Sig(thr.isp_s(), 5) + " s";
+  std::string thrusters = std::to_string(thr.size()) + " (" + names + "), " +
+                          Sig(thr.thrust_n(), 4) + " N each; spacecraft " + Sig(thr.mass_kg(), 6) +
+                          " kg, Isp " + Sig(thr.isp_s(), 5) + " s";
   if (!disabled.empty()) thrusters += "; disabled: " + disabled;
   if (s.impulsive()) thrusters += "; impulsive (delta-v at the grid nodes)";
   os << Row("thrusters", HtmlEscape(thrusters));
   if (!s.impulsive()) {
     const transcription::OperationalRules& r = s.problem.rules;
-    os << Row("rules", HtmlEscape("each burn at least " + FormatDuration(r.min_burn_s) +
-                                  ", the same thruster off at least " +
-                                  FormatDuration(r.min_off_same_s) + " between its burns, at least " +
-                                  FormatDuration(r.min_gap_other_s) +
-                                  " between burns of different thrusters, at most " +
-                                  std::to_string(r.max_simultaneous) + " thruster(s) at once"));
+    os << Row("rules",
+              HtmlEscape("each burn at least " + FormatDuration(r.min_burn_s) +
+                         ", the same thruster off at least " + FormatDuration(r.min_off_same_s) +
+                         " between its burns, at least " + FormatDuration(r.min_gap_other_s) +
+                         " between burns of different thrusters, at most " +
+                         std::to_string(r.max_simultaneous) + " thruster(s) at once"));
     if (!s.problem.forced_off.empty()) {
       std::string f;
       for (const transcription::ForcedOff& w : s.problem.forced_off) {
@@ -175,7 +175,8 @@ std::string ScenarioTable(const Scenario& s) {
       const int out = s.problem.window.outputs[k];
       const std::vector<std::string> outs = s.problem.model->output_names();
       w += (w.empty() ? "" : ", ") + std::string("|") +
-           (out >= 0 && out < static_cast<int>(outs.size()) ? Bare(outs[static_cast<size_t>(out)]) : "?") +
+           (out >= 0 && out < static_cast<int>(outs.size()) ? Bare(outs[static_cast<size_t>(out)])
+                                                            : "?") +
            "| &le; " + Sig(s.window_half_widths[k], 6) + " " + HtmlEscape(s.window_unit);
     }
     if (s.problem.window.soft) w += " (soft)";
@@ -210,8 +211,8 @@ std::string CsvTable(const std::string& path, size_t max_rows = 2000) {
   }
   os << "</tbody></table>\n";
   if (rows.size() - 1 > max_rows) {
-    os << "<p class=\"note\">First " << max_rows << " of " << rows.size() - 1 << " rows; all are in "
-       << HtmlEscape(path.substr(path.find_last_of('/') + 1)) << ".</p>\n";
+    os << "<p class=\"note\">First " << max_rows << " of " << rows.size() - 1
+       << " rows; all are in " << HtmlEscape(path.substr(path.find_last_of('/') + 1)) << ".</p>\n";
   }
   return os.str();
 }
@@ -247,8 +248,9 @@ std::string Figures(const std::string& dir, const std::vector<Figure>& figures) 
       }
       if (!hit) text += svg[i++];
     }
-    os << "<figure>\n" << text << "\n<figcaption>" << HtmlEscape(f.caption) << " ("
-       << HtmlEscape(f.file) << ")</figcaption>\n</figure>\n";
+    os << "<figure>\n"
+       << text << "\n<figcaption>" << HtmlEscape(f.caption) << " (" << HtmlEscape(f.file)
+       << ")</figcaption>\n</figure>\n";
   }
   if (shown == 0) os << "<p class=\"note\">No plots (gnuplot missing or --no-plots).</p>\n";
   return os.str();
@@ -308,7 +310,8 @@ std::string CheckSection(const Scenario& s, const nlohmann::json& check) {
   }
   const bool passed = check.value("passed", false);
   os << "<p>The independent checker re-propagates the schedule with the continuous-time model"
-     << (check.value("nonlinear_checked", false) ? " and replays it through the nonlinear model" : "")
+     << (check.value("nonlinear_checked", false) ? " and replays it through the nonlinear model"
+                                                 : "")
      << ": " << Verdict(passed) << "</p>\n<table class=\"facts\">\n";
   os << Row("operational rules", check.value("operational_ok", false) ? "ok" : "<b>violated</b>");
   const std::string unit = StringOr(check, "window_unit");
@@ -357,12 +360,23 @@ std::string HtmlEscape(const std::string& text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -385,7 +399,8 @@ std::string InlineSvg(const std::string& svg_text) {
   const size_t vb = tag.find("viewBox=\"");
   if (vb != std::string::npos && tag.find(" width=") == std::string::npos) {
     double x = 0, y = 0, w = 0, h = 0;
-    if (std::sscanf(tag.c_str() + vb + 9, "%lf %lf %lf %lf", &x, &y, &w, &h) == 4 && w > 0 && h > 0) {
+    if (std::sscanf(tag.c_str() + vb + 9, "%lf %lf %lf %lf", &x, &y, &w, &h) == 4 && w > 0 &&
+        h > 0) {
       svg.insert(4, " width=\"" + Sig(w, 8) + "\" height=\"" + Sig(h, 8) + "\"");
     }
   }
@@ -397,13 +412,13 @@ void WriteSolveReport(const std::string& dir, const Scenario& s, const nlohmann:
   os << PageStart(s.name + " - thrustsched");
   os << "<h1>" << HtmlEscape(s.name) << "</h1>\n";
   if (s.raw.is_object() && s.raw.contains("description") && s.raw.at("description").is_string()) {
-    os << "<p class=\"lead\">" << HtmlEscape(s.raw.at("description").get<std::string>()) << "</p>\n";
+    os << "<p class=\"lead\">" << HtmlEscape(s.raw.at("description").get<std::string>())
+       << "</p>\n";
   }
   os << "<p class=\"note\">Scenario file " << HtmlEscape(StringOr(summary, "scenario_file", s.path))
      << "; command <code>" << HtmlEscape(StringOr(summary, "command_line")) << "</code></p>\n";
 
-  os << "<h2>Scenario</h2>\n"
-     << ScenarioTable(s);
+  os << "<h2>Scenario</h2>\n" << ScenarioTable(s);
 
   os << "<h2>Result</h2>\n<table class=\"facts\">\n";
   std::string status = StringOr(summary, "status", "?");
@@ -435,9 +450,10 @@ void WriteSolveReport(const std::string& dir, const Scenario& s, const nlohmann:
                              HtmlEscape(FormatDuration(on)) + " in total");
     }
   }
-  os << Row("solver", HtmlEscape(StringOr(summary, "solver_version") + ", " +
-                                 FormatDuration(NumberOr(summary, "solve_seconds")) + " (total run " +
-                                 FormatDuration(NumberOr(summary, "total_seconds")) + ")"));
+  os << Row("solver",
+            HtmlEscape(StringOr(summary, "solver_version") + ", " +
+                       FormatDuration(NumberOr(summary, "solve_seconds")) + " (total run " +
+                       FormatDuration(NumberOr(summary, "total_seconds")) + ")"));
   os << Row("MILP", HtmlEscape(std::to_string(summary.value("n_binaries", 0)) + " binaries, " +
                                std::to_string(summary.value("n_rows", 0)) + " rows"));
   if (summary.contains("infeasibility_reasons") && summary.at("infeasibility_reasons").is_array()) {
@@ -452,27 +468,30 @@ void WriteSolveReport(const std::string& dir, const Scenario& s, const nlohmann:
                                                                          : nlohmann::json());
 
   os << "<h2>Plots</h2>\n"
-     << Figures(dir, {{"window.svg", s.model_type == ModelType::kGeo
-                                         ? "Where the satellite went: longitude and latitude in the box"
-                                         : "Trajectory in the window plane (along-track y, normal z)"},
-                      {"xy.svg", "Radial against along-track (x-y)"},
-                      {"timeline.svg", s.impulsive() ? "Impulses per thruster" : "When each thruster fired"},
-                      {"outputs.svg", "The window outputs against time"}});
+     << Figures(
+            dir,
+            {{"window.svg", s.model_type == ModelType::kGeo
+                                ? "Where the satellite went: longitude and latitude in the box"
+                                : "Trajectory in the window plane (along-track y, normal z)"},
+             {"xy.svg", "Radial against along-track (x-y)"},
+             {"timeline.svg", s.impulsive() ? "Impulses per thruster" : "When each thruster fired"},
+             {"outputs.svg", "The window outputs against time"}});
 
   const std::string table = CsvTable(dir + (s.impulsive() ? "/impulses.csv" : "/schedule.csv"));
   os << "<h2>Schedule</h2>\n";
   if (table.empty()) {
     os << "<p>No " << (s.impulsive() ? "impulse" : "burn") << ".</p>\n";
   } else {
-    os << "<p class=\"note\">Times in seconds since the model epoch"
-       << (s.geo ? " and in UTC" : "") << ".</p>\n<div class=\"tablewrap\">" << table << "</div>\n";
+    os << "<p class=\"note\">Times in seconds since the model epoch" << (s.geo ? " and in UTC" : "")
+       << ".</p>\n<div class=\"tablewrap\">" << table << "</div>\n";
   }
   os << "</body>\n</html>\n";
   WriteOrThrow(dir + "/" + kReportName, os.str());
 }
 
 std::vector<std::string> YearReportFiles() {
-  return {kReportName, "gap.gp", "gap.svg", "thrust_days.gp", "thrust_days.svg", "box.gp", "box.svg"};
+  return {kReportName,       "gap.gp", "gap.svg", "thrust_days.gp",
+          "thrust_days.svg", "box.gp", "box.svg"};
 }
 
 YearReport WriteYearReport(const std::string& dir, const Scenario& s, const nlohmann::json& year,
@@ -500,16 +519,17 @@ YearReport WriteYearReport(const std::string& dir, const Scenario& s, const nloh
   }
   {
     std::ostringstream os;
-    os << header("thrust_days", 800, 450)
-       << "set title 'thrust-days per thruster'\n"
+    os << header("thrust_days", 800, 450) << "set title 'thrust-days per thruster'\n"
        << "set ylabel 'days of firing'\nset yrange [0:*]\nset key off\n"
        << "set style fill solid 0.6\nset boxwidth 0.6\n"
        << "$days << EOD\n";
-    const nlohmann::json per = year.contains("thrust_days") && year.at("thrust_days").is_object()
-                                   ? year.at("thrust_days").value("per_thruster", nlohmann::json::object())
-                                   : nlohmann::json::object();
+    const nlohmann::json per =
+        year.contains("thrust_days") && year.at("thrust_days").is_object()
+            ? year.at("thrust_days").value("per_thruster", nlohmann::json::object())
+            : nlohmann::json::object();
     for (const auto& t : s.problem.thrusters.thrusters()) {
-      const double d = per.contains(t.name) && per.at(t.name).is_number() ? per.at(t.name).get<double>() : 0.0;
+      const double d =
+          per.contains(t.name) && per.at(t.name).is_number() ? per.at(t.name).get<double>() : 0.0;
       os << t.name << "," << Sig(d, 10) << "\n";
     }
     os << "EOD\n"
@@ -529,7 +549,8 @@ YearReport WriteYearReport(const std::string& dir, const Scenario& s, const nloh
        << "set cblabel 'days since t_0'\n"
        << "# trajectory.csv: col 2 day, col 3 lat_deg, col 4 lon_deg\n"
        << "plot 'trajectory.csv' skip 1 using 4:3:2 with lines lc palette lw 1 notitle, \\\n"
-       << "     'trajectory.csv' skip 1 every ::0::0 using 4:3 with points pt 7 ps 1.5 lc rgb 'black' "
+       << "     'trajectory.csv' skip 1 every ::0::0 using 4:3 with points pt 7 ps 1.5 lc rgb "
+          "'black' "
           "title 'start', \\\n"
        << "     NaN with lines lc rgb 'red' lw 2 title 'window'\n";
     scripts.emplace_back("box", os.str());
@@ -546,35 +567,39 @@ YearReport WriteYearReport(const std::string& dir, const Scenario& s, const nloh
   os << PageStart(s.name + " - thrustsched simulate");
   os << "<h1>" << HtmlEscape(s.name) << "</h1>\n";
   if (s.raw.is_object() && s.raw.contains("description") && s.raw.at("description").is_string()) {
-    os << "<p class=\"lead\">" << HtmlEscape(s.raw.at("description").get<std::string>()) << "</p>\n";
+    os << "<p class=\"lead\">" << HtmlEscape(s.raw.at("description").get<std::string>())
+       << "</p>\n";
   }
   const nlohmann::json settings = year.value("settings", nlohmann::json::object());
   os << "<h2>Scenario</h2>\n" << ScenarioTable(s);
   os << "<table class=\"facts\">\n"
-     << Row("cycles", HtmlEscape(std::to_string(year.value("cycles", 0)) + " of " +
-                                 std::to_string(year.value("cycles_total", 0)) + " (" +
-                                 StringOr(year, "mode") + ", " +
-                                 FormatDuration(NumberOr(settings, "cycle_s")) + " each, from " +
-                                 StringOr(year, "start_utc") + " UTC)" +
-                                 (year.value("complete", false) ? "" : "; the run is not complete")))
+     << Row("cycles",
+            HtmlEscape(std::to_string(year.value("cycles", 0)) + " of " +
+                       std::to_string(year.value("cycles_total", 0)) + " (" +
+                       StringOr(year, "mode") + ", " +
+                       FormatDuration(NumberOr(settings, "cycle_s")) + " each, from " +
+                       StringOr(year, "start_utc") + " UTC)" +
+                       (year.value("complete", false) ? "" : "; the run is not complete")))
      << "</table>\n";
 
   os << "<h2>Result</h2>\n<table class=\"facts\">\n";
   os << Row("simulated", HtmlEscape(Sig(NumberOr(year, "simulated_days"), 5) + " days"));
-  os << Row("consumption", HtmlEscape(Sig(NumberOr(year, "consumption_l1_m_s")) + " m/s (L1, thesis metric)"));
+  os << Row("consumption",
+            HtmlEscape(Sig(NumberOr(year, "consumption_l1_m_s")) + " m/s (L1, thesis metric)"));
   os << Row("delta-v", HtmlEscape(Sig(NumberOr(year, "delta_v_m_s")) + " m/s, of which normal " +
                                   Sig(NumberOr(year, "normal_delta_v_m_s"), 5) + " m/s"));
   os << Row("propellant", HtmlEscape(Sig(NumberOr(year, "propellant_kg")) + " kg"));
   os << Row("burns", HtmlEscape(std::to_string(year.value("burns", 0))));
   const nlohmann::json td = year.value("thrust_days", nlohmann::json::object());
-  os << Row("thrust-days", HtmlEscape(Sig(NumberOr(td, "total"), 5) + " in total; N " +
-                                      Sig(NumberOr(td, "north"), 4) + ", S " + Sig(NumberOr(td, "south"), 4) +
-                                      ", E " + Sig(NumberOr(td, "east"), 4) + ", W " +
-                                      Sig(NumberOr(td, "west"), 4)));
+  os << Row(
+      "thrust-days",
+      HtmlEscape(Sig(NumberOr(td, "total"), 5) + " in total; N " + Sig(NumberOr(td, "north"), 4) +
+                 ", S " + Sig(NumberOr(td, "south"), 4) + ", E " + Sig(NumberOr(td, "east"), 4) +
+                 ", W " + Sig(NumberOr(td, "west"), 4)));
   const nlohmann::json gap = year.value("gap", nlohmann::json::object());
   const nlohmann::json solve = year.value("solve_seconds", nlohmann::json::object());
-  os << Row("gap per cycle", HtmlEscape("median " + FormatPercent(NumberOr(gap, "median")) + ", max " +
-                                        FormatPercent(NumberOr(gap, "max"))));
+  os << Row("gap per cycle", HtmlEscape("median " + FormatPercent(NumberOr(gap, "median")) +
+                                        ", max " + FormatPercent(NumberOr(gap, "max"))));
   os << Row("solve time per cycle",
             HtmlEscape("median " + FormatDuration(NumberOr(solve, "median")) + ", max " +
                        FormatDuration(NumberOr(solve, "max")) + "; wall " +
@@ -586,12 +611,14 @@ YearReport WriteYearReport(const std::string& dir, const Scenario& s, const nloh
   os << "<h2>Window (nonlinear replay)</h2>\n";
   const bool inside = !(NumberOr(year, "max_window_violation_deg", 0.0) > 0);
   os << "<p>" << Verdict(inside) << " "
-     << HtmlEscape(inside ? std::string("inside the box for the whole run")
-                          : "outside by up to " + Sig(NumberOr(year, "max_window_violation_deg"), 3) +
-                                " deg for " + FormatDuration(NumberOr(year, "time_outside_window_s")) +
-                                " (first worst at " + StringOr(year, "worst_time_utc", "?") + " UTC)")
-     << "; max |lat| " << HtmlEscape(Sig(NumberOr(year, "max_abs_lat_deg"), 4)) << " deg, max |lon| "
-     << HtmlEscape(Sig(NumberOr(year, "max_abs_lon_deg"), 4)) << " deg.</p>\n";
+     << HtmlEscape(inside
+                       ? std::string("inside the box for the whole run")
+                       : "outside by up to " + Sig(NumberOr(year, "max_window_violation_deg"), 3) +
+                             " deg for " + FormatDuration(NumberOr(year, "time_outside_window_s")) +
+                             " (first worst at " + StringOr(year, "worst_time_utc", "?") + " UTC)")
+     << "; max |lat| " << HtmlEscape(Sig(NumberOr(year, "max_abs_lat_deg"), 4))
+     << " deg, max |lon| " << HtmlEscape(Sig(NumberOr(year, "max_abs_lon_deg"), 4))
+     << " deg.</p>\n";
 
   os << "<h2>Plots</h2>\n"
      << Figures(dir, {{"consumption.svg", "Consumption per cycle and cumulative"},
@@ -618,19 +645,18 @@ YearReport WriteYearReport(const std::string& dir, const Scenario& s, const nloh
       int index;
       char kind;  // 't' text, 'n' number, 'p' fraction as percent, 'd' duration (s)
     };
-    const std::vector<Column> columns = {
-        {"cycle", col("cycle"), 't'},
-        {"start (UTC)", col("start_utc"), 't'},
-        {"status", col("status"), 't'},
-        {"fallback", col("fallback"), 't'},
-        {"consumption (m/s)", col("consumption_l1_m_s"), 'n'},
-        {"gap", col("gap"), 'p'},
-        {"burns", col("burns"), 't'},
-        {"max |lat| (deg)", col("max_abs_lat_deg"), 'n'},
-        {"max |lon| (deg)", col("max_abs_lon_deg"), 'n'},
-        {"outside", col("time_outside_window_s"), 'd'},
-        {"solve", col("solve_s"), 'd'},
-        {"note", col("note"), 't'}};
+    const std::vector<Column> columns = {{"cycle", col("cycle"), 't'},
+                                         {"start (UTC)", col("start_utc"), 't'},
+                                         {"status", col("status"), 't'},
+                                         {"fallback", col("fallback"), 't'},
+                                         {"consumption (m/s)", col("consumption_l1_m_s"), 'n'},
+                                         {"gap", col("gap"), 'p'},
+                                         {"burns", col("burns"), 't'},
+                                         {"max |lat| (deg)", col("max_abs_lat_deg"), 'n'},
+                                         {"max |lon| (deg)", col("max_abs_lon_deg"), 'n'},
+                                         {"outside", col("time_outside_window_s"), 'd'},
+                                         {"solve", col("solve_s"), 'd'},
+                                         {"note", col("note"), 't'}};
     os << "<div class=\"tablewrap\"><table class=\"data\">\n<thead><tr>";
     for (const Column& c : columns) os << "<th>" << HtmlEscape(c.title) << "</th>";
     os << "</tr></thead>\n<tbody>\n";

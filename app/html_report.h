@@ -30,7 +30,8 @@ inline constexpr const char* kReportName = "report.html";
 /// run's summary.json content; the schedule (schedule.csv or impulses.csv)
 /// and the plots (window.svg, xy.svg, timeline.svg, outputs.svg) are read
 /// from `dir` where present. @throws std::runtime_error if it cannot write.
-void WriteSolveReport(const std::string& dir, const Scenario& scenario, const nlohmann::json& summary);
+void WriteSolveReport(const std::string& dir, const Scenario& scenario,
+                      const nlohmann::json& summary);
 
 /// The files WriteYearReport may write (for simulate's manifest).
 std::vector<std::string> YearReportFiles();

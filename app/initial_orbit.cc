@@ -16,7 +16,7 @@ namespace {
 constexpr double kDeg = common::kDegToRad;
 // Orbits further than this from the station point are not GEO station
 // keeping: the linearised model of the thesis would be meaningless there.
-constexpr double kMaxRelativeA = 0.05;     // |a - a_mp| / a_mp
+constexpr double kMaxRelativeA = 0.05;  // |a - a_mp| / a_mp
 constexpr double kMaxEccentricity = 0.05;
 constexpr double kMaxInclinationDeg = 15.0;
 
@@ -33,23 +33,28 @@ InitialOrbit FromOpm(JsonObject o, const std::string& base_dir) {
   out.form = "opm";
   const std::string file = o.String("file");
   const std::filesystem::path p(file);
-  out.file = p.is_absolute() || base_dir.empty() ? file : (std::filesystem::path(base_dir) / p).string();
-  const std::string use = o.Has("use") ? o.Choice("use", {"state_vector", "keplerian"}) : "state_vector";
+  out.file =
+      p.is_absolute() || base_dir.empty() ? file : (std::filesystem::path(base_dir) / p).string();
+  const std::string use =
+      o.Has("use") ? o.Choice("use", {"state_vector", "keplerian"}) : "state_vector";
   o.Finish();
   const Opm opm = ParseOpm(ReadText(out.file, o.FieldPath("file")), out.file);
   if (!opm.maneuvers.empty()) {
-    throw ScenarioError(o.FieldPath("file") + ": " + out.file + " holds " + std::to_string(opm.maneuvers.size()) +
-                        " maneuver block(s): an initial state must not (thrustsched plans the burns itself; remove "
-                        "them or give the state after them)");
+    throw ScenarioError(
+        o.FieldPath("file") + ": " + out.file + " holds " + std::to_string(opm.maneuvers.size()) +
+        " maneuver block(s): an initial state must not (thrustsched plans the burns itself; remove "
+        "them or give the state after them)");
   }
   out.object_name = opm.object_name;
   out.object_id = opm.object_id;
   out.given = {opm.epoch, opm.frame, opm.rv};
   if (use == "keplerian") {
     if (!opm.keplerian) {
-      throw ScenarioError(o.FieldPath("use") + ": \"keplerian\" but " + out.file + " has no Keplerian elements");
+      throw ScenarioError(o.FieldPath("use") + ": \"keplerian\" but " + out.file +
+                          " has no Keplerian elements");
     }
-    out.given.rv = dynamics::CartesianFromKeplerian(opm.keplerian->elements, opm.keplerian->gm_m3_s2);
+    out.given.rv =
+        dynamics::CartesianFromKeplerian(opm.keplerian->elements, opm.keplerian->gm_m3_s2);
   }
   return out;
 }
@@ -60,7 +65,8 @@ InitialOrbit Inline(JsonObject& o, const char* form, const dynamics::Epoch& star
   out.form = form;
   out.given.frame = *dynamics::ParseInertialFrame(o.Choice("frame", {"EME2000", "GCRF"}));
   const std::optional<std::string> text = o.OptionalString("epoch");
-  out.given.epoch = text ? Wrap(o.FieldPath("epoch"), [&] { return dynamics::Epoch::Parse(*text); }) : start;
+  out.given.epoch =
+      text ? Wrap(o.FieldPath("epoch"), [&] { return dynamics::Epoch::Parse(*text); }) : start;
   return out;
 }
 
@@ -86,9 +92,13 @@ InitialOrbit FromKeplerian(JsonObject o, const dynamics::Epoch& start) {
   k.raan_rad = o.Number("ra_of_asc_node_deg") * kDeg;
   k.arg_perigee_rad = o.Number("arg_of_pericenter_deg") * kDeg;
   o.ExactlyOneOf({"true_anomaly_deg", "mean_anomaly_deg"}, /*required=*/true);
-  k.anomaly = o.Has("mean_anomaly_deg") ? dynamics::AnomalyKind::kMean : dynamics::AnomalyKind::kTrue;
-  k.anomaly_rad = o.Number(k.anomaly == dynamics::AnomalyKind::kMean ? "mean_anomaly_deg" : "true_anomaly_deg") * kDeg;
-  const double gm = o.OptionalNumber("gm_km3_s2", Bound::kPositive).value_or(dynamics::geo::kEarthMu / 1e9) * 1e9;
+  k.anomaly =
+      o.Has("mean_anomaly_deg") ? dynamics::AnomalyKind::kMean : dynamics::AnomalyKind::kTrue;
+  k.anomaly_rad = o.Number(k.anomaly == dynamics::AnomalyKind::kMean ? "mean_anomaly_deg"
+                                                                     : "true_anomaly_deg") *
+                  kDeg;
+  const double gm =
+      o.OptionalNumber("gm_km3_s2", Bound::kPositive).value_or(dynamics::geo::kEarthMu / 1e9) * 1e9;
   o.Finish();
   out.given.rv = Wrap(o.path(), [&] { return dynamics::CartesianFromKeplerian(k, gm); });
   return out;
@@ -100,10 +110,11 @@ void CheckNearStation(const std::string& path, const Eigen::VectorXd& x) {
   const double i_deg = 2.0 * std::atan(std::hypot(x(3), x(4))) / kDeg;
   if (std::abs(x(0)) > kMaxRelativeA * a_mp || e > kMaxEccentricity || i_deg > kMaxInclinationDeg) {
     std::ostringstream os;
-    os << path << ": not a near-geostationary orbit at the horizon start (a = " << (a_mp + x(0)) / 1e3
+    os << path
+       << ": not a near-geostationary orbit at the horizon start (a = " << (a_mp + x(0)) / 1e3
        << " km, e = " << e << ", i = " << i_deg << " deg; the GEO model needs |a - " << a_mp / 1e3
-       << " km| <= " << kMaxRelativeA * a_mp / 1e3 << " km, e <= " << kMaxEccentricity << ", i <= "
-       << kMaxInclinationDeg << " deg)";
+       << " km| <= " << kMaxRelativeA * a_mp / 1e3 << " km, e <= " << kMaxEccentricity
+       << ", i <= " << kMaxInclinationDeg << " deg)";
     throw ScenarioError(os.str());
   }
 }
@@ -145,10 +156,12 @@ InitialOrbit ReadInitialOrbit(JsonObject& init, const dynamics::GeoSimulator& si
   // Checked at the state's own epoch first, so that no far-off orbit is propagated.
   const dynamics::Epoch model_epoch = dynamics::Epoch::Parse(sim.options().epoch);
   CheckNearStation(path, Wrap(path, [&] {
-                     return sim.RelativeFromEci(dynamics::ToModelFrame(out.given.rv, out.given.frame, model_epoch),
-                                                out.given.epoch.SecondsSince(model_epoch));
+                     return sim.RelativeFromEci(
+                         dynamics::ToModelFrame(out.given.rv, out.given.frame, model_epoch),
+                         out.given.epoch.SecondsSince(model_epoch));
                    }));
-  out.relative_state = Wrap(path, [&] { return dynamics::RelativeStateFromOrbit(sim, out.given, t_start); });
+  out.relative_state =
+      Wrap(path, [&] { return dynamics::RelativeStateFromOrbit(sim, out.given, t_start); });
   return out;
 }
 

@@ -27,11 +27,11 @@ namespace thrustsched::app {
 
 /// An initial orbit as given, and what it became.
 struct InitialOrbit {
-  std::string form;                       // "opm", "eci_state" or "keplerian"
-  std::string file;                       // the OPM file as resolved ("" otherwise)
-  std::string object_name, object_id;     // from the OPM ("" otherwise)
-  dynamics::OrbitState given;             // the state as given (its frame and epoch)
-  Eigen::VectorXd relative_state;         // the model state at the horizon start
+  std::string form;                    // "opm", "eci_state" or "keplerian"
+  std::string file;                    // the OPM file as resolved ("" otherwise)
+  std::string object_name, object_id;  // from the OPM ("" otherwise)
+  dynamics::OrbitState given;          // the state as given (its frame and epoch)
+  Eigen::VectorXd relative_state;      // the model state at the horizon start
 };
 
 /// The keys of the orbit forms: "opm", "eci_state", "keplerian".

@@ -1,3 +1,6 @@
+// The files of a solve: summary.json, schedule.csv, trajectory.csv and their
+// readers. One file on purpose, ~700 lines: the writers and readers of each
+// format sit together so that a column or field cannot change on one side only.
 #include "app/outputs.h"
 
 #include <cctype>
@@ -96,8 +99,8 @@ CsvTable ReadCsv(const std::string& path, const std::vector<std::string>& requir
       }
       for (const auto& r : required) {
         if (t.column.count(r) == 0) {
-          throw ScenarioError(path + ":" + std::to_string(number) + ": header lacks column \"" +
-                              r + "\"");
+          throw ScenarioError(path + ":" + std::to_string(number) + ": header lacks column \"" + r +
+                              "\"");
         }
       }
       header = true;
@@ -146,7 +149,8 @@ void CheckUtcCell(const std::string& path, const CsvTable::Row& row, const CsvTa
   auto c = t.column.find(column);
   if (c == t.column.end() || row.cells[c->second].empty()) return;
   const std::string& cell = row.cells[c->second];
-  const std::string where = path + ":" + std::to_string(row.line) + ": " + column + " \"" + cell + "\"";
+  const std::string where =
+      path + ":" + std::to_string(row.line) + ": " + column + " \"" + cell + "\"";
   if (!s.geo) throw ScenarioError(where + ": the scenario has no UTC epoch (GEO models only)");
   const dynamics::Epoch label = Wrap(where, [&] { return dynamics::Epoch::Parse(cell); });
   const double dt = label.SecondsSince(dynamics::Epoch::Parse(s.geo->epoch)) - t_s;
@@ -222,8 +226,8 @@ CheckVerdict Judge(const Scenario& s, const transcription::CheckReport& r) {
     const double nodes = OutputToWindow(s, r.max_window_violation_at_nodes);
     const double all = OutputToWindow(s, r.max_window_violation);
     if (nodes > tol) {
-      v.findings.push_back("window violated at grid nodes by " + Fmt(nodes) + " " +
-                           s.window_unit + " (tolerance " + Fmt(tol) + " " + s.window_unit + ")");
+      v.findings.push_back("window violated at grid nodes by " + Fmt(nodes) + " " + s.window_unit +
+                           " (tolerance " + Fmt(tol) + " " + s.window_unit + ")");
     }
     if (s.verdict.include_intersample && all > tol) {
       v.findings.push_back("window violated between nodes by " + Fmt(all) + " " + s.window_unit +
@@ -281,8 +285,10 @@ nlohmann::json CheckJson(const Scenario& s, const transcription::CheckReport& r,
   }
   j["rule_violations"] = msgs;
   j["rule_violation_details"] = details;
-  j["window_unit"] = s.window_unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.window_unit);
-  j["window_tolerance"] = s.problem.window.enabled() ? FiniteOrNull(s.verdict.window_tolerance) : nullptr;
+  j["window_unit"] =
+      s.window_unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.window_unit);
+  j["window_tolerance"] =
+      s.problem.window.enabled() ? FiniteOrNull(s.verdict.window_tolerance) : nullptr;
   j["max_window_violation"] = OutputToWindow(s, r.max_window_violation);
   j["max_window_violation_nodes"] = OutputToWindow(s, r.max_window_violation_at_nodes);
   j["worst_time_s"] = FiniteOrNull(r.worst_time_s);
@@ -316,7 +322,8 @@ nlohmann::json ImpulsiveCheckJson(const Scenario& s, const transcription::Impuls
   j["findings"] = verdict.findings;
   j["operational_ok"] = true;  // impulsive problems have no operational rules
   j["rule_violations"] = nlohmann::json::array();
-  j["window_unit"] = s.window_unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.window_unit);
+  j["window_unit"] =
+      s.window_unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.window_unit);
   j["max_window_violation"] = OutputToWindow(s, c.max_window_violation);
   j["max_window_violation_nodes"] = OutputToWindow(s, c.max_window_violation);
   j["terminal_error"] = c.terminal_error;
@@ -405,12 +412,13 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
                {"step_s", s.step_s},
                {"num_intervals", s.num_intervals}};
   if (s.problem.window.enabled()) {
-    j["window"] = {{"unit", s.window_unit},
-                   {"half_widths", s.window_half_widths},
-                   {"outputs", {OutputName(s, s.problem.window.outputs[0]),
-                                OutputName(s, s.problem.window.outputs[1])}},
-                   {"enforce_from_s", FiniteOrNull(s.problem.window.enforce_from_s)},
-                   {"soft", s.problem.window.soft}};
+    j["window"] = {
+        {"unit", s.window_unit},
+        {"half_widths", s.window_half_widths},
+        {"outputs",
+         {OutputName(s, s.problem.window.outputs[0]), OutputName(s, s.problem.window.outputs[1])}},
+        {"enforce_from_s", FiniteOrNull(s.problem.window.enforce_from_s)},
+        {"soft", s.problem.window.soft}};
   } else {
     j["window"] = nullptr;
   }
@@ -425,17 +433,19 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
         {"min_burn_intervals", {e.min_burn_intervals_min, e.min_burn_intervals_max}},
         {"min_off_same_intervals", {e.min_off_same_intervals_min, e.min_off_same_intervals_max}},
         {"min_gap_other_intervals", {e.min_gap_other_intervals_min, e.min_gap_other_intervals_max}},
-        {"requested", {{"min_burn_s", rules.min_burn_s},
-                       {"min_off_same_s", rules.min_off_same_s},
-                       {"min_gap_other_s", rules.min_gap_other_s},
-                       {"max_burn_s", FiniteOrNull(rules.max_burn_s)},
-                       {"max_burns_per_thruster", rules.max_burns_per_thruster}}}};
+        {"requested",
+         {{"min_burn_s", rules.min_burn_s},
+          {"min_off_same_s", rules.min_off_same_s},
+          {"min_gap_other_s", rules.min_gap_other_s},
+          {"max_burn_s", FiniteOrNull(rules.max_burn_s)},
+          {"max_burns_per_thruster", rules.max_burns_per_thruster}}}};
   }
   j["infeasibility_reasons"] = r.infeasibility_reasons;
   if (has && !sch.states.empty()) {
     const Eigen::VectorXd& xf = sch.states.back();
     j["final_state_discrete"] = std::vector<double>(xf.data(), xf.data() + xf.size());
-    if (s.model_type == ModelType::kHcw) j["final_drift_term_m"] = FiniteOrNull(HcwDriftTerm(s, xf));
+    if (s.model_type == ModelType::kHcw)
+      j["final_drift_term_m"] = FiniteOrNull(HcwDriftTerm(s, xf));
   }
   if (r.checked) {
     if (s.impulsive()) {
@@ -486,7 +496,8 @@ std::string ScheduleCsvText(const Scenario& s, const std::vector<transcription::
   std::vector<BurnFacts> facts;
   if (s.geo) {
     os << ",start_utc,end_utc,dir_r,dir_t,dir_n,delta_v_m_s";
-    facts = ComputeBurnFacts(s, burns, replay != nullptr ? *replay : ScenarioReplayLeg(s, burns, {}));
+    facts =
+        ComputeBurnFacts(s, burns, replay != nullptr ? *replay : ScenarioReplayLeg(s, burns, {}));
   }
   os << "\n";
   const std::vector<std::string> names = s.thruster_names();
@@ -497,7 +508,8 @@ std::string ScheduleCsvText(const Scenario& s, const std::vector<transcription::
     if (s.geo) {
       const BurnFacts& f = facts[k];
       os << "," << f.start_utc << "," << f.end_utc << "," << Fmt(f.direction_rtn.x()) << ","
-         << Fmt(f.direction_rtn.y()) << "," << Fmt(f.direction_rtn.z()) << "," << Fmt(f.delta_v_m_s);
+         << Fmt(f.direction_rtn.y()) << "," << Fmt(f.direction_rtn.z()) << ","
+         << Fmt(f.delta_v_m_s);
     }
     os << "\n";
   }
@@ -515,8 +527,8 @@ std::string ImpulsesCsvText(const Scenario& s,
   os << "thruster,node,time_s,delta_v_m_s\n";
   const std::vector<std::string> names = s.thruster_names();
   for (const transcription::Impulse& i : impulses) {
-    os << names.at(i.thruster) << "," << i.node << "," << Fmt(i.time_s) << "," << FormatG(i.delta_v_m_s, 17)
-       << "\n";
+    os << names.at(i.thruster) << "," << i.node << "," << Fmt(i.time_s) << ","
+       << FormatG(i.delta_v_m_s, 17) << "\n";
   }
   return os.str();
 }
@@ -527,9 +539,9 @@ void WriteImpulsesCsv(const std::string& path, const Scenario& s,
 }
 
 std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const Scenario& s) {
-  const CsvTable t = ReadCsv(path, {"thruster", "start_s", "end_s"},
-                             {"duration_s", "start_utc", "end_utc", "dir_r", "dir_t", "dir_n",
-                              "delta_v_m_s"});
+  const CsvTable t =
+      ReadCsv(path, {"thruster", "start_s", "end_s"},
+              {"duration_s", "start_utc", "end_utc", "dir_r", "dir_t", "dir_n", "delta_v_m_s"});
   std::vector<transcription::Burn> burns;
   for (const CsvTable::Row& row : t.rows) {
     transcription::Burn b;
@@ -564,8 +576,9 @@ std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path, con
     im.thruster = ThrusterOf(path, row, row.cells[t.column.at("thruster")], s);
     const double node = CellNumber(path, row, "node", t.column.at("node"));
     if (node != std::floor(node) || node < 0 || node > nn) {
-      throw ScenarioError(path + ":" + std::to_string(row.line) + ": node must be an integer in [0, " +
-                          std::to_string(nn) + "], got " + Fmt(node));
+      throw ScenarioError(path + ":" + std::to_string(row.line) +
+                          ": node must be an integer in [0, " + std::to_string(nn) + "], got " +
+                          Fmt(node));
     }
     im.node = static_cast<int>(node);
     im.time_s = s.problem.grid[im.node];
@@ -580,8 +593,8 @@ std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path, con
     }
     im.delta_v_m_s = CellNumber(path, row, "delta_v_m_s", t.column.at("delta_v_m_s"));
     if (im.delta_v_m_s < 0.0) {
-      throw ScenarioError(path + ":" + std::to_string(row.line) + ": delta_v_m_s must be >= 0, got " +
-                          Fmt(im.delta_v_m_s));
+      throw ScenarioError(path + ":" + std::to_string(row.line) +
+                          ": delta_v_m_s must be >= 0, got " + Fmt(im.delta_v_m_s));
     }
     out.push_back(im);
   }
@@ -617,8 +630,7 @@ std::string TrajectoryCsvText(const Scenario& s, const transcription::CheckRepor
   // position): a report replayed by another simulator, with the scenario's
   // switched off, gets the linear columns only.
   const bool nl = s.model_type == ModelType::kGeo && r.nonlinear_checked &&
-                  s.check.nonlinear != nullptr &&
-                  r.nonlinear_eci.size() == r.sample_times.size();
+                  s.check.nonlinear != nullptr && r.nonlinear_eci.size() == r.sample_times.size();
   const std::vector<std::string> cols = TrajectoryColumns(s, nl);
   std::ostringstream os;
   for (size_t i = 0; i < cols.size(); ++i) os << (i ? "," : "") << cols[i];
@@ -705,9 +717,8 @@ std::string ImpulsiveTrajectoryCsvText(const Scenario& s,
     const double h = p.grid[j + 1] - p.grid[j];
     for (int k = 1; k <= q; ++k) samples.push_back(p.grid[j] + h * k / (q + 1));
     samples.push_back(p.grid[j + 1]);
-    const std::vector<Eigen::VectorXd> xs =
-        dynamics::PropagateLinear(model, no_input, x, p.grid[j], {}, samples,
-                                  s.check.propagation_tolerance);
+    const std::vector<Eigen::VectorXd> xs = dynamics::PropagateLinear(
+        model, no_input, x, p.grid[j], {}, samples, s.check.propagation_tolerance);
     for (int k = 0; k < q; ++k) write_row(samples[k], xs[k], none);
     x = xs.back();
   }

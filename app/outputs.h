@@ -49,8 +49,8 @@ nlohmann::json ImpulsiveCheckJson(const Scenario& scenario,
 
 /// Extra facts of a solve run that the library result does not hold.
 struct RunFacts {
-  bool interrupted = false;      // SIGINT stopped the solve
-  double total_seconds = 0.0;    // whole command, wall clock
+  bool interrupted = false;    // SIGINT stopped the solve
+  double total_seconds = 0.0;  // whole command, wall clock
   std::string command_line;
 };
 

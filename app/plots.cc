@@ -49,7 +49,8 @@ struct TimeAxis {
 };
 
 TimeAxis ChooseTimeAxis(double duration_s) {
-  if (duration_s >= 2 * common::kSecondsPerDay) return {common::kSecondsPerDay, "time since t_0 (days)"};
+  if (duration_s >= 2 * common::kSecondsPerDay)
+    return {common::kSecondsPerDay, "time since t_0 (days)"};
   if (duration_s >= 2 * 3600.0) return {3600.0, "time since t_0 (h)"};
   return {1.0, "time since t_0 (s)"};
 }
@@ -126,7 +127,8 @@ std::string TargetMarkers(const Scenario& s, int a, int b, std::string* data) {
   os << ", \\\n     $target using 1:2 with points pt 3 ps 3 lw 2 lc rgb '#d62728' title 'target'";
   if (std::abs(t(a)) + std::abs(t(b)) > 0) {
     *data += "$aim << EOD\n" + G(t(a) / 1000.0) + "," + G(t(b) / 1000.0) + "\nEOD\n";
-    os << ", \\\n     $aim using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#2ca02c' title 'aim point'";
+    os << ", \\\n     $aim using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#2ca02c' title 'aim "
+          "point'";
   }
   return os.str();
 }
@@ -180,7 +182,8 @@ std::string WindowScript(const Scenario& s, bool nl, const std::vector<int>& fir
   const std::string target =
       s.model_type != ModelType::kGeo ? TargetMarkers(s, 1, 2, &target_data) : "";
   os << target_data;
-  os << "plot 'trajectory.csv' skip 1 using " << x << ":" << y << " with lines lw 1.5 lc rgb '#1f77b4' title "
+  os << "plot 'trajectory.csv' skip 1 using " << x << ":" << y
+     << " with lines lw 1.5 lc rgb '#1f77b4' title "
      << (s.model_type == ModelType::kGeo ? "'linear model'" : "'trajectory'");
   if (nl) {
     os << ", \\\n     'trajectory.csv' skip 1 using " << Col(cols, "dlon_deg") << ":"
@@ -209,10 +212,10 @@ std::string XyScript(const Scenario& s, const std::vector<int>& fired) {
   const std::string y = "($" + std::to_string(Col(cols, "x_m")) + "/1000)";
   // 5 % margins so that markers on the extremes are not cut by the frame.
   os << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
-  const bool window_on_y = s.problem.window.enabled() && !s.window_half_widths.empty() &&
-                           std::find(s.problem.window.outputs.begin(),
-                                     s.problem.window.outputs.end(), 1) !=
-                               s.problem.window.outputs.end();
+  const bool window_on_y =
+      s.problem.window.enabled() && !s.window_half_widths.empty() &&
+      std::find(s.problem.window.outputs.begin(), s.problem.window.outputs.end(), 1) !=
+          s.problem.window.outputs.end();
   if (window_on_y) {
     const auto& outs = s.problem.window.outputs;
     const size_t k = static_cast<size_t>(std::find(outs.begin(), outs.end(), 1) - outs.begin());
@@ -255,7 +258,8 @@ std::string TimelineScript(const Scenario& s) {
        << "set key top right\n"
        << "set yrange [0:*]\n"
        << "plot for [i=1:" << m << "] 'impulses.csv' skip 1 using (($3-t0)/unit):"
-       << "(strcol(1) eq word(names,i) ? $4 : NaN) with impulses lw 3 lc rgb color(i) title word(names,i), \\\n"
+       << "(strcol(1) eq word(names,i) ? $4 : NaN) with impulses lw 3 lc rgb color(i) title "
+          "word(names,i), \\\n"
        << "     NaN notitle\n";
   } else {
     os << "set title " << Quote(s.name + ": firing timeline") << "\n"
@@ -329,8 +333,8 @@ std::string OutputsScript(const Scenario& s, bool nl) {
     const std::string c_lat = "($" + std::to_string(Col(cols, "lin_lat_deg")) + ")";
     const std::string c_lon = "($" + std::to_string(Col(cols, "lin_dlon_deg")) + ")";
     const std::string c_dr = "($" + std::to_string(Col(cols, "dr_m")) + "/1000)";
-    panels.push_back({"latitude (deg)", c_lat,
-                      nl ? "($" + std::to_string(Col(cols, "lat_deg")) + ")" : "", w});
+    panels.push_back(
+        {"latitude (deg)", c_lat, nl ? "($" + std::to_string(Col(cols, "lat_deg")) + ")" : "", w});
     panels.push_back({"longitude - station (deg)", c_lon,
                       nl ? "($" + std::to_string(Col(cols, "dlon_deg")) + ")" : "", w});
     panels.push_back({"r - a_mp (km)", c_dr,
@@ -340,12 +344,12 @@ std::string OutputsScript(const Scenario& s, bool nl) {
     const std::string div = km ? "/1000" : "";
     const std::string unit = km ? "km" : "m";
     const double b = km ? w / 1000.0 : w;
-    panels.push_back({"x, radial (" + unit + ")",
-                      "($" + std::to_string(Col(cols, "x_m")) + div + ")", "", 0.0});
+    panels.push_back(
+        {"x, radial (" + unit + ")", "($" + std::to_string(Col(cols, "x_m")) + div + ")", "", 0.0});
     panels.push_back({"y, along-track (" + unit + ")",
                       "($" + std::to_string(Col(cols, "y_m")) + div + ")", "", b});
-    panels.push_back({"z, normal (" + unit + ")",
-                      "($" + std::to_string(Col(cols, "z_m")) + div + ")", "", b});
+    panels.push_back(
+        {"z, normal (" + unit + ")", "($" + std::to_string(Col(cols, "z_m")) + div + ")", "", b});
   }
   for (size_t k = 0; k < panels.size(); ++k) {
     const Panel& p = panels[k];

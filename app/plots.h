@@ -34,8 +34,8 @@ struct PlotResult {
   std::vector<std::string> scripts;  // file names written (in the directory)
   std::vector<std::string> images;   // SVG files produced
   bool gnuplot_found = false;
-  bool ok = false;                   // every image produced
-  std::string message;               // why plots were skipped or failed
+  bool ok = false;      // every image produced
+  std::string message;  // why plots were skipped or failed
 };
 
 /// Writes window.gp, timeline.gp, outputs.gp (and xy.gp) into `dir` (which must already

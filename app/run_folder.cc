@@ -25,13 +25,13 @@ namespace fs = std::filesystem;
 // simulate), for runs older than the manifest.
 const std::set<std::string>& KnownNames() {
   static const std::set<std::string> names = {
-      "summary.json",  "schedule.csv",  "trajectory.csv", "impulses.csv",   "check.json",
-      "gnuplot.log",   "window.gp",     "window.svg",     "timeline.gp",    "timeline.svg",
-      "outputs.gp",    "outputs.svg",   "consumption.gp", "consumption.svg", "vectors.gp",
-      "vectors.svg",   "latlon.gp",     "latlon.svg",     "checkpoint.json", "in_progress.json",
-      "year.json",     "cycles.csv",    "cycles",         "xy.gp",          "xy.svg",
-      "report.html",   "gap.gp",        "gap.svg",        "thrust_days.gp", "thrust_days.svg",
-      "box.gp",        "box.svg"};
+      "summary.json", "schedule.csv", "trajectory.csv", "impulses.csv",    "check.json",
+      "gnuplot.log",  "window.gp",    "window.svg",     "timeline.gp",     "timeline.svg",
+      "outputs.gp",   "outputs.svg",  "consumption.gp", "consumption.svg", "vectors.gp",
+      "vectors.svg",  "latlon.gp",    "latlon.svg",     "checkpoint.json", "in_progress.json",
+      "year.json",    "cycles.csv",   "cycles",         "xy.gp",           "xy.svg",
+      "report.html",  "gap.gp",       "gap.svg",        "thrust_days.gp",  "thrust_days.svg",
+      "box.gp",       "box.svg"};
   return names;
 }
 
@@ -51,7 +51,9 @@ std::string JoinFirst(const std::vector<std::string>& names, size_t most) {
 void RemoveOrThrow(const fs::path& p) {
   std::error_code ec;
   fs::remove_all(p, ec);
-  if (ec) throw ScenarioError(p.string() + ": cannot remove the earlier run's file (" + ec.message() + ")");
+  if (ec)
+    throw ScenarioError(p.string() + ": cannot remove the earlier run's file (" + ec.message() +
+                        ")");
 }
 
 }  // namespace
@@ -115,10 +117,10 @@ RunFolder::RunFolder(std::string target, bool force, std::string command_line)
     : target_(std::move(target)), command_line_(std::move(command_line)) {
   before_ = InspectFolder(target_);
   if (before_.holds_run() && !force) {
-    throw ScenarioError(
-        target_ + " holds the results of an earlier run (" + JoinFirst(before_.run_files, 4) +
-        (before_.run_command.empty() ? "" : "; from: " + before_.run_command) +
-        "): use --force to replace them, or choose another --out");
+    throw ScenarioError(target_ + " holds the results of an earlier run (" +
+                        JoinFirst(before_.run_files, 4) +
+                        (before_.run_command.empty() ? "" : "; from: " + before_.run_command) +
+                        "): use --force to replace them, or choose another --out");
   }
   fs::path t = fs::absolute(fs::path(target_)).lexically_normal();
   if (t.filename().empty()) t = t.parent_path();
@@ -170,15 +172,17 @@ std::string RunFolder::Commit() {
     const fs::path dest = fs::path(target_) / f;
     if (fs::is_directory(dest)) fs::remove_all(dest, ec);
     fs::rename(fs::path(tmp_) / f, dest, ec);
-    if (ec) throw ScenarioError(dest.string() + ": cannot move the result into place (" + ec.message() + ")");
+    if (ec)
+      throw ScenarioError(dest.string() + ": cannot move the result into place (" + ec.message() +
+                          ")");
   }
   WriteManifest(target_, files, command_line_);
   std::error_code ec;
   fs::remove(tmp_, ec);
   committed_ = true;
   if (!now.other_files.empty()) {
-    note << (note.tellp() > 0 ? "; " : "") << target_ << " also holds "
-         << now.other_files.size() << " file(s) thrustsched did not write, left as they are ("
+    note << (note.tellp() > 0 ? "; " : "") << target_ << " also holds " << now.other_files.size()
+         << " file(s) thrustsched did not write, left as they are ("
          << JoinFirst(now.other_files, 4) << ")";
   }
   return note.str();

@@ -25,8 +25,8 @@ namespace {
 using common::kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounds that keep every model and grid well defined (documented in the README).
-constexpr double kMaxAbsTime = 1e10;      // s, |start_s| and |end|
-constexpr double kMaxDuration = 1e9;      // s, ~31.7 years
+constexpr double kMaxAbsTime = 1e10;  // s, |start_s| and |end|
+constexpr double kMaxDuration = 1e9;  // s, ~31.7 years
 
 std::string Join(const std::vector<std::string>& v) {
   std::string s;
@@ -87,14 +87,14 @@ Eigen::VectorXd ReadState(JsonObject& o, ModelType type, int n, bool initial = f
   return x;
 }
 
-
 // The initial state; needs the model and the horizon (an orbit is converted
 // at the horizon start). OPM paths are relative to the scenario file.
 void ParseInitialState(JsonObject init, const ScenarioParseOptions& options, Scenario* s) {
   if (s->model_type != ModelType::kGeo) {
     for (const std::string& form : OrbitForms()) {
       if (init.Has(form)) {
-        init.Fail(form, "an orbit needs a \"geo\" model, got \"" + std::string(ToString(s->model_type)) + "\"");
+        init.Fail(form, "an orbit needs a \"geo\" model, got \"" +
+                            std::string(ToString(s->model_type)) + "\"");
       }
     }
   }
@@ -102,12 +102,14 @@ void ParseInitialState(JsonObject init, const ScenarioParseOptions& options, Sce
     init.ExactlyOneOf(StateForms(ModelType::kGeo, /*initial=*/true), /*required=*/true);
     std::error_code ec;
     const bool is_file = std::filesystem::is_regular_file(options.source, ec);
-    const std::string base_dir = is_file ? std::filesystem::path(options.source).parent_path().string() : "";
+    const std::string base_dir =
+        is_file ? std::filesystem::path(options.source).parent_path().string() : "";
     const dynamics::GeoSimulator sim(*s->geo);
     s->initial_orbit = ReadInitialOrbit(init, sim, s->start_s, base_dir);
     s->problem.initial_state = s->initial_orbit->relative_state;
   } else {
-    s->problem.initial_state = ReadState(init, s->model_type, s->problem.model->num_states(), /*initial=*/true);
+    s->problem.initial_state =
+        ReadState(init, s->model_type, s->problem.model->num_states(), /*initial=*/true);
   }
   init.Finish();
 }
@@ -137,21 +139,27 @@ void ParseModel(JsonObject m, Scenario* s) {
       g.j2 = g.tesseral = g.sun = g.moon = g.srp = false;
       for (size_t i = 0; i < list.size(); ++i) {
         const std::string& p = list[i];
-        if (p == "j2") g.j2 = true;
-        else if (p == "tesseral") g.tesseral = true;
-        else if (p == "sun") g.sun = true;
-        else if (p == "moon") g.moon = true;
-        else if (p == "srp") g.srp = true;
+        if (p == "j2")
+          g.j2 = true;
+        else if (p == "tesseral")
+          g.tesseral = true;
+        else if (p == "sun")
+          g.sun = true;
+        else if (p == "moon")
+          g.moon = true;
+        else if (p == "srp")
+          g.srp = true;
         else
           throw ScenarioError(m.FieldPath("perturbations") + "[" + std::to_string(i) +
-                              "]: unknown perturbation \"" + p + "\" (expected one of: " +
-                              Join(all) + ")");
+                              "]: unknown perturbation \"" + p +
+                              "\" (expected one of: " + Join(all) + ")");
       }
     }
     g.area_to_mass_m2_kg =
         m.OptionalNumber("area_to_mass_m2_kg", Bound::kNonNegative).value_or(g.area_to_mass_m2_kg);
     if (g.area_to_mass_m2_kg > 1000.0) {
-      m.Fail("area_to_mass_m2_kg", "must be in [0, 1000], got " + FormatNumber(g.area_to_mass_m2_kg));
+      m.Fail("area_to_mass_m2_kg",
+             "must be in [0, 1000], got " + FormatNumber(g.area_to_mass_m2_kg));
     }
     if (auto cr = m.OptionalNumber("reflectivity_cr", Bound::kNonNegative)) {
       if (*cr > 2.0) m.Fail("reflectivity_cr", "must be in [0, 2], got " + FormatNumber(*cr));
@@ -177,9 +185,10 @@ void ParseModel(JsonObject m, Scenario* s) {
     const double mu = m.OptionalNumber("mu_m3_s2", Bound::kPositive)
                           .value_or(dynamics::YamanakaAnkersenModel::kEarthMu);
     // Serra 2015 sec. 4.4 gives the mean motion, not the semi-major axis.
-    const double a = m.Has("semi_major_axis_m")
-                         ? m.Number("semi_major_axis_m", Bound::kPositive)
-                         : std::cbrt(mu / std::pow(m.Number("mean_motion_rad_s", Bound::kPositive), 2));
+    const double a =
+        m.Has("semi_major_axis_m")
+            ? m.Number("semi_major_axis_m", Bound::kPositive)
+            : std::cbrt(mu / std::pow(m.Number("mean_motion_rad_s", Bound::kPositive), 2));
     const double l = m.OptionalNumber("length_scale_m", Bound::kPositive).value_or(1000.0);
     m.ExactlyOneOf({"true_anomaly_at_epoch_rad", "true_anomaly_rad"}, /*required=*/false);
     double nu0 = m.OptionalNumber("true_anomaly_at_epoch_rad").value_or(0.0);
@@ -236,8 +245,9 @@ void ParseSpacecraft(JsonObject sc, Scenario* s) {
       dynamics::Thruster x;
       x.name = t.String("name");
       if (!ValidThrusterName(x.name)) {
-        t.Fail("name", "\"" + x.name +
-                           "\" is not a valid thruster name (1-32 characters among A-Z a-z 0-9 + - _ .)");
+        t.Fail("name",
+               "\"" + x.name +
+                   "\" is not a valid thruster name (1-32 characters among A-Z a-z 0-9 + - _ .)");
       }
       const std::vector<double> d = t.NumberArray("direction_rtn", 3);
       x.direction = Eigen::Vector3d(d[0], d[1], d[2]);
@@ -298,9 +308,9 @@ void ParseHorizon(JsonObject h, Scenario* s) {
         Wrap(h.FieldPath("end_true_anomaly_rad"), [&] { return ya_model.TimeAtTrueAnomaly(nu_f); });
     duration = t_end - start;
     if (!(duration > 0.0)) {
-      h.Fail("end_true_anomaly_rad", FormatNumber(nu_f) + " rad is reached at t = " +
-                                         FormatNumber(t_end) + " s, not after start_s = " +
-                                         FormatNumber(start) + " s");
+      h.Fail("end_true_anomaly_rad", FormatNumber(nu_f) +
+                                         " rad is reached at t = " + FormatNumber(t_end) +
+                                         " s, not after start_s = " + FormatNumber(start) + " s");
     }
   }
   if (duration > kMaxDuration) {
@@ -332,7 +342,8 @@ void ParseHorizon(JsonObject h, Scenario* s) {
   s->start_s = start;
   s->num_intervals = n;
   s->step_s = duration / n;
-  s->problem.grid = Wrap(h.path(), [&] { return dynamics::UniformGrid(start, start + duration, n); });
+  s->problem.grid =
+      Wrap(h.path(), [&] { return dynamics::UniformGrid(start, start + duration, n); });
 }
 
 void ParseWindow(JsonObject w, Scenario* s) {
@@ -400,8 +411,8 @@ void ParseObjective(JsonObject& top, Scenario* s) {
     return;
   }
   if (!v.is_object()) {
-    top.Fail("objective", "expected \"l1\", \"delta_v\", \"propellant\" or an object, got " +
-                              DescribeJson(v));
+    top.Fail("objective",
+             "expected \"l1\", \"delta_v\", \"propellant\" or an object, got " + DescribeJson(v));
   }
   JsonObject o = top.Object("objective");
   s->problem.objective.kind = transcription::ParseObjectiveKind(o.Choice("kind", kinds));
@@ -421,7 +432,8 @@ void ParseDiscretisation(JsonObject d, Scenario* s) {
   if (d.Has("scheme")) o.scheme = dynamics::ParseScheme(d.Choice("scheme", SchemeNames()));
   o.rk4_substeps = d.OptionalInteger("rk4_substeps", 1, 1000).value_or(1);
   if (auto tol = d.OptionalNumber("reference_tolerance", Bound::kPositive)) {
-    if (*tol > 1e-3) d.Fail("reference_tolerance", "must be in (0, 1e-3], got " + FormatNumber(*tol));
+    if (*tol > 1e-3)
+      d.Fail("reference_tolerance", "must be in (0, 1e-3], got " + FormatNumber(*tol));
     o.reference_tolerance = *tol;
   }
   d.Finish();
@@ -448,7 +460,8 @@ void ParseSolver(JsonObject o, Scenario* s) {
   so.random_seed = o.OptionalInteger("random_seed", 0, 2147483647).value_or(so.random_seed);
   so.log_level = o.OptionalInteger("log_level", 0, 3).value_or(so.log_level);
   so.presolve = o.OptionalBool("presolve").value_or(so.presolve);
-  if (auto p = o.OptionalNumber("progress_interval_s", Bound::kPositive)) so.progress_interval_s = *p;
+  if (auto p = o.OptionalNumber("progress_interval_s", Bound::kPositive))
+    so.progress_interval_s = *p;
   if (auto d = o.OptionalNumber("diagnosis_time_limit_s", Bound::kNonNegative)) {
     s->diagnosis_time_limit_s = *d;
   }
@@ -497,7 +510,8 @@ void ParseForcedOff(JsonObject& top, Scenario* s) {
 void ParseTerminal(JsonObject t, Scenario* s) {
   transcription::TerminalSpec& ts = s->problem.terminal;
   const int n = s->problem.model->num_states();
-  const std::string type = t.Choice("type", {"free", "fixed_state", "state_box", "station_keeping"});
+  const std::string type =
+      t.Choice("type", {"free", "fixed_state", "state_box", "station_keeping"});
   if (type == "free") {
     ts.kind = transcription::TerminalKind::kFree;
   } else if (type == "fixed_state" || type == "state_box") {
@@ -512,11 +526,11 @@ void ParseTerminal(JsonObject t, Scenario* s) {
       }
       ts.tolerance.resize(n);
       for (int i = 0; i < n; ++i) {
-        ts.tolerance[i] = tol[i].is_null()
-                              ? kInf
-                              : CheckedNumber(tol[i], t.FieldPath("tolerance") + "[" +
-                                                          std::to_string(i) + "]",
-                                              Bound::kNonNegative);
+        ts.tolerance[i] =
+            tol[i].is_null()
+                ? kInf
+                : CheckedNumber(tol[i], t.FieldPath("tolerance") + "[" + std::to_string(i) + "]",
+                                Bound::kNonNegative);
       }
     }
   } else {
@@ -531,7 +545,8 @@ void ParseTerminal(JsonObject t, Scenario* s) {
     ts.facets_out_of_plane = t.OptionalInteger("facets_out_of_plane", 3, 1000).value_or(16);
     ts.facets_cone_plus = t.OptionalInteger("facets_cone_plus", 3, 1000).value_or(16);
     ts.facets_cone_minus = t.OptionalInteger("facets_cone_minus", 3, 1000).value_or(16);
-    if (t.Has("lookahead_s")) ts.lookahead_s = t.NumberArray("lookahead_s", -1, Bound::kNonNegative);
+    if (t.Has("lookahead_s"))
+      ts.lookahead_s = t.NumberArray("lookahead_s", -1, Bound::kNonNegative);
     if (auto mg = t.OptionalNumber("margin", Bound::kNonNegative)) {
       if (*mg >= 1.0) t.Fail("margin", "must be in [0, 1), got " + FormatNumber(*mg));
       ts.margin = *mg;
@@ -601,10 +616,10 @@ std::string_view ToString(ModelType type) {
 }
 
 std::vector<std::string> ScenarioSections() {
-  return {"name",           "description", "model",     "spacecraft",     "initial_state",
-          "horizon",        "window",      "operations", "objective",     "discretisation",
-          "transcription",  "solver",      "history",   "forced_off",     "terminal",
-          "input_mode",     "max_impulse_m_s", "check",     "conjunction"};
+  return {"name",          "description",     "model",      "spacecraft", "initial_state",
+          "horizon",       "window",          "operations", "objective",  "discretisation",
+          "transcription", "solver",          "history",    "forced_off", "terminal",
+          "input_mode",    "max_impulse_m_s", "check",      "conjunction"};
 }
 
 Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& options) {
@@ -652,8 +667,7 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
     s.check.nonlinear = std::make_shared<const dynamics::GeoSimulator>(*s.geo);
   }
   if (!s.window_half_widths.empty()) {
-    s.verdict.window_tolerance =
-        1e-3 * std::min(s.window_half_widths[0], s.window_half_widths[1]);
+    s.verdict.window_tolerance = 1e-3 * std::min(s.window_half_widths[0], s.window_half_widths[1]);
   }
   if (top.Has("check")) ParseCheck(top.Object("check"), &s);
   top.Finish();

@@ -67,14 +67,14 @@ struct VerdictOptions {
 
 struct Scenario {
   std::string name;
-  std::string path;   // file it was read from ("" if parsed from text)
+  std::string path;    // file it was read from ("" if parsed from text)
   nlohmann::json raw;  // the whole file as parsed
   ModelType model_type = ModelType::kHcw;
 
   transcription::ScheduleProblem problem;
   transcription::BuildOptions build;
-  milp::SolveOptions solve;             // no callbacks set
-  transcription::CheckOptions check;    // .nonlinear set for GEO unless disabled
+  milp::SolveOptions solve;           // no callbacks set
+  transcription::CheckOptions check;  // .nonlinear set for GEO unless disabled
   /// solver.diagnosis_time_limit_s: after a solve that a limit stopped with
   /// no schedule, at most this long is spent looking for a proof of
   /// infeasibility (transcription::SolveScheduleOptions::prefix_diagnosis_s);

@@ -33,8 +33,8 @@ using planning::Fallback;
 std::string ProgressLine(const CycleRecord& c, int total, const std::string& epoch, double consumed,
                          double eta) {
   std::ostringstream os;
-  os << "cycle " << c.index + 1 << "/" << total << " " << Utc(epoch, c.start_s).substr(0, 10) << ": "
-     << StatusName(c.status);
+  os << "cycle " << c.index + 1 << "/" << total << " " << Utc(epoch, c.start_s).substr(0, 10)
+     << ": " << StatusName(c.status);
   if (c.fallback != Fallback::kNone) os << " (fallback " << ToString(c.fallback) << ")";
   os << ", solve " << G(c.solve_seconds, 3) << " s, gap "
      << (std::isfinite(c.gap) ? G(100.0 * c.gap, 3) + "%" : std::string("n/a")) << ", "
@@ -56,16 +56,16 @@ void PrepareFolder(const std::string& dir, const SimulateArgs& a, std::ostream& 
   const FolderContents before = InspectFolder(dir);
   if (!before.holds_run() || a.resume) return;
   if (!a.force) {
-    throw ScenarioError(dir + " holds an earlier run (" +
-                        (fs::exists(dir + "/checkpoint.json") ? std::string("checkpoint.json, ")
-                                                              : std::string()) +
-                        std::to_string(before.run_files.size()) +
-                        " file(s)): use --resume to continue it, or --force to start over");
+    throw ScenarioError(
+        dir + " holds an earlier run (" +
+        (fs::exists(dir + "/checkpoint.json") ? std::string("checkpoint.json, ") : std::string()) +
+        std::to_string(before.run_files.size()) +
+        " file(s)): use --resume to continue it, or --force to start over");
   }
   RemoveEarlierRun(dir, before);
   if (!a.quiet) {
-    err << "note: --force: removed the earlier run's " << before.run_files.size()
-        << " file(s) in " << dir << "\n";
+    err << "note: --force: removed the earlier run's " << before.run_files.size() << " file(s) in "
+        << dir << "\n";
   }
 }
 
@@ -142,14 +142,14 @@ void StartRun(YearRun* y) {
 void Announce(const YearRun& y) {
   if (y.quiet()) return;
   const planning::LongHorizonOptions& o = y.setup.options;
-  y.err << y.scenario().name << ": " << y.total << " " << ToString(o.mode)
-        << " cycles of " << G(o.cycle_s / common::kSecondsPerDay, 4) << " d"
+  y.err << y.scenario().name << ": " << y.total << " " << ToString(o.mode) << " cycles of "
+        << G(o.cycle_s / common::kSecondsPerDay, 4) << " d"
         << (o.mode == planning::HorizonMode::kReceding
                 ? " (applied " + G(o.control_s / common::kSecondsPerDay, 4) + " d)"
                 : std::string())
-        << " at " << G(o.step_s) << " s, time limit " << G(o.solve.milp.time_limit_s)
-        << " s, gap " << G(o.solve.milp.relative_gap) << " per cycle; running cycles "
-        << y.state.next_cycle + 1 << ".." << y.target
+        << " at " << G(o.step_s) << " s, time limit " << G(o.solve.milp.time_limit_s) << " s, gap "
+        << G(o.solve.milp.relative_gap) << " per cycle; running cycles " << y.state.next_cycle + 1
+        << ".." << y.target
         << "; Ctrl-C stops (finished cycles are kept, continue with --resume)\n";
 }
 
@@ -201,8 +201,8 @@ void ReportCycle(const YearRun& y, double consumed, double eta_s) {
   y.err << ProgressLine(last, y.total, y.epoch, consumed, eta_s) << "\n";
   for (const planning::CycleAttempt& at : last.attempts) {
     if (at.level != Fallback::kNone || at.status != last.status) {
-      y.err << "  attempt " << ToString(at.level) << ": " << StatusName(at.status)
-            << " after " << G(at.solve_seconds, 3) << " s (" << at.detail.substr(0, 160) << ")\n";
+      y.err << "  attempt " << ToString(at.level) << ": " << StatusName(at.status) << " after "
+            << G(at.solve_seconds, 3) << " s (" << at.detail.substr(0, 160) << ")\n";
     }
   }
 }
@@ -232,10 +232,10 @@ bool RunCycles(YearRun* y) {
     }
     const bool retry = k == first_cycle && died.has_value() && died->cycle == k + 1;
     if (retry && died->safe) {
-      throw std::runtime_error(
-          "cycle " + std::to_string(k + 1) + " ended the process twice (the second time with "
-          "CBC preprocessing off): the solver crashes on this cycle's MILP; " + in_progress +
-          " records it (remove that file to try again)");
+      throw std::runtime_error("cycle " + std::to_string(k + 1) +
+                               " ended the process twice (the second time with "
+                               "CBC preprocessing off): the solver crashes on this cycle's MILP; " +
+                               in_progress + " records it (remove that file to try again)");
     }
     if (retry && !y->quiet()) {
       y->err << "note: an earlier run died while solving cycle " << k + 1
@@ -307,15 +307,15 @@ std::vector<std::string> WriteRunFiles(const YearRun& y) {
 void PrintSummary(const YearRun& y, const std::vector<std::string>& files, bool interrupted) {
   std::ostream& out = std::cout;
   const Scenario& s = y.scenario();
-  const planning::LongHorizonSummary sum =
-      planning::Summarize(y.cycles, s.problem.thrusters);
+  const planning::LongHorizonSummary sum = planning::Summarize(y.cycles, s.problem.thrusters);
   out << "scenario      " << s.name << " (" << y.args.scenario << ")\n"
-      << "cycles        " << sum.cycles << "/" << y.total << " ("
-      << ToString(y.setup.options.mode) << ", " << G(sum.simulated_s / common::kSecondsPerDay, 6)
-      << " days simulated)" << (interrupted ? ", interrupted" : "") << "\n"
+      << "cycles        " << sum.cycles << "/" << y.total << " (" << ToString(y.setup.options.mode)
+      << ", " << G(sum.simulated_s / common::kSecondsPerDay, 6) << " days simulated)"
+      << (interrupted ? ", interrupted" : "") << "\n"
       << "consumption   " << G(sum.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
       << G(sum.delta_v_m_s, 6) << " m/s, normal delta-v " << G(sum.normal_delta_v_m_s, 5)
-      << " m/s, propellant " << G(sum.propellant_kg, 5) << " kg, " << sum.burns << " burns\n"
+      << " m/s, propellant " << G(sum.propellant_kg, 5) << " kg, " << sum.burns
+      << " burns\n"
       // The total is over the thrusters (as year.json's thrust_days.total):
       // N + S covers every thruster only in the thesis's four-thruster layout
       // (one per face gives ±R thrusters on neither face).

@@ -34,13 +34,13 @@ namespace thrustsched::app {
 
 struct SimulateArgs {
   std::string scenario;
-  std::string out_dir;   // empty: out/<scenario file stem>
-  int cycles = -1;       // > 0: stop once this many cycles (in total) are done
-  bool resume = false;   // continue from out_dir/checkpoint.json
-  bool force = false;    // start over in a folder holding an earlier run (its files removed)
-  bool quiet = false;    // no progress on stderr
-  bool no_plots = false; // write the gnuplot scripts but do not run gnuplot
-  bool no_report = false; // skip report.html (and the year plots only it shows)
+  std::string out_dir;     // empty: out/<scenario file stem>
+  int cycles = -1;         // > 0: stop once this many cycles (in total) are done
+  bool resume = false;     // continue from out_dir/checkpoint.json
+  bool force = false;      // start over in a folder holding an earlier run (its files removed)
+  bool quiet = false;      // no progress on stderr
+  bool no_plots = false;   // write the gnuplot scripts but do not run gnuplot
+  bool no_report = false;  // skip report.html (and the year plots only it shows)
   std::string command_line;
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers: the whole run's replay and burns
 
@@ -73,7 +73,7 @@ int RunSimulate(const SimulateArgs& args);
 struct FailureSpec {
   std::vector<std::string> thrusters;  // names
   double from_s = 0.0;
-  double until_s = 0.0;                // +inf = never repaired
+  double until_s = 0.0;  // +inf = never repaired
   bool opposite_also_off = false;
   std::vector<std::string> switched_off;  // all names forced off (with the opposites)
 };
@@ -105,8 +105,8 @@ std::string CyclesCsvRow(const planning::CycleRecord& record, const std::string&
 
 /// year.json content.
 nlohmann::json YearJson(const SimulationSetup& setup,
-                        const std::vector<planning::CycleRecord>& cycles,
-                        int cycles_total, double this_run_wall_seconds);
+                        const std::vector<planning::CycleRecord>& cycles, int cycles_total,
+                        double this_run_wall_seconds);
 
 }  // namespace thrustsched::app
 

@@ -26,11 +26,11 @@ using planning::Fallback;
 // changes; this reader accepts both spellings instead, so a checkpoint edited
 // or produced with the summary's names still resumes.
 milp::SolveStatus ParseStatus(const std::string& name, const std::string& path) {
-  if (name == StatusName(milp::SolveStatus::kNoSolutionFound)) return milp::SolveStatus::kNoSolutionFound;
-  for (milp::SolveStatus s :
-       {milp::SolveStatus::kOptimal, milp::SolveStatus::kFeasible, milp::SolveStatus::kInfeasible,
-        milp::SolveStatus::kUnbounded, milp::SolveStatus::kNoSolutionFound,
-        milp::SolveStatus::kError}) {
+  if (name == StatusName(milp::SolveStatus::kNoSolutionFound))
+    return milp::SolveStatus::kNoSolutionFound;
+  for (milp::SolveStatus s : {milp::SolveStatus::kOptimal, milp::SolveStatus::kFeasible,
+                              milp::SolveStatus::kInfeasible, milp::SolveStatus::kUnbounded,
+                              milp::SolveStatus::kNoSolutionFound, milp::SolveStatus::kError}) {
     if (name == milp::ToString(s)) return s;
   }
   throw ScenarioError(path + ": unknown solver status \"" + name + "\"");
@@ -43,7 +43,8 @@ double GetNumber(const nlohmann::json& j, const char* key, const std::string& pa
   if (!j.contains(key)) throw ScenarioError(path + "." + key + ": missing");
   const nlohmann::json& v = j.at(key);
   if (v.is_null()) return kNaN;
-  if (!v.is_number()) throw ScenarioError(path + "." + key + ": expected a number, got " + DescribeJson(v));
+  if (!v.is_number())
+    throw ScenarioError(path + "." + key + ": expected a number, got " + DescribeJson(v));
   return v.get<double>();
 }
 
@@ -78,10 +79,12 @@ Eigen::VectorXd ToVector(const std::vector<double>& v) {
 }
 
 dynamics::Vector6d ToVector6(const std::vector<double>& v, const std::string& path) {
-  if (v.size() != 6) throw ScenarioError(path + ": expected 6 numbers, got " + std::to_string(v.size()));
+  if (v.size() != 6)
+    throw ScenarioError(path + ": expected 6 numbers, got " + std::to_string(v.size()));
   dynamics::Vector6d x;
   for (int i = 0; i < 6; ++i) {
-    if (!std::isfinite(v[i])) throw ScenarioError(path + ": non-finite component " + std::to_string(i));
+    if (!std::isfinite(v[i]))
+      throw ScenarioError(path + ": non-finite component " + std::to_string(i));
     x(i) = v[i];
   }
   return x;
@@ -117,9 +120,11 @@ void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int n
                         std::string(kCheckpointFormat) + ")");
   }
   if (j.value("fingerprint", "") != setup.fingerprint) {
-    throw ScenarioError(path + ": the checkpoint was written for another scenario or other "
-                        "settings (fingerprint " + j.value("fingerprint", "?") + ", this scenario " +
-                        setup.fingerprint + "); run without --resume to start again");
+    throw ScenarioError(path +
+                        ": the checkpoint was written for another scenario or other "
+                        "settings (fingerprint " +
+                        j.value("fingerprint", "?") + ", this scenario " + setup.fingerprint +
+                        "); run without --resume to start again");
   }
   st->next_cycle = static_cast<int>(GetNumber(j, "next_cycle", path));
   st->time_s = GetNumber(j, "time_s", path);
@@ -138,8 +143,8 @@ void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int n
         CycleRecordFromJson(j.at("cycles")[k], path + ".cycles[" + std::to_string(k) + "]"));
   }
   if (static_cast<int>(cycles->size()) != st->next_cycle) {
-    throw ScenarioError(path + ": " + std::to_string(cycles->size()) + " cycle records for next_cycle " +
-                        std::to_string(st->next_cycle));
+    throw ScenarioError(path + ": " + std::to_string(cycles->size()) +
+                        " cycle records for next_cycle " + std::to_string(st->next_cycle));
   }
 }
 

@@ -23,8 +23,8 @@ std::optional<InProgress> ReadInProgress(const std::string& path, const std::str
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object() || j.value("fingerprint", "") != fingerprint ||
-      !j.contains("cycle") || !j.at("cycle").is_number_integer()) {
+  if (!j.is_object() || j.value("fingerprint", "") != fingerprint || !j.contains("cycle") ||
+      !j.at("cycle").is_number_integer()) {
     return std::nullopt;  // not ours or unreadable: ignore, it is rewritten below
   }
   InProgress p;
@@ -32,7 +32,6 @@ std::optional<InProgress> ReadInProgress(const std::string& path, const std::str
   p.safe = j.value("solver_preprocessing_off", false);
   return p;
 }
-
 
 InProgressGuard::InProgressGuard(std::string path, const std::string& fingerprint, int cycle,
                                  bool safe)

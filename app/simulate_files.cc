@@ -71,7 +71,6 @@ std::string CsvQuote(const std::string& s) {
   return out + "\"";
 }
 
-
 void MakeDirectory(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);

@@ -63,8 +63,8 @@ void WriteAtomically(const std::string& path, const std::string& text);
 // avoided the crash), and the cycle's note says so. A second death in the same
 // cycle stops with an error instead of looping.
 struct InProgress {
-  int cycle = 0;          // 1-based
-  bool safe = false;      // that attempt already ran without preprocessing
+  int cycle = 0;      // 1-based
+  bool safe = false;  // that attempt already ran without preprocessing
 };
 
 /// The marker an earlier process left for this scenario, if any.
@@ -97,8 +97,7 @@ nlohmann::json CheckpointJson(const SimulationSetup& setup, const planning::Long
                               const std::vector<planning::CycleRecord>& cycles);
 /// @throws ScenarioError when the checkpoint is of another scenario or malformed.
 void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int num_thrusters,
-                    planning::LongHorizonState* st,
-                    std::vector<planning::CycleRecord>* cycles);
+                    planning::LongHorizonState* st, std::vector<planning::CycleRecord>* cycles);
 
 // ---- The long_horizon section (simulate_setup.cc).
 /// Fills setup->options and setup->failures from setup->scenario's JSON.

@@ -49,10 +49,10 @@ std::string TrajectoryRows(const SimulationSetup& setup, const CycleRecord& c, b
     const double q = std::hypot(x(3), x(4));
     const double incl = 2.0 * std::atan(q);
     const double ix = q > 0 ? incl * x(3) / q : 0.0, iy = q > 0 ? incl * x(4) / q : 0.0;
-    os << G(t, 15) << "," << G((t - t0) / common::kSecondsPerDay, 10) << "," << G(y(1) * kRadToDeg, 10) << ","
-       << G(y(2) * kRadToDeg, 10) << "," << G(y(0) / 1000.0, 10) << "," << G(x(1), 10) << ","
-       << G(x(2), 10) << "," << G(ix * kRadToDeg, 10) << "," << G(iy * kRadToDeg, 10) << ","
-       << G(x(5) * kRadToDeg, 10) << "\n";
+    os << G(t, 15) << "," << G((t - t0) / common::kSecondsPerDay, 10) << ","
+       << G(y(1) * kRadToDeg, 10) << "," << G(y(2) * kRadToDeg, 10) << "," << G(y(0) / 1000.0, 10)
+       << "," << G(x(1), 10) << "," << G(x(2), 10) << "," << G(ix * kRadToDeg, 10) << ","
+       << G(iy * kRadToDeg, 10) << "," << G(x(5) * kRadToDeg, 10) << "\n";
   }
   return os.str();
 }
@@ -86,12 +86,13 @@ std::string GnuplotText(const std::string& s) {
 PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
                          const std::vector<CycleRecord>& cycles, bool run) {
   const std::string name = GnuplotText(setup.scenario.name);
-  const double w = setup.scenario.window_half_widths.empty() ? 0.05 : setup.scenario.window_half_widths[0];
+  const double w =
+      setup.scenario.window_half_widths.empty() ? 0.05 : setup.scenario.window_half_widths[0];
   std::vector<std::pair<std::string, std::string>> scripts;
   {
     std::ostringstream os;
-    os << PlotHeader("consumption.svg", 1000, 600, name)
-       << "set title '" << name << ": consumption per cycle and cumulative (L1 thesis metric)'\n"
+    os << PlotHeader("consumption.svg", 1000, 600, name) << "set title '" << name
+       << ": consumption per cycle and cumulative (L1 thesis metric)'\n"
        << "set xlabel 'cycle start (days since t_0)'\n"
        << "set ylabel 'per cycle (m/s)'\nset y2label 'cumulative (m/s)'\n"
        << "set ytics nomirror\nset y2tics\nset key top left\n"
@@ -109,8 +110,7 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
   }
   {
     std::ostringstream os;
-    os << PlotHeader("vectors.svg", 1200, 600, name)
-       << "set multiplot layout 1,2 title '" << name
+    os << PlotHeader("vectors.svg", 1200, 600, name) << "set multiplot layout 1,2 title '" << name
        << ": inclination and eccentricity vectors (nonlinear replay, osculating)'\n"
        << "set size ratio -1\nset key off\n"
        << "set title 'inclination vector i (cos W, sin W)'\n"
@@ -125,16 +125,19 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
   }
   {
     std::ostringstream os;
-    os << PlotHeader("latlon.svg", 1200, 800, name)
-       << "set multiplot layout 2,1 title '" << name
+    os << PlotHeader("latlon.svg", 1200, 800, name) << "set multiplot layout 2,1 title '" << name
        << ": latitude and longitude over the run (nonlinear replay)'\n"
        << "w = " << G(w) << "\nset key top right\n"
        << "set ylabel 'latitude (deg)'\nset xlabel ''\n"
-       << "plot 'trajectory.csv' skip 1 using 2:3 with lines lc rgb '#1f77b4' title 'latitude', \\\n"
-       << "     w with lines dt 2 lc rgb 'red' title 'window', -w with lines dt 2 lc rgb 'red' notitle\n"
+       << "plot 'trajectory.csv' skip 1 using 2:3 with lines lc rgb '#1f77b4' title 'latitude', "
+          "\\\n"
+       << "     w with lines dt 2 lc rgb 'red' title 'window', -w with lines dt 2 lc rgb 'red' "
+          "notitle\n"
        << "set ylabel 'longitude - station (deg)'\nset xlabel 'days since t_0'\n"
-       << "plot 'trajectory.csv' skip 1 using 2:4 with lines lc rgb '#ff7f0e' title 'longitude', \\\n"
-       << "     w with lines dt 2 lc rgb 'red' title 'window', -w with lines dt 2 lc rgb 'red' notitle\n"
+       << "plot 'trajectory.csv' skip 1 using 2:4 with lines lc rgb '#ff7f0e' title 'longitude', "
+          "\\\n"
+       << "     w with lines dt 2 lc rgb 'red' title 'window', -w with lines dt 2 lc rgb 'red' "
+          "notitle\n"
        << "unset multiplot\n";
     scripts.emplace_back("latlon", os.str());
   }
@@ -155,8 +158,8 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
     const std::vector<std::string> names = setup.scenario.thruster_names();
     const int m = static_cast<int>(names.size());
     std::ostringstream os;
-    os << PlotHeader("timeline.svg", 1100, 150 + 45 * m, name)
-       << "set title '" << name << ": firing timeline of cycle " << pick + 1 << " ("
+    os << PlotHeader("timeline.svg", 1100, 150 + 45 * m, name) << "set title '" << name
+       << ": firing timeline of cycle " << pick + 1 << " ("
        << Utc(setup.scenario.geo->epoch, c.start_s) << ")'\n"
        << "t0 = " << G(c.start_s, 15) << "\n"
        << "colors = \"#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #8c564b\"\n"
@@ -169,7 +172,8 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
     for (int i = 0; i < m; ++i) os << (i ? ", " : "") << "'" << names[i] << "' " << i + 1;
     os << ")\nset grid noytics\nset key off\n"
        << "plot for [i=1:" << m << "] 'cycles/" << CycleTag(pick)
-       << ".csv' skip 1 using (($2-t0)/86400):(strcol(1) eq word(names,i) ? i : NaN):($4/86400):(0) "
+       << ".csv' skip 1 using (($2-t0)/86400):(strcol(1) eq word(names,i) ? i : "
+          "NaN):($4/86400):(0) "
           "with vectors nohead lw 12 lc rgb color(i) notitle, NaN notitle\n";
     scripts.emplace_back("timeline", os.str());
   }
@@ -191,7 +195,8 @@ PlotFiles WriteYearPlots(const std::string& dir, const SimulationSetup& setup,
       failed += (failed.empty() ? "" : ", ") + base + ".gp";
     }
   }
-  if (!failed.empty()) out.message = "gnuplot failed on " + failed + " (see " + dir + "/gnuplot.log)";
+  if (!failed.empty())
+    out.message = "gnuplot failed on " + failed + " (see " + dir + "/gnuplot.log)";
   return out;
 }
 

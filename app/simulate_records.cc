@@ -20,8 +20,6 @@ namespace fs = std::filesystem;
 using planning::CycleRecord;
 using planning::Fallback;
 
-
-
 }  // namespace simulate_detail
 
 using namespace simulate_detail;
@@ -178,11 +176,11 @@ std::string CyclesCsvHeader() {
 std::string CyclesCsvRow(const CycleRecord& r, const std::string& epoch) {
   std::ostringstream os;
   os << r.index + 1 << "," << Utc(epoch, r.start_s) << "," << G(r.start_s, 15) << ","
-     << G(r.applied_end_s, 15) << "," << StatusName(r.status) << ","
-     << ToString(r.fallback) << "," << G(r.objective) << "," << G(r.best_bound)
-     << "," << G(r.gap) << "," << G(r.solve_seconds, 6) << "," << G(r.first_solution_seconds, 6)
-     << "," << G(r.wall_seconds, 6) << "," << G(r.cpu_seconds, 6) << "," << G(r.consumption_l1_m_s) << "," << G(r.delta_v_m_s)
-     << "," << G(r.propellant_kg) << "," << G(r.normal_delta_v_m_s) << "," << r.burns.size() << ","
+     << G(r.applied_end_s, 15) << "," << StatusName(r.status) << "," << ToString(r.fallback) << ","
+     << G(r.objective) << "," << G(r.best_bound) << "," << G(r.gap) << "," << G(r.solve_seconds, 6)
+     << "," << G(r.first_solution_seconds, 6) << "," << G(r.wall_seconds, 6) << ","
+     << G(r.cpu_seconds, 6) << "," << G(r.consumption_l1_m_s) << "," << G(r.delta_v_m_s) << ","
+     << G(r.propellant_kg) << "," << G(r.normal_delta_v_m_s) << "," << r.burns.size() << ","
      << G(r.max_abs_lat_deg) << "," << G(r.max_abs_lon_deg) << "," << G(r.max_window_violation_deg)
      << "," << G(r.time_outside_window_s) << "," << G(r.prediction_error_deg) << ","
      << (r.rules_ok ? "true" : "false") << "," << (r.controllable ? "true" : "false") << ","
@@ -216,9 +214,8 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
     per[thr.thruster(i).name] = s.thrust_days[i];
     total_days += s.thrust_days[i];
   }
-  j["thrust_days"] = {{"per_thruster", per},   {"total", total_days},
-                      {"north", s.north_days}, {"south", s.south_days},
-                      {"east", s.east_days},   {"west", s.west_days}};
+  j["thrust_days"] = {{"per_thruster", per},   {"total", total_days}, {"north", s.north_days},
+                      {"south", s.south_days}, {"east", s.east_days}, {"west", s.west_days}};
   j["thrust_days_faces_rule"] =
       "a thruster sits on the face opposite to its push: north = pushes -N, south = pushes +N, "
       "east = pushes -T (westward), west = pushes +T (Anzel: N = NE+NW, S = SE+SW, E = NE+SE, "
@@ -246,17 +243,20 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
     if (!c.controllable) unctl.push_back({{"cycle", c.index + 1}, {"reason", c.note}});
     pred.push_back(c.prediction_error_deg);
   }
-  j["fallbacks"] = {{"soft_window", s.fallback_soft_window},
-                    {"soft_window_free_terminal", s.fallback_free_terminal},
-                    {"zero_thrust", s.fallback_zero_thrust},
-                    {"total", s.fallback_soft_window + s.fallback_free_terminal +
-                                  s.fallback_zero_thrust},
-                    {"cycles", fb_cycles}};
+  j["fallbacks"] = {
+      {"soft_window", s.fallback_soft_window},
+      {"soft_window_free_terminal", s.fallback_free_terminal},
+      {"zero_thrust", s.fallback_zero_thrust},
+      {"total", s.fallback_soft_window + s.fallback_free_terminal + s.fallback_zero_thrust},
+      {"cycles", fb_cycles}};
   j["uncontrollable"] = {{"cycles", s.uncontrollable_cycles}, {"list", unctl}};
   j["time_limited_cycles"] = s.time_limited_cycles;
   auto dist = [](const planning::Distribution& d) {
-    return nlohmann::json{{"median", FiniteOrNull(d.median)}, {"p90", FiniteOrNull(d.p90)},  {"max", FiniteOrNull(d.max)},
-                          {"mean", FiniteOrNull(d.mean)},     {"count", d.count}};
+    return nlohmann::json{{"median", FiniteOrNull(d.median)},
+                          {"p90", FiniteOrNull(d.p90)},
+                          {"max", FiniteOrNull(d.max)},
+                          {"mean", FiniteOrNull(d.mean)},
+                          {"count", d.count}};
   };
   j["solve_seconds"] = dist(s.solve_seconds);
   j["gap"] = dist(s.gap);
@@ -290,7 +290,7 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
       {"cycle_relative_gap", o.solve.milp.relative_gap},
       {"threads", o.solve.milp.threads},
       {"cycle_max_nodes", o.solve.milp.max_nodes >= 0 ? nlohmann::json(o.solve.milp.max_nodes)
-                                                       : nlohmann::json(nullptr)},
+                                                      : nlohmann::json(nullptr)},
       {"lp_algorithm", std::string(milp::ToString(o.solve.milp.lp_algorithm))},
       {"scheme", std::string(dynamics::ToString(o.solve.build.discretisation.scheme))},
       {"terminal", o.terminal.kind == transcription::TerminalKind::kStationKeepingSets
@@ -303,11 +303,11 @@ nlohmann::json YearJson(const SimulationSetup& setup, const std::vector<CycleRec
                        : nlohmann::json{{"type", "free"}}},
       {"soft_penalty", o.soft_penalty},
       {"cycle_improve_above_gap", o.improve_above_gap},
-      {"cycle_improve_max_nodes", o.improve_max_nodes >= 0
-                                      ? nlohmann::json(o.improve_max_nodes)
-                                      : (o.solve.milp.max_nodes >= 0
-                                             ? nlohmann::json(5 * std::max(o.solve.milp.max_nodes, 1LL))
-                                             : nlohmann::json(nullptr))},
+      {"cycle_improve_max_nodes",
+       o.improve_max_nodes >= 0 ? nlohmann::json(o.improve_max_nodes)
+                                : (o.solve.milp.max_nodes >= 0
+                                       ? nlohmann::json(5 * std::max(o.solve.milp.max_nodes, 1LL))
+                                       : nlohmann::json(nullptr))},
       {"cycle_retry_without_preprocessing", o.retry_without_preprocessing},
       {"replay_samples_per_step", o.replay_samples_per_step}};
   return j;

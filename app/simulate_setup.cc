@@ -33,8 +33,8 @@ void ParseLongHorizon(SimulationSetup* setup) {
   o.step_s = s.step_s;
   o.duration_s = lh.Number("duration_s", Bound::kPositive);
   o.cycle_s = lh.OptionalNumber("cycle_s", Bound::kPositive).value_or(s.step_s * s.num_intervals);
-  o.mode = planning::ParseHorizonMode(
-      lh.Has("mode") ? lh.Choice("mode", {"fixed", "receding"}) : std::string("fixed"));
+  o.mode = planning::ParseHorizonMode(lh.Has("mode") ? lh.Choice("mode", {"fixed", "receding"})
+                                                     : std::string("fixed"));
   if (o.mode == planning::HorizonMode::kReceding) {
     o.control_s = lh.Number("control_s", Bound::kPositive);
   } else if (lh.Has("control_s")) {
@@ -45,8 +45,10 @@ void ParseLongHorizon(SimulationSetup* setup) {
   int facets = 16;
   if (lh.Has("terminal")) {
     JsonObject t = lh.Object("terminal");
-    if (t.Has("type")) sets = t.Choice("type", {"station_keeping", "free"}) == "station_keeping";
-    else sets = true;
+    if (t.Has("type"))
+      sets = t.Choice("type", {"station_keeping", "free"}) == "station_keeping";
+    else
+      sets = true;
     if (auto k = t.OptionalInteger("facets", 3, 1000)) {
       if (!sets) t.Fail("facets", "is only used with \"type\": \"station_keeping\"");
       facets = *k;
@@ -83,19 +85,19 @@ void ParseLongHorizon(SimulationSetup* setup) {
   const bool solver_time = solver != nullptr && solver->contains("time_limit_s");
   const bool solver_gap = solver != nullptr && solver->contains("relative_gap");
   o.solve.milp.time_limit_s = lh.OptionalNumber("cycle_time_limit_s", Bound::kPositive)
-                                   .value_or(solver_time ? s.solve.time_limit_s : 30.0);
+                                  .value_or(solver_time ? s.solve.time_limit_s : 30.0);
   o.solve.milp.relative_gap = lh.OptionalNumber("cycle_relative_gap", Bound::kNonNegative)
-                                   .value_or(solver_gap ? s.solve.relative_gap : 0.02);
+                                  .value_or(solver_gap ? s.solve.relative_gap : 0.02);
   if (auto th = lh.OptionalInteger("cycle_threads", 1, 64)) o.solve.milp.threads = *th;
   if (auto nodes = lh.OptionalInteger("cycle_max_nodes", 0, 2000000000)) {
     o.solve.milp.max_nodes = *nodes;
   }
-  const std::string lp =
-      lh.Has("cycle_lp_algorithm") ? lh.Choice("cycle_lp_algorithm", {"barrier", "primal", "dual"})
-                                   : std::string("barrier");
+  const std::string lp = lh.Has("cycle_lp_algorithm")
+                             ? lh.Choice("cycle_lp_algorithm", {"barrier", "primal", "dual"})
+                             : std::string("barrier");
   o.solve.milp.lp_algorithm = lp == "barrier"  ? milp::LpAlgorithm::kBarrier
-                               : lp == "primal" ? milp::LpAlgorithm::kPrimal
-                                                : milp::LpAlgorithm::kDual;
+                              : lp == "primal" ? milp::LpAlgorithm::kPrimal
+                                               : milp::LpAlgorithm::kDual;
   o.soft_penalty = lh.OptionalNumber("soft_penalty", Bound::kPositive).value_or(o.soft_penalty);
   o.improve_above_gap = lh.OptionalNumber("cycle_improve_above_gap", Bound::kNonNegative)
                             .value_or(o.improve_above_gap);
@@ -180,7 +182,8 @@ SimulationSetup ParseSimulationText(const std::string& text, const std::string& 
         "long_horizon.terminal");
   }
   if (s.raw.contains("conjunction")) {
-    throw ScenarioError("scenario.conjunction: not used by simulate (solve the encounter with `solve`)");
+    throw ScenarioError(
+        "scenario.conjunction: not used by simulate (solve the encounter with `solve`)");
   }
   if (!s.problem.window.enabled()) {
     throw ScenarioError("scenario.window: missing (simulate keeps the satellite in a window)");

@@ -125,8 +125,8 @@ ImportedSolution ReadGlpsol(const std::string& path, std::istream& in) {
     }
     if (k < tok.size() && tok[k] == "*") ++k;  // integer column marker (MIP report)
     // LP reports have a status column (basic, at lower/upper bound, free, fixed).
-    if (k < tok.size() && (tok[k] == "B" || tok[k] == "NL" || tok[k] == "NU" || tok[k] == "NF" ||
-                           tok[k] == "NS")) {
+    if (k < tok.size() &&
+        (tok[k] == "B" || tok[k] == "NL" || tok[k] == "NU" || tok[k] == "NF" || tok[k] == "NS")) {
       ++k;
     }
     double value = 0.0;
@@ -136,7 +136,8 @@ ImportedSolution ReadGlpsol(const std::string& path, std::istream& in) {
     }
     sol.values[name] = value;
   }
-  if (sol.status.empty()) throw ScenarioError(path + ": no \"Status:\" line (not a glpsol -o report?)");
+  if (sol.status.empty())
+    throw ScenarioError(path + ": no \"Status:\" line (not a glpsol -o report?)");
   return sol;
 }
 
@@ -168,7 +169,8 @@ ImportedSolution ReadGlpkRaw(const std::string& path, std::istream& in) {
       continue;
     }
     if (tok[0] == "j") {
-      if (cols < 0) throw ScenarioError(Where(path, number) + ": column line before the \"s\" line");
+      if (cols < 0)
+        throw ScenarioError(Where(path, number) + ": column line before the \"s\" line");
       double idx = 0.0, v = 0.0;
       const size_t at = kind == "bas" ? 3 : 2;
       if (tok.size() <= at || !ParseDouble(tok[1], &idx) || !ParseDouble(tok[at], &v) || idx < 1 ||

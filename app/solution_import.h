@@ -23,21 +23,21 @@
 namespace thrustsched::app {
 
 enum class SolutionFormat {
-  kCbc,     // `cbc ... solve solu FILE`: status line, then "index name value reduced_cost"
-  kGlpsol,  // `glpsol ... -o FILE`: GLPK's printable report (columns section by name;
-            // activities printed with 6 significant digits)
-  kGlpkRaw, // `glpsol ... -w FILE`: GLPK's raw solution (full precision, columns by
-            // index in the exported order; the column count must match)
+  kCbc,      // `cbc ... solve solu FILE`: status line, then "index name value reduced_cost"
+  kGlpsol,   // `glpsol ... -o FILE`: GLPK's printable report (columns section by name;
+             // activities printed with 6 significant digits)
+  kGlpkRaw,  // `glpsol ... -w FILE`: GLPK's raw solution (full precision, columns by
+             // index in the exported order; the column count must match)
 };
 /// "cbc" | "glpsol" | "glpsol-raw". @throws ScenarioError listing the names.
 SolutionFormat ParseSolutionFormat(std::string_view name);
 
 struct ImportedSolution {
-  std::string status;        // the solver's own words, e.g. "Optimal", "INTEGER OPTIMAL"
-  bool has_solution = false; // an integer-feasible point was reported
+  std::string status;         // the solver's own words, e.g. "Optimal", "INTEGER OPTIMAL"
+  bool has_solution = false;  // an integer-feasible point was reported
   double objective = std::numeric_limits<double>::quiet_NaN();  // as reported
-  std::map<std::string, double> values;  // column name -> value
-  std::vector<double> values_by_index;   // kGlpkRaw: value of column j at [j - 1]
+  std::map<std::string, double> values;                         // column name -> value
+  std::vector<double> values_by_index;  // kGlpkRaw: value of column j at [j - 1]
 };
 
 /// @throws ScenarioError naming the file and line on unreadable content.

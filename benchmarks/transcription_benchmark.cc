@@ -58,8 +58,8 @@ ScheduleProblem HcwWeek() {
 }
 
 void RunBuild(benchmark::State& state, const ScheduleProblem& p, const BuildOptions& opt) {
-  const dynamics::DiscreteModel dm = dynamics::Discretize(
-      *p.model, p.thrusters.AccelerationMatrix(), p.grid, opt.discretisation);
+  const dynamics::DiscreteModel dm =
+      dynamics::Discretize(*p.model, p.thrusters.AccelerationMatrix(), p.grid, opt.discretisation);
   long long nonzeros = 0;
   for (auto _ : state) {
     ScheduleMilp milp(p, dm, opt);

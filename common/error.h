@@ -2,7 +2,8 @@
 // structs: a failed check stores its message (naming the field and the value)
 // when the caller asked for it, and returns false.
 //
-//   if (!(step_s > 0)) return common::Fail(error, "step_s must be > 0, got " + common::FormatG(step_s, 10));
+//   if (!(step_s > 0)) return common::Fail(error, "step_s must be > 0, got " +
+//   common::FormatG(step_s, 10));
 #ifndef THRUSTSCHED_COMMON_ERROR_H_
 #define THRUSTSCHED_COMMON_ERROR_H_
 

@@ -238,7 +238,8 @@ bool DiscretizationOptions::IsValid(std::string* error) const {
   }
   const double tol = reference_tolerance;
   if (!std::isfinite(tol) || tol <= 0.0 || tol > 1e-3) {
-    return common::Fail(error, "reference_tolerance must be in (0, 1e-3], got " + common::FormatG(tol, 6));
+    return common::Fail(error,
+                        "reference_tolerance must be in (0, 1e-3], got " + common::FormatG(tol, 6));
   }
   return true;
 }

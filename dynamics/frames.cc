@@ -49,7 +49,8 @@ std::optional<InertialFrame> ParseInertialFrame(std::string_view name) {
 
 Eigen::Matrix3d PrecessionIau1976(double jd_tt) {
   if (!std::isfinite(jd_tt)) {
-    throw std::invalid_argument("PrecessionIau1976: jd_tt must be finite, got " + std::to_string(jd_tt));
+    throw std::invalid_argument("PrecessionIau1976: jd_tt must be finite, got " +
+                                std::to_string(jd_tt));
   }
   // Lieske (1977) angles from J2000.0 to the date, T in Julian centuries of TT.
   const double t = (jd_tt - kJulianDateJ2000) / 36525.0;
@@ -63,7 +64,8 @@ Eigen::Matrix3d FrameBiasIers2003() {
   // IAU 2000 bias in longitude and obliquity and the ICRS RA offset; the
   // offsets of the pole are xi0 = d_psi sin(eps0) = -16.617 mas and
   // eta0 = d_eps = -6.8192 mas, eps0 = 84381.448".
-  const double d_psi = -0.041775 * kArcsec, d_eps = -0.0068192 * kArcsec, d_alpha0 = -0.0146 * kArcsec;
+  const double d_psi = -0.041775 * kArcsec, d_eps = -0.0068192 * kArcsec,
+               d_alpha0 = -0.0146 * kArcsec;
   const double eps0 = 84381.448 * kArcsec;
   return R1(-d_eps) * R2(d_psi * std::sin(eps0)) * R3(d_alpha0);
 }

@@ -3,8 +3,9 @@
 // mean equinox of the model epoch ("MOE(t0)", dynamics/geo_simulator.h).
 //
 //   auto epoch = dynamics::Epoch::Parse("2034-01-01T00:00:00Z");
-//   dynamics::Vector6d rv_model = dynamics::ToModelFrame(rv_eme2000, dynamics::InertialFrame::kEme2000, epoch);
-//   dynamics::Vector6d back = dynamics::FromModelFrame(rv_model, dynamics::InertialFrame::kEme2000, epoch);
+//   dynamics::Vector6d rv_model = dynamics::ToModelFrame(rv_eme2000,
+//   dynamics::InertialFrame::kEme2000, epoch); dynamics::Vector6d back =
+//   dynamics::FromModelFrame(rv_model, dynamics::InertialFrame::kEme2000, epoch);
 //
 // EME2000 (mean equator and equinox of J2000.0) -> MOE(t0) is the IAU 1976
 // precession (Lieske et al. 1977, A&A 58, 1; the zeta, z, theta series of the

@@ -29,7 +29,8 @@ GeoForceModel::GeoForceModel(const GeoModelOptions& options) : options_(options)
   const Epoch epoch = Epoch::Parse(options_.epoch);
   epoch_jd_tt_ = epoch.JulianDateTt();
   theta0_ = GmstRad(epoch.JulianDateUtc());  // UT1 ~ UTC
-  if (options_.srp) srp_coefficient_ = geo::kSolarPressure * options_.reflectivity_cr * options_.area_to_mass_m2_kg;
+  if (options_.srp)
+    srp_coefficient_ = geo::kSolarPressure * options_.reflectivity_cr * options_.area_to_mass_m2_kg;
   coefficients_.degree = (options_.j2 || options_.tesseral) ? options_.gravity_degree : 0;
   for (const NormalizedCoefficient& k : kEgm2008) {
     if (k.n > coefficients_.degree) continue;

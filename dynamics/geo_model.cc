@@ -25,7 +25,8 @@ bool Fail(std::string* error, const std::string& message) {
 }
 
 void CheckTime(double t, const char* where) {
-  if (!std::isfinite(t)) throw std::invalid_argument(std::string(where) + ": t must be finite, got " + FormatG(t, 17));
+  if (!std::isfinite(t))
+    throw std::invalid_argument(std::string(where) + ": t must be finite, got " + FormatG(t, 17));
 }
 
 void CheckState(const Eigen::VectorXd& x, const char* where) {
@@ -35,7 +36,8 @@ void CheckState(const Eigen::VectorXd& x, const char* where) {
   }
   if (!x.allFinite()) throw std::invalid_argument(std::string(where) + ": state x must be finite");
   if (!(geo::kStationRadius + x(0) > 0.0)) {
-    throw std::invalid_argument(std::string(where) + ": da_m must be > -a_mp, got " + FormatG(x(0), 17));
+    throw std::invalid_argument(std::string(where) + ": da_m must be > -a_mp, got " +
+                                FormatG(x(0), 17));
   }
   if (!(x(1) * x(1) + x(2) * x(2) < 1.0)) {
     throw std::invalid_argument(std::string(where) + ": eccentricity |(ex, ey)| must be < 1");
@@ -55,9 +57,11 @@ RateAndGauss<T> Rate(const internal::GeoForceModel& forces, const std::array<T, 
   const internal::GeoForceModel::Bodies bodies = forces.BodiesAt(t);
   const T a = geo::kStationRadius + x[0];
   const T k = (forces.station_longitude_rad() + theta) + x[5];
-  const internal::OrbitGeometry<T> o = internal::Geometry<T>(a, x[1], x[2], x[3], x[4], k, geo::kEarthMu);
+  const internal::OrbitGeometry<T> o =
+      internal::Geometry<T>(a, x[1], x[2], x[3], x[4], k, geo::kEarthMu);
   const internal::Vec3<T> acc = forces.Acceleration(o.pos, theta, bodies);
-  const internal::Vec3<T> a_rtn = {internal::Dot(o.u_r, acc), internal::Dot(o.u_t, acc), internal::Dot(o.w, acc)};
+  const internal::Vec3<T> a_rtn = {internal::Dot(o.u_r, acc), internal::Dot(o.u_t, acc),
+                                   internal::Dot(o.w, acc)};
   RateAndGauss<T> out;
   out.g = internal::GaussMatrix(o);
   for (int i = 0; i < 6; ++i) {
@@ -102,7 +106,8 @@ bool ParseInt(std::string_view v, int* out) {
 // ---- GeoModelOptions ----
 
 bool GeoModelOptions::IsValid(std::string* error) const {
-  if (!std::isfinite(station_longitude_deg) || station_longitude_deg < -180.0 || station_longitude_deg > 360.0) {
+  if (!std::isfinite(station_longitude_deg) || station_longitude_deg < -180.0 ||
+      station_longitude_deg > 360.0) {
     return Fail(error, "station_longitude_deg must be finite and in [-180, 360], got " +
                            FormatG(station_longitude_deg, 17));
   }
@@ -115,34 +120,52 @@ bool GeoModelOptions::IsValid(std::string* error) const {
     return Fail(error, "gravity_degree must be in 2..4, got " + std::to_string(gravity_degree));
   }
   if (!std::isfinite(area_to_mass_m2_kg) || area_to_mass_m2_kg < 0.0) {
-    return Fail(error, "area_to_mass_m2_kg must be finite and >= 0, got " + FormatG(area_to_mass_m2_kg, 17));
+    return Fail(error, "area_to_mass_m2_kg must be finite and >= 0, got " +
+                           FormatG(area_to_mass_m2_kg, 17));
   }
   if (!std::isfinite(reflectivity_cr) || reflectivity_cr < 0.0 || reflectivity_cr > 2.0) {
-    return Fail(error, "reflectivity_cr must be finite and in [0, 2], got " + FormatG(reflectivity_cr, 17));
+    return Fail(
+        error, "reflectivity_cr must be finite and in [0, 2], got " + FormatG(reflectivity_cr, 17));
   }
   return true;
 }
 
 std::vector<std::string> GeoModelOptions::FieldNames() {
-  return {"station_longitude_deg", "epoch", "j2", "tesseral", "sun", "moon", "srp",
-          "gravity_degree", "area_to_mass_m2_kg", "reflectivity_cr"};
+  return {"station_longitude_deg",
+          "epoch",
+          "j2",
+          "tesseral",
+          "sun",
+          "moon",
+          "srp",
+          "gravity_degree",
+          "area_to_mass_m2_kg",
+          "reflectivity_cr"};
 }
 
 void GeoModelOptions::Set(std::string_view field, std::string_view value) {
   const auto bad = [&](const char* type) {
-    return std::invalid_argument("GeoModelOptions: field '" + std::string(field) + "' expects " + type + ", got '" +
-                                 std::string(value) + "'");
+    return std::invalid_argument("GeoModelOptions: field '" + std::string(field) + "' expects " +
+                                 type + ", got '" + std::string(value) + "'");
   };
   bool* flag = nullptr;
   double* number = nullptr;
-  if (field == "j2") flag = &j2;
-  else if (field == "tesseral") flag = &tesseral;
-  else if (field == "sun") flag = &sun;
-  else if (field == "moon") flag = &moon;
-  else if (field == "srp") flag = &srp;
-  else if (field == "station_longitude_deg") number = &station_longitude_deg;
-  else if (field == "area_to_mass_m2_kg") number = &area_to_mass_m2_kg;
-  else if (field == "reflectivity_cr") number = &reflectivity_cr;
+  if (field == "j2")
+    flag = &j2;
+  else if (field == "tesseral")
+    flag = &tesseral;
+  else if (field == "sun")
+    flag = &sun;
+  else if (field == "moon")
+    flag = &moon;
+  else if (field == "srp")
+    flag = &srp;
+  else if (field == "station_longitude_deg")
+    number = &station_longitude_deg;
+  else if (field == "area_to_mass_m2_kg")
+    number = &area_to_mass_m2_kg;
+  else if (field == "reflectivity_cr")
+    number = &reflectivity_cr;
   if (flag != nullptr) {
     if (!ParseBool(value, flag)) throw bad("a boolean (true/false)");
     return;
@@ -161,7 +184,8 @@ void GeoModelOptions::Set(std::string_view field, std::string_view value) {
   }
   std::string names;
   for (const std::string& n : FieldNames()) names += (names.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("GeoModelOptions: unknown field '" + std::string(field) + "' (known: " + names + ")");
+  throw std::invalid_argument("GeoModelOptions: unknown field '" + std::string(field) +
+                              "' (known: " + names + ")");
 }
 
 // ---- GeoLinearModel ----
@@ -190,7 +214,8 @@ ModelMatrices GeoLinearModel::Evaluate(double t) const {
 OutputMatrices GeoLinearModel::EvaluateOutput(double t) const {
   CheckTime(t, "GeoLinearModel::EvaluateOutput");
   const double kappa = forces_->station_longitude_rad() + forces_->Theta(t);
-  const double c = std::cos(kappa), s = std::sin(kappa), a = geo::kStationRadius, w = geo::kEarthRotationRate;
+  const double c = std::cos(kappa), s = std::sin(kappa), a = geo::kStationRadius,
+               w = geo::kEarthRotationRate;
   OutputMatrices out;
   out.c = Eigen::MatrixXd::Zero(3, 6);
   out.c_dot = Eigen::MatrixXd::Zero(3, 6);
@@ -211,9 +236,13 @@ OutputMatrices GeoLinearModel::EvaluateOutput(double t) const {
   return out;
 }
 
-std::vector<std::string> GeoLinearModel::state_names() const { return {"da_m", "ex", "ey", "ix", "iy", "dl_rad"}; }
+std::vector<std::string> GeoLinearModel::state_names() const {
+  return {"da_m", "ex", "ey", "ix", "iy", "dl_rad"};
+}
 
-std::vector<std::string> GeoLinearModel::output_names() const { return {"dr_m", "lat_rad", "lon_rad"}; }
+std::vector<std::string> GeoLinearModel::output_names() const {
+  return {"dr_m", "lat_rad", "lon_rad"};
+}
 
 Eigen::VectorXd GeoLinearModel::state_scale() const {
   const double delta = geo::kWindowHalfWidthRad;

@@ -26,7 +26,8 @@
 //                              -4.14e-9 rad/s (x_mp is not an equilibrium;
 //                              corrected: Gazzino 2018 (B.32), (B.60) assume it is)
 //   C(t)  (Gazzino 2018, eq. (B.82)), kappa = l_mp + Theta(t):
-//     [1, -a cos k, -a sin k, 0, 0, 0; 0, 0, 0, 2 sin k, -2 cos k, 0; 0, 2 sin k, -2 cos k, 0, 0, 1]
+//     [1, -a cos k, -a sin k, 0, 0, 0; 0, 0, 0, 2 sin k, -2 cos k, 0; 0, 2 sin k, -2 cos k, 0, 0,
+//     1]
 //   C'(t) = dC/dt with dkappa/dt = omega_E (E = 2H + CA + C' of Gazzino 2018 (B.98) is wrong).
 // The physics, frame and time conventions are those of GeoSimulator
 // (dynamics/geo_simulator.h), which is the nonlinear reference for this model.
@@ -49,27 +50,27 @@ namespace thrustsched::dynamics {
 /// standard values the thesis does not give: EGM2008 (mu_E, R_E), IERS (omega_E),
 /// JPL ephemerides (mu_S, mu_M), IAU 2012 (AU), Montenbruck & Gill 2000 sec. 3.4 (P).
 namespace geo {
-inline constexpr double kEarthMu = 3.986004418e14;        // m^3/s^2 (EGM2008 / IERS)
-inline constexpr double kEarthRadius = 6378137.0;          // m, geopotential reference radius
+inline constexpr double kEarthMu = 3.986004418e14;             // m^3/s^2 (EGM2008 / IERS)
+inline constexpr double kEarthRadius = 6378137.0;              // m, geopotential reference radius
 inline constexpr double kEarthRotationRate = 7.2921158553e-5;  // rad/s, d(GMST)/dt
-inline constexpr double kSunMu = 1.32712440018e20;         // m^3/s^2
-inline constexpr double kMoonMu = 4.902800066e12;          // m^3/s^2
-inline constexpr double kAstronomicalUnit = 1.495978707e11;  // m
-inline constexpr double kSolarPressure = 4.56e-6;          // N/m^2 at 1 AU
-inline constexpr double kStationRadius = 42165765.0;       // m, a_mp (thesis (B.31))
+inline constexpr double kSunMu = 1.32712440018e20;             // m^3/s^2
+inline constexpr double kMoonMu = 4.902800066e12;              // m^3/s^2
+inline constexpr double kAstronomicalUnit = 1.495978707e11;    // m
+inline constexpr double kSolarPressure = 4.56e-6;              // N/m^2 at 1 AU
+inline constexpr double kStationRadius = 42165765.0;           // m, a_mp (thesis (B.31))
 inline constexpr double kWindowHalfWidthRad = 0.05 * common::kPi / 180.0;  // delta
 }  // namespace geo
 
 struct GeoModelOptions {
   double station_longitude_deg = 118.0;        // east, in [-180, 360]
   std::string epoch = "2034-01-01T00:00:00Z";  // UTC instant of t = 0 (Epoch::Parse format)
-  bool j2 = true;        // zonal harmonics J2..J_degree (named after the dominant J2)
-  bool tesseral = true;  // tesseral and sectorial harmonics (n, m >= 1), n <= degree
-  bool sun = true, moon = true;  // third-body attraction (with the indirect term)
-  bool srp = true;       // cannonball solar radiation pressure, cylindrical shadow
-  int gravity_degree = 4;  // 2..4, order = degree (EGM2008 coefficients)
+  bool j2 = true;                      // zonal harmonics J2..J_degree (named after the dominant J2)
+  bool tesseral = true;                // tesseral and sectorial harmonics (n, m >= 1), n <= degree
+  bool sun = true, moon = true;        // third-body attraction (with the indirect term)
+  bool srp = true;                     // cannonball solar radiation pressure, cylindrical shadow
+  int gravity_degree = 4;              // 2..4, order = degree (EGM2008 coefficients)
   double area_to_mass_m2_kg = 0.0227;  // A/m (m^2/kg), >= 0 (thesis sigma, L7281)
-  double reflectivity_cr = 1.0;         // C_r in [0, 2]
+  double reflectivity_cr = 1.0;        // C_r in [0, 2]
 
   /// False (and a message naming the field and value in *error, if non-null)
   /// when a field is out of range or the epoch does not parse.

@@ -11,8 +11,8 @@ Eigen::VectorXd RelativeStateFromOrbit(const GeoSimulator& sim, const OrbitState
   const double t_state = state.epoch.SecondsSince(model_epoch);
   if (t_state > t) {
     std::ostringstream os;
-    os << "RelativeStateFromOrbit: the state's epoch " << state.epoch.ToIso8601() << " is " << t_state - t
-       << " s after the requested time " << model_epoch.PlusSeconds(t).ToIso8601()
+    os << "RelativeStateFromOrbit: the state's epoch " << state.epoch.ToIso8601() << " is "
+       << t_state - t << " s after the requested time " << model_epoch.PlusSeconds(t).ToIso8601()
        << " (states are only propagated forward)";
     throw std::invalid_argument(os.str());
   }

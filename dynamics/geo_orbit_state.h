@@ -27,9 +27,9 @@
 namespace thrustsched::dynamics {
 
 struct OrbitState {
-  Epoch epoch;                                   // UTC
+  Epoch epoch;  // UTC
   InertialFrame frame = InertialFrame::kEme2000;
-  Vector6d rv = Vector6d::Zero();                // m, m/s
+  Vector6d rv = Vector6d::Zero();  // m, m/s
 };
 
 /// Relative state x = [da_m, ex, ey, ix, iy, dl_rad] at model time t of the

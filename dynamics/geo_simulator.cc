@@ -30,11 +30,13 @@ namespace {
 
 namespace odeint = boost::numeric::odeint;
 using State = std::array<double, 6>;
-using ErrorStepper = odeint::runge_kutta_fehlberg78<State, double, State, double, odeint::array_algebra>;
-using Checker = odeint::default_error_checker<double, odeint::array_algebra, odeint::default_operations>;
+using ErrorStepper =
+    odeint::runge_kutta_fehlberg78<State, double, State, double, odeint::array_algebra>;
+using Checker =
+    odeint::default_error_checker<double, odeint::array_algebra, odeint::default_operations>;
 using Controlled = odeint::controlled_runge_kutta<ErrorStepper, Checker>;
 
-constexpr double kLength = geo::kStationRadius;                         // m
+constexpr double kLength = geo::kStationRadius;                           // m
 constexpr double kSpeed = geo::kStationRadius * geo::kEarthRotationRate;  // m/s
 constexpr long kMaxStepsPerSegment = 10000000;
 // Step cap (s). Without it the controller takes ~1.5 h steps at 1e-12.
@@ -48,7 +50,8 @@ constexpr int kShadowProbes = 4;
 constexpr double kShadowTimeTolerance = 1e-4;  // s
 
 void CheckTime(double t, const char* where) {
-  if (!std::isfinite(t)) throw std::invalid_argument(std::string(where) + ": t must be finite, got " + FormatG(t, 17));
+  if (!std::isfinite(t))
+    throw std::invalid_argument(std::string(where) + ": t must be finite, got " + FormatG(t, 17));
 }
 
 // Cowell right-hand side on the scaled state [r / L, v / V].
@@ -64,7 +67,8 @@ struct CowellRhs {
     const internal::Vec3<double> v = {y[3] * kSpeed, y[4] * kSpeed, y[5] * kSpeed};
     const double r2 = internal::Dot(r, r);
     const double k = -geo::kEarthMu / (r2 * std::sqrt(r2));
-    const internal::Vec3<double> pert = forces->Acceleration(r, forces->Theta(t), forces->BodiesAt(t), shadow);
+    const internal::Vec3<double> pert =
+        forces->Acceleration(r, forces->Theta(t), forces->BodiesAt(t), shadow);
     Eigen::Vector3d acc(k * r[0] + pert[0], k * r[1] + pert[1], k * r[2] + pert[2]);
     if (thrusting) {
       const Eigen::Vector3d rv(r[0], r[1], r[2]), vv(v[0], v[1], v[2]);
@@ -92,7 +96,8 @@ State HermitePosition(const State& y0, const State& y1, double h, double s) {
   const double h01 = s * s * (3.0 - 2.0 * s), h11 = s * s * (s - 1.0);
   const double k = h * kSpeed / kLength;
   State p{};
-  for (int i = 0; i < 3; ++i) p[i] = h00 * y0[i] + h10 * k * y0[3 + i] + h01 * y1[i] + h11 * k * y1[3 + i];
+  for (int i = 0; i < 3; ++i)
+    p[i] = h00 * y0[i] + h10 * k * y0[3 + i] + h01 * y1[i] + h11 * k * y1[3 + i];
   return p;
 }
 
@@ -107,7 +112,8 @@ struct PulseEvent {
 GeoSimulator::GeoSimulator(const GeoModelOptions& options, double tolerance)
     : forces_(std::make_shared<const internal::GeoForceModel>(options)), tolerance_(tolerance) {
   if (!(tolerance >= 1e-14 && tolerance <= 1e-10)) {
-    throw std::invalid_argument("GeoSimulator: tolerance must be in [1e-14, 1e-10], got " + FormatG(tolerance, 17));
+    throw std::invalid_argument("GeoSimulator: tolerance must be in [1e-14, 1e-10], got " +
+                                FormatG(tolerance, 17));
   }
 }
 
@@ -121,10 +127,12 @@ double GeoSimulator::EarthRotationAngle(double t) const {
 Vector6d GeoSimulator::EciFromRelative(const Eigen::VectorXd& x_rel, double t) const {
   CheckTime(t, "GeoSimulator::EciFromRelative");
   if (x_rel.size() != 6) {
-    throw std::invalid_argument("GeoSimulator::EciFromRelative: x_rel must have 6 components, got " +
-                                std::to_string(x_rel.size()));
+    throw std::invalid_argument(
+        "GeoSimulator::EciFromRelative: x_rel must have 6 components, got " +
+        std::to_string(x_rel.size()));
   }
-  if (!x_rel.allFinite()) throw std::invalid_argument("GeoSimulator::EciFromRelative: x_rel must be finite");
+  if (!x_rel.allFinite())
+    throw std::invalid_argument("GeoSimulator::EciFromRelative: x_rel must be finite");
   EquinoctialElements el;
   el.a_m = geo::kStationRadius + x_rel(0);
   el.ex = x_rel(1);
@@ -155,7 +163,8 @@ Eigen::VectorXd GeoSimulator::RelativeFromEci(const Vector6d& eci, double t) con
 
 GeoPoint GeoSimulator::Geographic(const Vector6d& eci, double t) const {
   CheckTime(t, "GeoSimulator::Geographic");
-  if (!eci.allFinite()) throw std::invalid_argument("GeoSimulator::Geographic: eci state must be finite");
+  if (!eci.allFinite())
+    throw std::invalid_argument("GeoSimulator::Geographic: eci state must be finite");
   const double r = eci.head<3>().norm();
   if (!(r > 0.0)) throw std::invalid_argument("GeoSimulator::Geographic: position is zero");
   GeoPoint p;
@@ -173,23 +182,29 @@ Eigen::Vector3d GeoSimulator::RelativeOutputs(const Vector6d& eci, double t) con
 
 Eigen::Vector3d GeoSimulator::PerturbingAcceleration(const Eigen::Vector3d& r_eci, double t) const {
   CheckTime(t, "GeoSimulator::PerturbingAcceleration");
-  if (!r_eci.allFinite()) throw std::invalid_argument("GeoSimulator::PerturbingAcceleration: r must be finite");
+  if (!r_eci.allFinite())
+    throw std::invalid_argument("GeoSimulator::PerturbingAcceleration: r must be finite");
   const internal::Vec3<double> r = {r_eci.x(), r_eci.y(), r_eci.z()};
-  const internal::Vec3<double> a = forces_->Acceleration(r, forces_->Theta(t), forces_->BodiesAt(t));
+  const internal::Vec3<double> a =
+      forces_->Acceleration(r, forces_->Theta(t), forces_->BodiesAt(t));
   return Eigen::Vector3d(a[0], a[1], a[2]);
 }
 
-std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, const Eigen::MatrixXd& accel_rtn,
+std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0,
+                                              const Eigen::MatrixXd& accel_rtn,
                                               const std::vector<InputPulse>& pulses,
                                               const std::vector<double>& sample_times) const {
   // ---- validation ----
-  if (!eci0.allFinite()) throw std::invalid_argument("GeoSimulator::Propagate: eci0 must be finite");
+  if (!eci0.allFinite())
+    throw std::invalid_argument("GeoSimulator::Propagate: eci0 must be finite");
   CheckTime(t0, "GeoSimulator::Propagate (t0)");
   if (accel_rtn.rows() != 3) {
-    throw std::invalid_argument("GeoSimulator::Propagate: accel_rtn must have 3 rows (R, T, N), got " +
-                                std::to_string(accel_rtn.rows()));
+    throw std::invalid_argument(
+        "GeoSimulator::Propagate: accel_rtn must have 3 rows (R, T, N), got " +
+        std::to_string(accel_rtn.rows()));
   }
-  if (!accel_rtn.allFinite()) throw std::invalid_argument("GeoSimulator::Propagate: accel_rtn must be finite");
+  if (!accel_rtn.allFinite())
+    throw std::invalid_argument("GeoSimulator::Propagate: accel_rtn must be finite");
   for (std::size_t k = 0; k < pulses.size(); ++k) {
     const InputPulse& p = pulses[k];
     const std::string id = "GeoSimulator::Propagate: pulse " + std::to_string(k);
@@ -198,11 +213,12 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
                                   std::to_string(accel_rtn.cols()) + ")");
     }
     if (!std::isfinite(p.start_s) || !std::isfinite(p.end_s)) {
-      throw std::invalid_argument(id + ": start_s and end_s must be finite, got " + FormatG(p.start_s, 17) + ", " +
-                                  FormatG(p.end_s, 17));
+      throw std::invalid_argument(id + ": start_s and end_s must be finite, got " +
+                                  FormatG(p.start_s, 17) + ", " + FormatG(p.end_s, 17));
     }
     if (p.end_s < p.start_s) {
-      throw std::invalid_argument(id + ": end_s " + FormatG(p.end_s, 17) + " < start_s " + FormatG(p.start_s, 17));
+      throw std::invalid_argument(id + ": end_s " + FormatG(p.end_s, 17) + " < start_s " +
+                                  FormatG(p.start_s, 17));
     }
   }
   for (std::size_t k = 0; k < sample_times.size(); ++k) {
@@ -216,8 +232,9 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
                                   "] = " + FormatG(s, 17) + " is before t0 = " + FormatG(t0, 17));
     }
     if (k > 0 && s < sample_times[k - 1]) {
-      throw std::invalid_argument("GeoSimulator::Propagate: sample_times must be non-decreasing (index " +
-                                  std::to_string(k) + ")");
+      throw std::invalid_argument(
+          "GeoSimulator::Propagate: sample_times must be non-decreasing (index " +
+          std::to_string(k) + ")");
     }
   }
   std::vector<Vector6d> out;
@@ -233,7 +250,8 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
     events.push_back({start, p.column, +1});
     if (p.end_s < t_end) events.push_back({p.end_s, p.column, -1});
   }
-  std::sort(events.begin(), events.end(), [](const PulseEvent& a, const PulseEvent& b) { return a.time < b.time; });
+  std::sort(events.begin(), events.end(),
+            [](const PulseEvent& a, const PulseEvent& b) { return a.time < b.time; });
   std::vector<double> stops;
   stops.reserve(events.size() + sample_times.size() + 1);
   stops.push_back(t0);
@@ -277,7 +295,8 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
     rhs.thrusting = false;
     for (std::size_t c = 0; c < active.size(); ++c) {
       if (active[c] > 0) {
-        rhs.thrust_rtn += static_cast<double>(active[c]) * accel_rtn.col(static_cast<Eigen::Index>(c));
+        rhs.thrust_rtn +=
+            static_cast<double>(active[c]) * accel_rtn.col(static_cast<Eigen::Index>(c));
         rhs.thrusting = true;
       }
     }
@@ -287,11 +306,14 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
     long steps = 0;
     while (t < t_b) {
       if (++steps > kMaxStepsPerSegment || !(dt > 1e-6)) {
-        throw std::runtime_error("GeoSimulator::Propagate: step-size control failed near t = " + FormatG(t, 17));
+        throw std::runtime_error("GeoSimulator::Propagate: step-size control failed near t = " +
+                                 FormatG(t, 17));
       }
-      if (srp) {  // resynchronise the frozen shadow state (guards against a missed grazing crossing)
+      if (srp) {  // resynchronise the frozen shadow state (guards against a missed grazing
+                  // crossing)
         const bool sunlit_now = ShadowAt(*forces_, y, t) >= 0.0;
-        if (sunlit_now != (rhs.shadow == Shadow::kSunlit)) rhs.shadow = sunlit_now ? Shadow::kSunlit : Shadow::kShadow;
+        if (sunlit_now != (rhs.shadow == Shadow::kSunlit))
+          rhs.shadow = sunlit_now ? Shadow::kSunlit : Shadow::kShadow;
       }
       dt = std::min(dt, kMaxStep);
       const bool last = dt >= t_b - t;
@@ -349,7 +371,8 @@ std::vector<Vector6d> GeoSimulator::Propagate(const Vector6d& eci0, double t0, c
       }
       const double r2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
       if (!(r2 * kLength * kLength > geo::kEarthRadius * geo::kEarthRadius)) {
-        throw std::runtime_error("GeoSimulator::Propagate: the orbit intersects the Earth at t = " + FormatG(t, 17));
+        throw std::runtime_error("GeoSimulator::Propagate: the orbit intersects the Earth at t = " +
+                                 FormatG(t, 17));
       }
     }
   }

@@ -22,9 +22,11 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kSingular = 1e-10;
 
 void CheckEccentricity(double e, double angle, const char* where) {
-  if (!std::isfinite(angle)) throw std::invalid_argument(std::string(where) + ": anomaly must be finite");
+  if (!std::isfinite(angle))
+    throw std::invalid_argument(std::string(where) + ": anomaly must be finite");
   if (!(e >= 0.0 && e < 1.0)) {
-    throw std::invalid_argument(std::string(where) + ": eccentricity must be in [0, 1), got " + FormatG(e, 17));
+    throw std::invalid_argument(std::string(where) + ": eccentricity must be in [0, 1), got " +
+                                FormatG(e, 17));
   }
 }
 
@@ -40,7 +42,8 @@ double MeanFromTrueAnomaly(double nu, double e) {
   CheckEccentricity(e, nu, "MeanFromTrueAnomaly");
   // Eccentric anomaly from tan(E/2) = sqrt((1-e)/(1+e)) tan(nu/2), in atan2
   // form so that E stays in the same half-turn as nu.
-  const double ecc = 2.0 * std::atan2(std::sqrt(1.0 - e) * std::sin(nu / 2.0), std::sqrt(1.0 + e) * std::cos(nu / 2.0));
+  const double ecc = 2.0 * std::atan2(std::sqrt(1.0 - e) * std::sin(nu / 2.0),
+                                      std::sqrt(1.0 + e) * std::cos(nu / 2.0));
   return WrapPi(ecc - e * std::sin(ecc));
 }
 
@@ -55,7 +58,8 @@ double TrueFromMeanAnomaly(double mean, double e) {
     ecc -= step;
     if (std::abs(step) < 1e-15) break;
   }
-  return WrapPi(2.0 * std::atan2(std::sqrt(1.0 + e) * std::sin(ecc / 2.0), std::sqrt(1.0 - e) * std::cos(ecc / 2.0)));
+  return WrapPi(2.0 * std::atan2(std::sqrt(1.0 + e) * std::sin(ecc / 2.0),
+                                 std::sqrt(1.0 - e) * std::cos(ecc / 2.0)));
 }
 
 EquinoctialElements EquinoctialFromKeplerian(const KeplerianElements& k) {
@@ -63,18 +67,21 @@ EquinoctialElements EquinoctialFromKeplerian(const KeplerianElements& k) {
   const char* names[6] = {"a_m", "e", "i_rad", "raan_rad", "arg_perigee_rad", "anomaly_rad"};
   for (int i = 0; i < 6; ++i) {
     if (!std::isfinite(vals[i])) {
-      throw std::invalid_argument(std::string("EquinoctialFromKeplerian: ") + names[i] + " must be finite, got " +
-                                  FormatG(vals[i], 17));
+      throw std::invalid_argument(std::string("EquinoctialFromKeplerian: ") + names[i] +
+                                  " must be finite, got " + FormatG(vals[i], 17));
     }
   }
   if (!(k.a_m > 0.0)) {
-    throw std::invalid_argument("EquinoctialFromKeplerian: a_m must be > 0, got " + FormatG(k.a_m, 17));
+    throw std::invalid_argument("EquinoctialFromKeplerian: a_m must be > 0, got " +
+                                FormatG(k.a_m, 17));
   }
   if (!(k.e >= 0.0 && k.e < 1.0)) {
-    throw std::invalid_argument("EquinoctialFromKeplerian: e must be in [0, 1), got " + FormatG(k.e, 17));
+    throw std::invalid_argument("EquinoctialFromKeplerian: e must be in [0, 1), got " +
+                                FormatG(k.e, 17));
   }
   if (!(k.i_rad >= 0.0 && k.i_rad < kPi)) {
-    throw std::invalid_argument("EquinoctialFromKeplerian: i_rad must be in [0, pi), got " + FormatG(k.i_rad, 17));
+    throw std::invalid_argument("EquinoctialFromKeplerian: i_rad must be in [0, pi), got " +
+                                FormatG(k.i_rad, 17));
   }
   const double mean =
       k.anomaly == AnomalyKind::kMean ? k.anomaly_rad : MeanFromTrueAnomaly(k.anomaly_rad, k.e);
@@ -93,12 +100,14 @@ EquinoctialElements EquinoctialFromKeplerian(const KeplerianElements& k) {
 KeplerianElements KeplerianFromEquinoctial(const EquinoctialElements& el, AnomalyKind anomaly) {
   const double vals[6] = {el.a_m, el.ex, el.ey, el.ix, el.iy, el.mean_longitude_rad};
   for (double v : vals) {
-    if (!std::isfinite(v)) throw std::invalid_argument("KeplerianFromEquinoctial: elements must be finite");
+    if (!std::isfinite(v))
+      throw std::invalid_argument("KeplerianFromEquinoctial: elements must be finite");
   }
   KeplerianElements k;
   k.a_m = el.a_m;
   k.e = std::hypot(el.ex, el.ey);
-  if (!(k.e < 1.0)) throw std::invalid_argument("KeplerianFromEquinoctial: e must be < 1, got " + FormatG(k.e, 17));
+  if (!(k.e < 1.0))
+    throw std::invalid_argument("KeplerianFromEquinoctial: e must be < 1, got " + FormatG(k.e, 17));
   const double t = std::hypot(el.ix, el.iy);
   k.i_rad = 2.0 * std::atan(t);
   k.raan_rad = t > kSingular ? Wrap2Pi(std::atan2(el.iy, el.ix)) : 0.0;

@@ -8,7 +8,8 @@
 //   k.arg_perigee_rad = 1.2; k.anomaly_rad = 2.0; k.anomaly = dynamics::AnomalyKind::kTrue;
 //   dynamics::Vector6d rv = dynamics::CartesianFromKeplerian(k, dynamics::geo::kEarthMu);
 //   dynamics::KeplerianElements back =
-//       dynamics::KeplerianFromCartesian(rv, dynamics::geo::kEarthMu, dynamics::AnomalyKind::kTrue);
+//       dynamics::KeplerianFromCartesian(rv, dynamics::geo::kEarthMu,
+//       dynamics::AnomalyKind::kTrue);
 //
 // Keplerian -> equinoctial (thesis (1.17)): ex + j ey = e exp(j(w + W)),
 // ix + j iy = tan(i/2) exp(jW), mean longitude K = W + w + M. This direction

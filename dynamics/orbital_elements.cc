@@ -29,14 +29,17 @@ void CheckElements(const EquinoctialElements& el, double mu, const char* where) 
     }
   }
   if (!(el.a_m > 0.0)) {
-    throw std::invalid_argument(std::string(where) + ": a_m must be > 0, got " + FormatG(el.a_m, 17));
+    throw std::invalid_argument(std::string(where) + ": a_m must be > 0, got " +
+                                FormatG(el.a_m, 17));
   }
   const double e = std::hypot(el.ex, el.ey);
   if (!(e < 1.0)) {
-    throw std::invalid_argument(std::string(where) + ": eccentricity |(ex, ey)| must be < 1, got " + FormatG(e, 17));
+    throw std::invalid_argument(std::string(where) + ": eccentricity |(ex, ey)| must be < 1, got " +
+                                FormatG(e, 17));
   }
   if (!(mu > 0.0) || !std::isfinite(mu)) {
-    throw std::invalid_argument(std::string(where) + ": mu must be finite and > 0, got " + FormatG(mu, 17));
+    throw std::invalid_argument(std::string(where) + ": mu must be finite and > 0, got " +
+                                FormatG(mu, 17));
   }
 }
 
@@ -65,22 +68,26 @@ EquinoctialElements EquinoctialFromCartesian(const Vector6d& rv, double mu) {
     throw std::invalid_argument("EquinoctialFromCartesian: state must be finite");
   }
   if (!(mu > 0.0) || !std::isfinite(mu)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: mu must be finite and > 0, got " + FormatG(mu, 17));
+    throw std::invalid_argument("EquinoctialFromCartesian: mu must be finite and > 0, got " +
+                                FormatG(mu, 17));
   }
   const Eigen::Vector3d r = rv.head<3>(), v = rv.tail<3>();
   const Eigen::Vector3d h = r.cross(v);
   const double hn = h.norm();
   const double rn = r.norm();
   if (!(hn > 0.0) || !(rn > 0.0)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: position and velocity are parallel (r x v = 0)");
+    throw std::invalid_argument(
+        "EquinoctialFromCartesian: position and velocity are parallel (r x v = 0)");
   }
   if (!(hn + h.z() > 1e-12 * hn)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: retrograde equatorial orbit (i = 180 deg) is singular");
+    throw std::invalid_argument(
+        "EquinoctialFromCartesian: retrograde equatorial orbit (i = 180 deg) is singular");
   }
   EquinoctialElements el;
   const double inv_a = 2.0 / rn - v.squaredNorm() / mu;
   if (!(inv_a > 0.0)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: orbit is not an ellipse (1/a = " + FormatG(inv_a, 17) + ")");
+    throw std::invalid_argument(
+        "EquinoctialFromCartesian: orbit is not an ellipse (1/a = " + FormatG(inv_a, 17) + ")");
   }
   el.a_m = 1.0 / inv_a;
   el.ix = -h.y() / (hn + h.z());
@@ -94,15 +101,19 @@ EquinoctialElements EquinoctialFromCartesian(const Vector6d& rv, double mu) {
   el.ey = e.dot(gh);
   const double e2 = el.ex * el.ex + el.ey * el.ey;
   if (!(e2 < 1.0)) {
-    throw std::invalid_argument("EquinoctialFromCartesian: eccentricity >= 1 (" + FormatG(std::sqrt(e2), 17) + ")");
+    throw std::invalid_argument("EquinoctialFromCartesian: eccentricity >= 1 (" +
+                                FormatG(std::sqrt(e2), 17) + ")");
   }
   const double root = std::sqrt(1.0 - e2);
   const double beta = 1.0 / (1.0 + root);
   const double x1 = r.dot(fh), y1 = r.dot(gh);
-  const double ce = el.ex + ((1.0 - el.ex * el.ex * beta) * x1 - el.ex * el.ey * beta * y1) / (el.a_m * root);
-  const double se = el.ey + ((1.0 - el.ey * el.ey * beta) * y1 - el.ex * el.ey * beta * x1) / (el.a_m * root);
+  const double ce =
+      el.ex + ((1.0 - el.ex * el.ex * beta) * x1 - el.ex * el.ey * beta * y1) / (el.a_m * root);
+  const double se =
+      el.ey + ((1.0 - el.ey * el.ey * beta) * y1 - el.ex * el.ey * beta * x1) / (el.a_m * root);
   const double ecc_anomaly = std::atan2(se, ce);
-  el.mean_longitude_rad = WrapPi(ecc_anomaly + el.ey * std::cos(ecc_anomaly) - el.ex * std::sin(ecc_anomaly));
+  el.mean_longitude_rad =
+      WrapPi(ecc_anomaly + el.ey * std::cos(ecc_anomaly) - el.ex * std::sin(ecc_anomaly));
   return el;
 }
 
@@ -120,7 +131,8 @@ Eigen::Matrix3d RtnBasis(const Vector6d& rv) {
   if (!rv.allFinite()) throw std::invalid_argument("RtnBasis: state must be finite");
   const Eigen::Vector3d r = rv.head<3>(), v = rv.tail<3>();
   const Eigen::Vector3d h = r.cross(v);
-  if (!(h.norm() > 0.0)) throw std::invalid_argument("RtnBasis: position and velocity are parallel (r x v = 0)");
+  if (!(h.norm() > 0.0))
+    throw std::invalid_argument("RtnBasis: position and velocity are parallel (r x v = 0)");
   Eigen::Matrix3d m;
   m.col(0) = r.normalized();
   m.col(2) = h.normalized();

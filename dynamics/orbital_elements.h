@@ -7,8 +7,9 @@
 //   #include "dynamics/geo_model.h"   // for geo::kEarthMu
 //   dynamics::EquinoctialElements el{42165765.0, 1e-4, 0.0, 0.0, 2e-4, 1.0};
 //   dynamics::Vector6d rv = dynamics::CartesianFromEquinoctial(el, dynamics::geo::kEarthMu);
-//   dynamics::EquinoctialElements back = dynamics::EquinoctialFromCartesian(rv, dynamics::geo::kEarthMu);
-//   Eigen::Matrix<double, 6, 3> g = dynamics::GaussMatrix(el, dynamics::geo::kEarthMu);
+//   dynamics::EquinoctialElements back = dynamics::EquinoctialFromCartesian(rv,
+//   dynamics::geo::kEarthMu); Eigen::Matrix<double, 6, 3> g = dynamics::GaussMatrix(el,
+//   dynamics::geo::kEarthMu);
 //
 // Elements: a (m); ex + j ey = e exp(j(omega + Omega)); ix + j iy =
 // tan(i/2) exp(j Omega) (the tan(i/2) variant, not sin); mean longitude

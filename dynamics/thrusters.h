@@ -39,8 +39,8 @@ class ThrusterSet {
 
   /// Thesis layout: deviation theta from the N-S axis, deflection alpha in the
   /// R-T plane, order NE, SE, NW, SW.
-  static ThrusterSet Anzel4(double thrust_n, double mass_kg, double isp_s,
-                            double theta_deg = 63.64, double alpha_deg = 7.03);
+  static ThrusterSet Anzel4(double thrust_n, double mass_kg, double isp_s, double theta_deg = 63.64,
+                            double alpha_deg = 7.03);
   /// One thruster per face, order +R, +T, +N, -R, -T, -N.
   static ThrusterSet Ideal6(double thrust_n, double mass_kg, double isp_s);
   /// Preset by name: "anzel4" or "ideal6". @throws std::invalid_argument naming it.

@@ -47,7 +47,9 @@ CivilDate CivilFromDays(std::int64_t z) {
 
 constexpr std::int64_t kMjdOfUnixEpoch = 40587;  // 1970-01-01
 
-std::int64_t MjdFromCivil(std::int64_t y, int m, int d) { return DaysFromCivil(y, m, d) + kMjdOfUnixEpoch; }
+std::int64_t MjdFromCivil(std::int64_t y, int m, int d) {
+  return DaysFromCivil(y, m, d) + kMjdOfUnixEpoch;
+}
 
 bool IsLeapYear(std::int64_t y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0; }
 
@@ -90,8 +92,9 @@ bool ReadDigits(std::string_view s, std::size_t& pos, int width, int* value) {
 
 void CheckYear(std::int64_t year, const std::string& where) {
   if (year < kMinYear || year > kMaxYear) {
-    throw std::invalid_argument(where + ": year " + std::to_string(year) + " outside the supported range " +
-                                std::to_string(kMinYear) + ".." + std::to_string(kMaxYear));
+    throw std::invalid_argument(where + ": year " + std::to_string(year) +
+                                " outside the supported range " + std::to_string(kMinYear) + ".." +
+                                std::to_string(kMaxYear));
   }
 }
 
@@ -115,9 +118,9 @@ CalendarLabel Label(std::int64_t mjd, double seconds, long long ticks_per_second
 
 std::string DateTime(const CalendarLabel& l) {
   char buf[64];
-  std::snprintf(buf, sizeof(buf), "%04lld-%02d-%02dT%02lld:%02lld:%02lld", static_cast<long long>(l.date.year),
-                l.date.month, l.date.day, l.whole_seconds / 3600, (l.whole_seconds / 60) % 60,
-                l.whole_seconds % 60);
+  std::snprintf(buf, sizeof(buf), "%04lld-%02d-%02dT%02lld:%02lld:%02lld",
+                static_cast<long long>(l.date.year), l.date.month, l.date.day,
+                l.whole_seconds / 3600, (l.whole_seconds / 60) % 60, l.whole_seconds % 60);
   return buf;
 }
 
@@ -167,13 +170,16 @@ Epoch Epoch::Parse(std::string_view text) {
       ThrowBadText(text, "only UTC ('Z' or '+00:00') is accepted, got '" + std::string(zone) + "'");
     }
   }
-  if (month < 1 || month > 12) ThrowBadText(text, "month " + std::to_string(month) + " not in 1..12");
+  if (month < 1 || month > 12)
+    ThrowBadText(text, "month " + std::to_string(month) + " not in 1..12");
   if (day < 1 || day > DaysInMonth(year, month)) {
-    ThrowBadText(text, "day " + std::to_string(day) + " not in 1.." + std::to_string(DaysInMonth(year, month)));
+    ThrowBadText(text, "day " + std::to_string(day) + " not in 1.." +
+                           std::to_string(DaysInMonth(year, month)));
   }
   if (hour > 23) ThrowBadText(text, "hour " + std::to_string(hour) + " not in 0..23");
   if (minute > 59) ThrowBadText(text, "minute " + std::to_string(minute) + " not in 0..59");
-  if (!(seconds < 60.0)) ThrowBadText(text, "seconds must be < 60 (leap seconds are not representable)");
+  if (!(seconds < 60.0))
+    ThrowBadText(text, "seconds must be < 60 (leap seconds are not representable)");
   CheckYear(year, "Epoch::Parse: '" + std::string(text) + "'");
   return Epoch(MjdFromCivil(year, month, day), 3600.0 * hour + 60.0 * minute + seconds);
 }
@@ -192,7 +198,8 @@ double Epoch::TaiMinusUtc() const {
 
 double Epoch::JulianDateTt() const {
   // Add the offset to the seconds before forming the date to keep precision.
-  return static_cast<double>(mjd_) + 2400000.5 + (seconds_ + TaiMinusUtc() + 32.184) / kSecondsPerDay;
+  return static_cast<double>(mjd_) + 2400000.5 +
+         (seconds_ + TaiMinusUtc() + 32.184) / kSecondsPerDay;
 }
 
 std::string Epoch::ToIso8601() const {
@@ -211,7 +218,8 @@ std::string Epoch::ToIso8601() const {
 
 std::string Epoch::FormatUtc(int decimals, bool zulu) const {
   if (decimals < 0 || decimals > 9) {
-    throw std::invalid_argument("Epoch::FormatUtc: decimals must be in 0..9, got " + std::to_string(decimals));
+    throw std::invalid_argument("Epoch::FormatUtc: decimals must be in 0..9, got " +
+                                std::to_string(decimals));
   }
   long long ticks_per_second = 1;
   for (int k = 0; k < decimals; ++k) ticks_per_second *= 10;
@@ -228,12 +236,14 @@ std::string Epoch::FormatUtc(int decimals, bool zulu) const {
 
 Epoch Epoch::PlusSeconds(double s) const {
   if (!std::isfinite(s)) {
-    throw std::invalid_argument("Epoch::PlusSeconds: seconds must be finite, got " + std::to_string(s));
+    throw std::invalid_argument("Epoch::PlusSeconds: seconds must be finite, got " +
+                                std::to_string(s));
   }
   const double total = seconds_ + s;
   const double days = std::floor(total / kSecondsPerDay);
   if (std::abs(days) > 1e6) {
-    throw std::invalid_argument("Epoch::PlusSeconds: offset " + std::to_string(s) + " s leaves the supported years");
+    throw std::invalid_argument("Epoch::PlusSeconds: offset " + std::to_string(s) +
+                                " s leaves the supported years");
   }
   std::int64_t mjd = mjd_ + static_cast<std::int64_t>(days);
   double sec = total - days * kSecondsPerDay;

@@ -32,24 +32,24 @@
 #include "common/format.h"
 #include "common/timing.h"
 #include "milp/internal/cbc_child.h"
-#include "milp/internal/lp_child.h"
 #include "milp/internal/cbc_driver.h"
 #include "milp/internal/clp_lp.h"
+#include "milp/internal/lp_child.h"
 #include "milp/internal/solve_clock.h"
 
 namespace thrustsched::milp {
 
-using common::Since;
 using common::FormatG;
+using common::Since;
 
 namespace {
 
+using common::Clock;
 using internal::CoinArrays;
 using internal::DriverListener;
 using internal::DriverOutcome;
 using internal::DriverRequest;
 using internal::SolveClock;
-using common::Clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The driver of the Debian build keeps state in process-wide globals: in
@@ -210,7 +210,8 @@ LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
 SolveResult SolveContinuous(const LpData& lp, const SolveOptions& options, SolveClock* clock) {
   SolveOptions o_lp = options;
   // A model's solution must be a feasible vertex, not an interior point.
-  if (o_lp.lp_algorithm == LpAlgorithm::kBarrierNoCrossover) o_lp.lp_algorithm = LpAlgorithm::kBarrier;
+  if (o_lp.lp_algorithm == LpAlgorithm::kBarrierNoCrossover)
+    o_lp.lp_algorithm = LpAlgorithm::kBarrier;
   const internal::LpOutcome o = internal::SolveLpCore(
       lp, internal::MakeArrays(lp, internal::ObjectiveSign(lp), true), o_lp, clock);
   SolveResult r;
@@ -322,16 +323,18 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
   }
   if (start_claim && relaxed.status == SolveStatus::kOptimal) {
     const double step = std::max(options.objective_step, 0.0);
-    const double tol = std::max({options.absolute_gap,
-                                 options.relative_gap * std::abs(claimed.objective), 1e-9}) + step;
+    const double tol =
+        std::max({options.absolute_gap, options.relative_gap * std::abs(claimed.objective), 1e-9}) +
+        step;
     if (sign * relaxed.objective >= sign * claimed.objective - tol) {
-      claimed.detail += "; optimality confirmed by the LP relaxation bound " +
-                        FormatG(relaxed.objective, 10);
+      claimed.detail +=
+          "; optimality confirmed by the LP relaxation bound " + FormatG(relaxed.objective, 10);
       claimed.best_bound = relaxed.objective;
       return claimed;
     }
   }
-  std::string why = "CBC reported " + std::string(start_claim ? "the start optimal" : "infeasible") +
+  std::string why = "CBC reported " +
+                    std::string(start_claim ? "the start optimal" : "infeasible") +
                     " but the LP relaxation is " +
                     (relaxed.status == SolveStatus::kOptimal
                          ? "feasible with bound " + FormatG(relaxed.objective, 10)
@@ -351,8 +354,8 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
   const std::string second_run = "a second CBC run (preprocessing and knapsack cuts off)";
   if (!start_claim) {
     if (claim_again) {
-      claimed.detail += "; " + why + "; " + second_run + " reached the same verdict: " +
-                        retry.detail;
+      claimed.detail +=
+          "; " + why + "; " + second_run + " reached the same verdict: " + retry.detail;
       return claimed;
     }
     if (retry.has_solution()) {
@@ -361,15 +364,16 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
     }
   } else {
     const double step = std::max(options.objective_step, 0.0);
-    const double tol = std::max({options.absolute_gap,
-                                 options.relative_gap * std::abs(claimed.objective), 1e-9}) + step;
+    const double tol =
+        std::max({options.absolute_gap, options.relative_gap * std::abs(claimed.objective), 1e-9}) +
+        step;
     if (retry.has_solution() && sign * retry.objective < sign * claimed.objective - tol) {
       retry.detail = why + "; " + second_run + " found better: " + retry.detail;
       return retry;
     }
     if (retry.status == SolveStatus::kOptimal && !claim_again) {
-      claimed.detail += "; " + why + "; " + second_run + " proved nothing better exists: " +
-                        retry.detail;
+      claimed.detail +=
+          "; " + why + "; " + second_run + " proved nothing better exists: " + retry.detail;
       claimed.best_bound = retry.best_bound;
       claimed.gap = RelativeGap(claimed.objective, claimed.best_bound);
       return claimed;
@@ -380,8 +384,8 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
   if (start_claim) {
     undecided = claimed;
     undecided.status = SolveStatus::kFeasible;
-    undecided.best_bound = relaxed.status == SolveStatus::kOptimal ? relaxed.objective
-                                                                    : claimed.best_bound;
+    undecided.best_bound =
+        relaxed.status == SolveStatus::kOptimal ? relaxed.objective : claimed.best_bound;
     undecided.gap = RelativeGap(undecided.objective, undecided.best_bound);
   }
   undecided.nodes = claimed.nodes + retry.nodes;
@@ -506,10 +510,10 @@ double FinalBound(const LpData& lp, const SolveOptions& options, const DriverOut
                      ? sign * out.bound_min + lp.objective_offset
                      : (sign > 0 ? -kInf : kInf);
   if (status == SolveStatus::kOptimal) {
-    const double allowed = out.proven_optimal
-                               ? std::max(options.absolute_gap,
-                                          options.relative_gap * std::max(1e-10, std::abs(objective)))
-                               : 0.0;
+    const double allowed =
+        out.proven_optimal ? std::max(options.absolute_gap,
+                                      options.relative_gap * std::max(1e-10, std::abs(objective)))
+                           : 0.0;
     const double claimed = objective - sign * allowed;
     if (!std::isfinite(bound) || sign * bound < sign * claimed) bound = claimed;
   }
@@ -577,8 +581,8 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
     r.status = has_x ? SolveStatus::kOptimal : SolveStatus::kInfeasible;
     if (cbc_claim != nullptr && !out.proven_optimal) *cbc_claim = true;
   } else if (out.continuous_unbounded) {
-    r.status = has_x ? SolveStatus::kUnbounded
-                     : ClassifyUnbounded(*this, lp, options, clock, &detail);
+    r.status =
+        has_x ? SolveStatus::kUnbounded : ClassifyUnbounded(*this, lp, options, clock, &detail);
   } else if (out.proven_infeasible) {
     r.status = SolveStatus::kInfeasible;
     if (cbc_claim != nullptr) *cbc_claim = true;
@@ -593,9 +597,8 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
   }
   r.incumbents = recorder.incumbents();
   if (r.has_solution() &&
-      (r.incumbents.empty() ||
-       std::abs(r.incumbents.back().objective - r.objective) >
-           1e-9 * std::max(1.0, std::abs(r.objective)))) {
+      (r.incumbents.empty() || std::abs(r.incumbents.back().objective - r.objective) >
+                                   1e-9 * std::max(1.0, std::abs(r.objective)))) {
     r.incumbents.push_back({clock.Elapsed(), r.objective, r.best_bound});
   }
   r.detail = detail;
@@ -604,9 +607,7 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
 
 }  // namespace
 
-std::string CbcVersion() {
-  return std::string("CBC ") + CBC_VERSION + " / CLP " + CLP_VERSION;
-}
+std::string CbcVersion() { return std::string("CBC ") + CBC_VERSION + " / CLP " + CLP_VERSION; }
 
 std::unique_ptr<Solver> MakeCbcSolver() { return std::make_unique<CbcSolverImpl>(); }
 

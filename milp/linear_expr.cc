@@ -90,10 +90,8 @@ LinearExpr LinearExpr::Sum(const std::vector<Variable>& vars) {
 LinearExpr LinearExpr::InnerProduct(const Eigen::Ref<const Eigen::VectorXd>& coefficients,
                                     const std::vector<Variable>& vars) {
   if (coefficients.size() != static_cast<Eigen::Index>(vars.size())) {
-    throw std::invalid_argument("LinearExpr::InnerProduct: " +
-                                std::to_string(coefficients.size()) +
-                                " coefficients for " + std::to_string(vars.size()) +
-                                " variables");
+    throw std::invalid_argument("LinearExpr::InnerProduct: " + std::to_string(coefficients.size()) +
+                                " coefficients for " + std::to_string(vars.size()) + " variables");
   }
   LinearExpr e;
   e.terms_.reserve(vars.size());
@@ -106,8 +104,7 @@ LinearExpr LinearExpr::InnerProduct(const Eigen::Ref<const Eigen::VectorXd>& coe
 LinearExpr LinearExpr::InnerProduct(const Eigen::Ref<const Eigen::VectorXd>& coefficients,
                                     const VarBlock& vars) {
   if (coefficients.size() != vars.size()) {
-    throw std::invalid_argument("LinearExpr::InnerProduct: " +
-                                std::to_string(coefficients.size()) +
+    throw std::invalid_argument("LinearExpr::InnerProduct: " + std::to_string(coefficients.size()) +
                                 " coefficients for a block of " + std::to_string(vars.size()) +
                                 " variables");
   }
@@ -120,9 +117,8 @@ LinearExpr LinearExpr::InnerProduct(const Eigen::Ref<const Eigen::VectorXd>& coe
 
 void LinearExpr::Canonicalize() {
   if (terms_.empty()) return;
-  const bool sorted =
-      std::is_sorted(terms_.begin(), terms_.end(),
-                     [](const Term& a, const Term& b) { return a.index < b.index; });
+  const bool sorted = std::is_sorted(
+      terms_.begin(), terms_.end(), [](const Term& a, const Term& b) { return a.index < b.index; });
   if (!sorted) {
     std::stable_sort(terms_.begin(), terms_.end(),
                      [](const Term& a, const Term& b) { return a.index < b.index; });

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 namespace thrustsched::milp {
 namespace {
@@ -32,7 +32,8 @@ bool Unsafe(double d, double lo, double up) {
 // A_RJ: the rows `rows` of the columns `cols`.
 SparseCol Block(const SparseCol& a, const std::vector<int>& rows, const std::vector<int>& cols) {
   std::vector<int> row_pos(static_cast<size_t>(a.rows()), -1);
-  for (size_t k = 0; k < rows.size(); ++k) row_pos[static_cast<size_t>(rows[k])] = static_cast<int>(k);
+  for (size_t k = 0; k < rows.size(); ++k)
+    row_pos[static_cast<size_t>(rows[k])] = static_cast<int>(k);
   std::vector<Eigen::Triplet<double>> t;
   for (size_t k = 0; k < cols.size(); ++k) {
     for (SparseCol::InnerIterator it(a, cols[k]); it; ++it) {
@@ -50,8 +51,7 @@ SparseCol Block(const SparseCol& a, const std::vector<int>& rows, const std::vec
 // = d_J is square (block triangular in time: the adjoint recursion), solved
 // by LU to full accuracy. False if not square or singular.
 bool ProjectOutSquare(const SparseCol& a, const std::vector<int>& equality_rows,
-                      const std::vector<int>& cols, Eigen::VectorXd* y,
-                      const Eigen::VectorXd& d) {
+                      const std::vector<int>& cols, Eigen::VectorXd* y, const Eigen::VectorXd& d) {
   std::vector<char> touched(static_cast<size_t>(a.rows()), 0);
   for (int j : cols) {
     for (SparseCol::InnerIterator it(a, j); it; ++it) touched[static_cast<size_t>(it.row())] = 1;

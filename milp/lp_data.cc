@@ -91,7 +91,8 @@ double LpData::MaxViolation(const Eigen::Ref<const Eigen::VectorXd>& x) const {
     }
     if (j < col_lower.size()) note(col_lower[j] - v);
     if (j < col_upper.size()) note(v - col_upper[j]);
-    if (static_cast<size_t>(j) < col_type.size() && col_type[static_cast<size_t>(j)] != VarType::kContinuous) {
+    if (static_cast<size_t>(j) < col_type.size() &&
+        col_type[static_cast<size_t>(j)] != VarType::kContinuous) {
       note(std::abs(v - std::round(v)));
     }
   }
@@ -109,8 +110,8 @@ bool LpData::IsValid(std::string* error) const {
   const int n = num_cols();
   const int m = num_rows();
   auto size_error = [&](const char* field, Eigen::Index got, int want) {
-    return Fail(error, name + "': " + field + " has size " + std::to_string(got) +
-                           ", expected " + std::to_string(want));
+    return Fail(error, name + "': " + field + " has size " + std::to_string(got) + ", expected " +
+                           std::to_string(want));
   };
   if (col_cost.size() != n) return size_error("col_cost", col_cost.size(), n);
   if (col_lower.size() != n) return size_error("col_lower", col_lower.size(), n);
@@ -127,7 +128,8 @@ bool LpData::IsValid(std::string* error) const {
     return size_error("row_names", static_cast<Eigen::Index>(row_names.size()), m);
   }
   if (!std::isfinite(objective_offset)) {
-    return Fail(error, name + "': objective_offset must be finite, got " + FormatG(objective_offset, 17));
+    return Fail(error,
+                name + "': objective_offset must be finite, got " + FormatG(objective_offset, 17));
   }
   for (int j = 0; j < n; ++j) {
     const double lo = col_lower[j], up = col_upper[j];
@@ -136,19 +138,19 @@ bool LpData::IsValid(std::string* error) const {
                              FormatG(col_cost[j], 17));
     }
     if (std::isnan(lo) || std::isnan(up) || lo > up || lo == kInfinity || up == -kInfinity) {
-      return Fail(error, name + "': " + ColLabel(*this, j) + " has invalid bounds [" + FormatG(lo, 17) +
-                             ", " + FormatG(up, 17) + "]");
+      return Fail(error, name + "': " + ColLabel(*this, j) + " has invalid bounds [" +
+                             FormatG(lo, 17) + ", " + FormatG(up, 17) + "]");
     }
     if (col_type[static_cast<size_t>(j)] == VarType::kBinary && (lo < 0.0 || up > 1.0)) {
-      return Fail(error, name + "': binary " + ColLabel(*this, j) + " has bounds [" + FormatG(lo, 17) +
-                             ", " + FormatG(up, 17) + "] outside [0, 1]");
+      return Fail(error, name + "': binary " + ColLabel(*this, j) + " has bounds [" +
+                             FormatG(lo, 17) + ", " + FormatG(up, 17) + "] outside [0, 1]");
     }
   }
   for (int i = 0; i < m; ++i) {
     const double lo = row_lower[i], up = row_upper[i];
     if (std::isnan(lo) || std::isnan(up) || lo > up || lo == kInfinity || up == -kInfinity) {
-      return Fail(error, name + "': " + RowLabel(*this, i) + " has invalid bounds [" + FormatG(lo, 17) +
-                             ", " + FormatG(up, 17) + "]");
+      return Fail(error, name + "': " + RowLabel(*this, i) + " has invalid bounds [" +
+                             FormatG(lo, 17) + ", " + FormatG(up, 17) + "]");
     }
   }
   for (int j = 0; j < n; ++j) {
@@ -158,7 +160,8 @@ bool LpData::IsValid(std::string* error) const {
       const int i = static_cast<int>(it.row());
       if (!std::isfinite(it.value())) {
         return Fail(error, name + "': coefficient of " + ColLabel(*this, j) + " in " +
-                               RowLabel(*this, i) + " must be finite, got " + FormatG(it.value(), 17));
+                               RowLabel(*this, i) + " must be finite, got " +
+                               FormatG(it.value(), 17));
       }
       if (i <= previous_row) {
         return Fail(error, name + "': a_matrix " + ColLabel(*this, j) +
@@ -200,7 +203,8 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
   const Eigen::VectorXd constant = lp.a_matrix * fixed_value;  // per row
   std::vector<int> row_count(static_cast<size_t>(m), 0);
   for (int j : keep) {
-    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it; ++it) {
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it;
+         ++it) {
       ++row_count[static_cast<size_t>(it.row())];
     }
   }
@@ -232,7 +236,8 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
     out.col_lower[k] = lp.col_lower[j];
     out.col_upper[k] = lp.col_upper[j];
     out.col_type[static_cast<size_t>(k)] = lp.col_type[static_cast<size_t>(j)];
-    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it; ++it) {
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it;
+         ++it) {
       t.emplace_back(new_row[static_cast<size_t>(it.row())], k, it.value());
     }
   }

@@ -71,8 +71,7 @@ void Model::NameTable::CheckNew(const std::string& name, const char* what) const
   }
 }
 
-void Model::NameTable::CheckNewBlock(std::string_view prefix, int count,
-                                     const char* what) const {
+void Model::NameTable::CheckNewBlock(std::string_view prefix, int count, const char* what) const {
   if (prefix.empty()) return;
   const std::string p(prefix);
   if (block_index_.count(p) != 0) {
@@ -182,43 +181,44 @@ void Model::CheckColumnBounds(double lower, double upper, VarType type,
                               const std::string& label) const {
   const std::string where = "Model '" + name_ + "': " + label;
   if (std::isnan(lower) || std::isnan(upper)) {
-    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + FormatG(lower, 17) + ", " +
-                                FormatG(upper, 17) + "]");
+    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + FormatG(lower, 17) +
+                                ", " + FormatG(upper, 17) + "]");
   }
   if (lower > upper) {
     throw std::invalid_argument(where + ": lower bound " + FormatG(lower, 17) + " > upper bound " +
                                 FormatG(upper, 17));
   }
   if (lower == kInfinity || upper == -kInfinity) {
-    throw std::invalid_argument(where + ": bounds [" + FormatG(lower, 17) + ", " + FormatG(upper, 17) +
-                                "] leave no finite value");
+    throw std::invalid_argument(where + ": bounds [" + FormatG(lower, 17) + ", " +
+                                FormatG(upper, 17) + "] leave no finite value");
   }
   if (type == VarType::kBinary && (lower < 0.0 || upper > 1.0)) {
-    throw std::invalid_argument(where + ": binary bounds [" + FormatG(lower, 17) + ", " + FormatG(upper, 17) +
-                                "] outside [0, 1]");
+    throw std::invalid_argument(where + ": binary bounds [" + FormatG(lower, 17) + ", " +
+                                FormatG(upper, 17) + "] outside [0, 1]");
   }
 }
 
 void Model::CheckRowBounds(double lower, double upper, const std::string& label) const {
   const std::string where = "Model '" + name_ + "': " + label;
   if (std::isnan(lower) || std::isnan(upper)) {
-    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + FormatG(lower, 17) + ", " +
-                                FormatG(upper, 17) + "] (or the expression constant is not finite)");
+    throw std::invalid_argument(where + ": bounds must not be NaN, got [" + FormatG(lower, 17) +
+                                ", " + FormatG(upper, 17) +
+                                "] (or the expression constant is not finite)");
   }
   if (lower > upper) {
     throw std::invalid_argument(where + ": lower bound " + FormatG(lower, 17) + " > upper bound " +
                                 FormatG(upper, 17));
   }
   if (lower == kInfinity || upper == -kInfinity) {
-    throw std::invalid_argument(where + ": bounds [" + FormatG(lower, 17) + ", " + FormatG(upper, 17) +
-                                "] can never hold");
+    throw std::invalid_argument(where + ": bounds [" + FormatG(lower, 17) + ", " +
+                                FormatG(upper, 17) + "] can never hold");
   }
 }
 
 Variable Model::AddVariable(double lower, double upper, VarType type, std::string name) {
   const int index = num_variables();
-  std::string label = name.empty() ? "variable 'c" + std::to_string(index) + "'"
-                                   : "variable '" + name + "'";
+  std::string label =
+      name.empty() ? "variable 'c" + std::to_string(index) + "'" : "variable '" + name + "'";
   CheckColumnBounds(lower, upper, type, label);
   try {
     col_names_.CheckNew(name, "variable");
@@ -310,7 +310,8 @@ Constraint Model::AddConstraint(const LinearExpr& expr, double lower, double upp
   }
   const double c = expr.constant();
   if (!std::isfinite(c)) {
-    throw std::invalid_argument(where + ": expression constant must be finite, got " + FormatG(c, 17));
+    throw std::invalid_argument(where + ": expression constant must be finite, got " +
+                                FormatG(c, 17));
   }
   if (std::isnan(lower) || std::isnan(upper)) CheckRowBounds(lower, upper, label);
   const double lo = std::isfinite(lower) ? lower - c : lower;
@@ -373,8 +374,8 @@ ConstraintBlock Model::AddRows(const std::vector<RowTriplet>& triplets,
     }
     if (t.column < 0 || t.column >= n) {
       throw std::invalid_argument(where + ": " + row_label(t.row) + ": column " +
-                                  std::to_string(t.column) + " outside [0, " +
-                                  std::to_string(n) + ")");
+                                  std::to_string(t.column) + " outside [0, " + std::to_string(n) +
+                                  ")");
     }
     if (!std::isfinite(t.value)) {
       throw std::invalid_argument("Model '" + name_ + "': " + row_label(t.row) +
@@ -396,9 +397,9 @@ ConstraintBlock Model::AddRows(const std::vector<RowTriplet>& triplets,
   for (int i = 0; i < m; ++i) {
     auto first = bucket.begin() + start[static_cast<size_t>(i)];
     auto last = bucket.begin() + start[static_cast<size_t>(i) + 1];
-    if (!std::is_sorted(first, last, [](const auto& a, const auto& b) { return a.first < b.first; })) {
-      std::stable_sort(first, last,
-                       [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (!std::is_sorted(first, last,
+                        [](const auto& a, const auto& b) { return a.first < b.first; })) {
+      std::stable_sort(first, last, [](const auto& a, const auto& b) { return a.first < b.first; });
     }
     for (auto it = first; it != last;) {
       const int col = it->first;
@@ -464,16 +465,15 @@ ConstraintBlock Model::AddRows(const Eigen::SparseMatrix<double, Eigen::RowMajor
   triplets.reserve(static_cast<size_t>(a.nonZeros()));
   for (Eigen::Index r = 0; r < a.outerSize(); ++r) {
     for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(a, r); it; ++it) {
-      triplets.push_back({static_cast<int>(r), vars[static_cast<size_t>(it.col())].index(),
-                          it.value()});
+      triplets.push_back(
+          {static_cast<int>(r), vars[static_cast<size_t>(it.col())].index(), it.value()});
     }
   }
   return AddRows(triplets, lower, upper, name_prefix);
 }
 
 ConstraintBlock Model::AddRows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
-                               const VarBlock& vars,
-                               const Eigen::Ref<const Eigen::VectorXd>& lower,
+                               const VarBlock& vars, const Eigen::Ref<const Eigen::VectorXd>& lower,
                                const Eigen::Ref<const Eigen::VectorXd>& upper,
                                std::string_view name_prefix) {
   const std::string where = "Model '" + name_ + "': AddRows";
@@ -530,10 +530,12 @@ void Model::SetObjective(const LinearExpr& objective, ObjectiveSense sense) {
     }
   }
   if (!std::isfinite(e.constant())) {
-    throw std::invalid_argument(where + ": constant must be finite, got " + FormatG(e.constant(), 17));
+    throw std::invalid_argument(where + ": constant must be finite, got " +
+                                FormatG(e.constant(), 17));
   }
   std::fill(col_cost_.begin(), col_cost_.end(), 0.0);
-  for (const LinearExpr::Term& t : e.terms()) col_cost_[static_cast<size_t>(t.index)] = t.coefficient;
+  for (const LinearExpr::Term& t : e.terms())
+    col_cost_[static_cast<size_t>(t.index)] = t.coefficient;
   objective_offset_ = e.constant();
   sense_ = sense;
 }
@@ -597,9 +599,8 @@ double Model::objective_coefficient(Variable v) const {
 
 std::string Model::constraint_name(Constraint c) const {
   if (c.index < 0 || c.index >= num_constraints()) {
-    throw std::out_of_range("Model '" + name_ + "': constraint index " +
-                            std::to_string(c.index) + " outside [0, " +
-                            std::to_string(num_constraints()) + ")");
+    throw std::out_of_range("Model '" + name_ + "': constraint index " + std::to_string(c.index) +
+                            " outside [0, " + std::to_string(num_constraints()) + ")");
   }
   return row_names_.Name(c.index);
 }

@@ -115,8 +115,7 @@ class Model {
   ConstraintBlock AddRows(const std::vector<RowTriplet>& triplets,
                           const Eigen::Ref<const Eigen::VectorXd>& lower,
                           const Eigen::Ref<const Eigen::VectorXd>& upper,
-                          std::string_view name_prefix = "",
-                          std::vector<std::string> names = {});
+                          std::string_view name_prefix = "", std::vector<std::string> names = {});
   /// Bulk add: lower <= A * vars <= upper, vars.size() == A.cols().
   /// @throws as the triplet overload, or if vars.size() != A.cols() or a
   ///         variable belongs to another model.
@@ -127,8 +126,7 @@ class Model {
                           std::string_view name_prefix = "");
   /// Same, with the columns of one block.
   ConstraintBlock AddRows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
-                          const VarBlock& vars,
-                          const Eigen::Ref<const Eigen::VectorXd>& lower,
+                          const VarBlock& vars, const Eigen::Ref<const Eigen::VectorXd>& lower,
                           const Eigen::Ref<const Eigen::VectorXd>& upper,
                           std::string_view name_prefix = "");
 
@@ -205,8 +203,7 @@ class Model {
 
   void CheckOwned(Variable v, std::string_view what) const;
   std::string ColumnLabel(int index) const;
-  void CheckColumnBounds(double lower, double upper, VarType type,
-                         const std::string& label) const;
+  void CheckColumnBounds(double lower, double upper, VarType type, const std::string& label) const;
   void CheckRowBounds(double lower, double upper, const std::string& label) const;
   void SetObjective(const LinearExpr& objective, ObjectiveSense sense);
 

@@ -32,11 +32,10 @@ constexpr char kOffsetColumnFixed[] = "OBJCONST";  // fixed MPS names have <= 8 
 bool IsLpKeyword(const std::string& s) {
   // Words the CPLEX LP readers of CBC and GLPK treat specially.
   static const char* const kKeywords[] = {
-      "st",      "s.t.",     "st.",      "subject", "such",    "to",       "bound",
-      "bounds",  "general",  "generals", "gen",     "integer", "integers", "int",
-      "binary",  "binaries", "bin",      "semi",    "semis",   "sos",      "end",
-      "free",    "inf",      "infinity", "minimize", "maximize", "minimum", "maximum",
-      "min",     "max"};
+      "st",       "s.t.",     "st.",     "subject", "such",     "to",   "bound",  "bounds",
+      "general",  "generals", "gen",     "integer", "integers", "int",  "binary", "binaries",
+      "bin",      "semi",     "semis",   "sos",     "end",      "free", "inf",    "infinity",
+      "minimize", "maximize", "minimum", "maximum", "min",      "max"};
   std::string lower(s);
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const char* k : kKeywords) {
@@ -68,10 +67,9 @@ std::string Sanitize(const std::string& raw) {
     }
   }
   const bool digit_or_dot = std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '.';
-  const bool exponent_like =
-      (s[0] == 'e' || s[0] == 'E') &&
-      (s.size() == 1 || std::isdigit(static_cast<unsigned char>(s[1])) || s[1] == 'e' ||
-       s[1] == 'E' || s[1] == '.');
+  const bool exponent_like = (s[0] == 'e' || s[0] == 'E') &&
+                             (s.size() == 1 || std::isdigit(static_cast<unsigned char>(s[1])) ||
+                              s[1] == 'e' || s[1] == 'E' || s[1] == '.');
   if (digit_or_dot || exponent_like || IsLpKeyword(s)) s.insert(s.begin(), '_');
   if (static_cast<int>(s.size()) > kMaxNameLength) s.resize(kMaxNameLength);
   return s;
@@ -83,9 +81,8 @@ std::string Numbered(char prefix, size_t index) {
   return buf;
 }
 
-std::vector<std::string> ExportNames(const std::vector<std::string>& raw, size_t count,
-                                     char prefix, bool obfuscate,
-                                     std::initializer_list<const char*> reserved) {
+std::vector<std::string> ExportNames(const std::vector<std::string>& raw, size_t count, char prefix,
+                                     bool obfuscate, std::initializer_list<const char*> reserved) {
   std::vector<std::string> out;
   out.reserve(count);
   if (obfuscate || raw.size() != count) {
@@ -510,7 +507,8 @@ void WriteLp(std::ostream& os, const LpData& problem, const LpFormatOptions& opt
   for (int j = 0; j < n; ++j) {
     const double c = sign * problem.col_cost[j];
     // Columns used nowhere else are declared here with a zero cost.
-    if (c != 0.0 || !used[static_cast<size_t>(j)]) LpTerm(out, c, cols[static_cast<size_t>(j)], &count);
+    if (c != 0.0 || !used[static_cast<size_t>(j)])
+      LpTerm(out, c, cols[static_cast<size_t>(j)], &count);
   }
   if (offset_col) LpTerm(out, offset, kOffsetColumnFree, &count);
   if (count == 0) LpTerm(out, 0.0, placeholder, &count);
@@ -589,7 +587,8 @@ void WriteLp(std::ostream& os, const LpData& problem, const LpFormatOptions& opt
   };
   auto pure_binary = [&](int j) {
     return problem.col_type[static_cast<size_t>(j)] == VarType::kBinary &&
-           IntegerLowerBound(problem.col_lower[j]) == 0.0 && IntegerUpperBound(problem.col_upper[j]) == 1.0;
+           IntegerLowerBound(problem.col_lower[j]) == 0.0 &&
+           IntegerUpperBound(problem.col_upper[j]) == 1.0;
   };
   section("Generals", [&](int j) {
     return problem.col_type[static_cast<size_t>(j)] != VarType::kContinuous && !pure_binary(j);

@@ -51,8 +51,7 @@ void WriteMps(std::ostream& out, const LpData& problem, const MpsOptions& option
 /// @throws as WriteMps.
 std::string ToMpsString(const LpData& problem, const MpsOptions& options = {});
 /// @throws std::runtime_error naming the path on I/O failure; as WriteMps.
-void WriteMpsFile(const std::string& path, const LpData& problem,
-                  const MpsOptions& options = {});
+void WriteMpsFile(const std::string& path, const LpData& problem, const MpsOptions& options = {});
 
 struct LpFormatOptions {
   bool obfuscate_names = false;

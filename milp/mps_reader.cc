@@ -64,8 +64,7 @@ LpData ReadMpsFile(const std::string& path) {
     lp.col_upper[j] = value(cu[j]);
     VarType t = VarType::kContinuous;
     if (mps.isInteger(j)) {
-      t = (lp.col_lower[j] == 0.0 && lp.col_upper[j] == 1.0) ? VarType::kBinary
-                                                              : VarType::kInteger;
+      t = (lp.col_lower[j] == 0.0 && lp.col_upper[j] == 1.0) ? VarType::kBinary : VarType::kInteger;
     }
     lp.col_type[static_cast<size_t>(j)] = t;
     lp.col_names.push_back(mps.columnName(j));

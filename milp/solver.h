@@ -31,8 +31,8 @@
 namespace thrustsched::milp {
 
 enum class SolveStatus {
-  kOptimal,          // proven optimal within the requested gap
-  kFeasible,         // stopped by a limit with an incumbent; see gap
+  kOptimal,   // proven optimal within the requested gap
+  kFeasible,  // stopped by a limit with an incumbent; see gap
   kInfeasible,
   kUnbounded,
   kNoSolutionFound,  // stopped by a limit (time, interrupt) without incumbent
@@ -57,7 +57,7 @@ std::string_view ToString(SolvePhase phase);
 /// Reported to SolveOptions::progress during a solve.
 struct SolveProgress {
   double wall_seconds = 0.0;
-  double objective = std::numeric_limits<double>::quiet_NaN();   // incumbent, NaN if none
+  double objective = std::numeric_limits<double>::quiet_NaN();  // incumbent, NaN if none
   double best_bound = std::numeric_limits<double>::quiet_NaN();
   double gap = std::numeric_limits<double>::quiet_NaN();
   long long nodes = 0;
@@ -99,11 +99,11 @@ struct SolveOptions {
   double time_limit_s = std::numeric_limits<double>::infinity();  // wall clock
   double relative_gap = 1e-4;  // |obj - bound| / max(1e-10, |obj|)
   double absolute_gap = 1e-9;
-  int threads = 1;             // > 1 may make CBC non-deterministic
+  int threads = 1;  // > 1 may make CBC non-deterministic
   /// 0 (default): the solver's own default seeds (for CBC: the same run as
   /// the `cbc` program); > 0: this seed for all random choices.
   int random_seed = 0;
-  int log_level = 0;           // 0 silent (default); 1 summary; 2+ solver log
+  int log_level = 0;  // 0 silent (default); 1 summary; 2+ solver log
   bool presolve = true;
   /// If > 0: every feasible objective value (minus the offset) is an integer
   /// multiple of this step, e.g. when the only costed columns are binaries of
@@ -167,16 +167,16 @@ struct Incumbent {
 
 struct SolveResult {
   SolveStatus status = SolveStatus::kError;
-  std::string detail;           // solver-specific explanation, raw codes
+  std::string detail;  // solver-specific explanation, raw codes
   // objective, best_bound and gap are set when has_solution(); gap is
   // |objective - best_bound| / max(1e-10, |objective|).
-  std::string solver_version;   // e.g. "CBC 2.10.8"
-  double objective = std::numeric_limits<double>::quiet_NaN();   // model sense, with offset
+  std::string solver_version;                                   // e.g. "CBC 2.10.8"
+  double objective = std::numeric_limits<double>::quiet_NaN();  // model sense, with offset
   double best_bound = std::numeric_limits<double>::quiet_NaN();
-  double gap = std::numeric_limits<double>::quiet_NaN();         // relative, >= 0
+  double gap = std::numeric_limits<double>::quiet_NaN();  // relative, >= 0
   long long nodes = 0;
   double wall_seconds = 0.0;
-  Eigen::VectorXd x;            // column values; empty unless has_solution()
+  Eigen::VectorXd x;                  // column values; empty unless has_solution()
   std::vector<Incumbent> incumbents;  // in time order
 
   bool has_solution() const {
@@ -193,7 +193,7 @@ struct LpRelaxationResult {
   std::string detail;
   double objective = std::numeric_limits<double>::quiet_NaN();
   double wall_seconds = 0.0;
-  Eigen::VectorXd x;          // primal column values
+  Eigen::VectorXd x;  // primal column values
   /// One per row: the derivative of the optimal objective (in the model's own
   /// sense, offset irrelevant) with respect to the row's active bound. For a
   /// minimisation, a binding ">= lower" row has a dual >= 0 and a binding

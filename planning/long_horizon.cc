@@ -30,9 +30,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double CpuSince(std::clock_t c0) {
-  return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-}
+double CpuSince(std::clock_t c0) { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; }
 
 // True if `value` is an integer multiple of `step` (relative 1e-9).
 bool Divides(double step, double value) {
@@ -96,10 +94,12 @@ int LongHorizonOptions::num_cycles() const {
 }
 
 bool LongHorizonOptions::IsValid(std::string* error) const {
-  if (!std::isfinite(start_s)) return Fail(error, "long_horizon.start_s must be finite, got " + FormatG(start_s, 12));
+  if (!std::isfinite(start_s))
+    return Fail(error, "long_horizon.start_s must be finite, got " + FormatG(start_s, 12));
   auto positive = [&](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0) {
-      return Fail(error, std::string("long_horizon.") + name + " must be finite and > 0, got " + FormatG(v, 12));
+      return Fail(error, std::string("long_horizon.") + name + " must be finite and > 0, got " +
+                             FormatG(v, 12));
     }
     return true;
   };
@@ -108,12 +108,12 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
     return false;
   }
   if (!Divides(step_s, cycle_s)) {
-    return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) + " s does not divide cycle_s " +
-                           FormatG(cycle_s, 12) + " s");
+    return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) +
+                           " s does not divide cycle_s " + FormatG(cycle_s, 12) + " s");
   }
   if (!Divides(step_s, duration_s)) {
-    return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) + " s does not divide duration_s " +
-                           FormatG(duration_s, 12) + " s");
+    return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) +
+                           " s does not divide duration_s " + FormatG(duration_s, 12) + " s");
   }
   if (mode == HorizonMode::kReceding) {
     if (!positive(control_s, "control_s")) return false;
@@ -123,14 +123,15 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
                              " s in receding mode");
     }
     if (!Divides(step_s, control_s)) {
-      return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) + " s does not divide control_s " +
-                             FormatG(control_s, 12) + " s");
+      return Fail(error, "long_horizon.step_s " + FormatG(step_s, 12) +
+                             " s does not divide control_s " + FormatG(control_s, 12) + " s");
     }
   }
   const double applied = mode == HorizonMode::kFixed ? cycle_s : control_s;
   if (duration_s / applied > 100000.0) {
-    return Fail(error, "long_horizon: duration_s / cycle length = " + FormatG(duration_s / applied, 12) +
-                           " cycles; at most 100000 are allowed");
+    return Fail(error,
+                "long_horizon: duration_s / cycle length = " + FormatG(duration_s / applied, 12) +
+                    " cycles; at most 100000 are allowed");
   }
   for (size_t k = 0; k < outages.size(); ++k) {
     const ThrusterOutage& o = outages[k];
@@ -141,7 +142,8 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
     }
   }
   if (!std::isfinite(soft_penalty) || soft_penalty <= 0.0) {
-    return Fail(error, "long_horizon.soft_penalty must be finite and > 0, got " + FormatG(soft_penalty, 12));
+    return Fail(error, "long_horizon.soft_penalty must be finite and > 0, got " +
+                           FormatG(soft_penalty, 12));
   }
   if (!std::isfinite(improve_above_gap)) {
     return Fail(error, "long_horizon.improve_above_gap must be finite, got " +
@@ -164,9 +166,10 @@ bool LongHorizonOptions::IsValid(std::string* error) const {
 // ---------------------------------------------------------------------------
 // The driver.
 
-LongHorizonSimulation::LongHorizonSimulation(ScheduleProblem base, LongHorizonOptions options,
-                                             std::shared_ptr<const dynamics::GeoSimulator> simulator,
-                                             std::shared_ptr<const milp::Solver> solver)
+LongHorizonSimulation::LongHorizonSimulation(
+    ScheduleProblem base, LongHorizonOptions options,
+    std::shared_ptr<const dynamics::GeoSimulator> simulator,
+    std::shared_ptr<const milp::Solver> solver)
     : base_(std::move(base)),
       options_(std::move(options)),
       simulator_(std::move(simulator)),
@@ -183,11 +186,12 @@ LongHorizonSimulation::LongHorizonSimulation(ScheduleProblem base, LongHorizonOp
   }
   if (geo->options().station_longitude_deg != simulator_->options().station_longitude_deg ||
       geo->options().epoch != simulator_->options().epoch) {
-    throw std::invalid_argument(
-        "LongHorizonSimulation: the simulator's station (" +
-        FormatG(simulator_->options().station_longitude_deg, 12) + " deg, epoch " +
-        simulator_->options().epoch + ") differs from the model's (" +
-        FormatG(geo->options().station_longitude_deg, 12) + " deg, epoch " + geo->options().epoch + ")");
+    throw std::invalid_argument("LongHorizonSimulation: the simulator's station (" +
+                                FormatG(simulator_->options().station_longitude_deg, 12) +
+                                " deg, epoch " + simulator_->options().epoch +
+                                ") differs from the model's (" +
+                                FormatG(geo->options().station_longitude_deg, 12) + " deg, epoch " +
+                                geo->options().epoch + ")");
   }
   if (base_.input_mode != InputMode::kOnOff) {
     throw std::invalid_argument("LongHorizonSimulation: input_mode must be on-off");
@@ -198,7 +202,8 @@ LongHorizonSimulation::LongHorizonSimulation(ScheduleProblem base, LongHorizonOp
   base_.terminal = TerminalSpec{};
   base_.window.soft = false;
   base_.window.enforce_from_s = -kInf;
-  if (!base_.IsValid(&err)) throw std::invalid_argument("LongHorizonSimulation: base problem: " + err);
+  if (!base_.IsValid(&err))
+    throw std::invalid_argument("LongHorizonSimulation: base problem: " + err);
   if (!base_.window.enabled()) {
     throw std::invalid_argument("LongHorizonSimulation: base.window must constrain lat and lon");
   }
@@ -330,8 +335,8 @@ ScheduleProblem LongHorizonSimulation::CycleProblem(const LongHorizonState& stat
   }
   for (const ThrusterOutage& o : options_.outages) {
     if (o.until_s <= t.start_s || o.from_s >= t.prediction_end_s) continue;
-    p.forced_off.push_back({o.thruster, std::max(o.from_s, t.start_s),
-                            std::min(o.until_s, t.prediction_end_s)});
+    p.forced_off.push_back(
+        {o.thruster, std::max(o.from_s, t.start_s), std::min(o.until_s, t.prediction_end_s)});
   }
   if (options_.mode == HorizonMode::kFixed || options_.terminal_in_receding) {
     p.terminal = options_.terminal;
@@ -422,8 +427,8 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
                        (raw       ? "(CBC preprocessing and presolve off, cold"
                         : elastic ? "(elastic window, cold"
                                   : "(from the accepted schedule") +
-                       (accepted_raw ? ", CBC preprocessing and presolve off" : "") +
-                       ", gap " + FormatG(accepted->solve.gap, 12) + ", " +
+                       (accepted_raw ? ", CBC preprocessing and presolve off" : "") + ", gap " +
+                       FormatG(accepted->solve.gap, 12) + ", " +
                        std::to_string(opt.milp.max_nodes) + " nodes): " + r.solve.detail;
       rec->check_seconds += r.check_seconds;
     } catch (const std::exception& e) {
@@ -434,9 +439,9 @@ void LongHorizonSimulation::ImproveAccepted(const ScheduleProblem& p, int contro
     // within 1e-6 of the half width, as the hard rows hold them).
     double tolerance = 0.0;
     for (double w : p.window.half_widths) tolerance = std::max(tolerance, 1e-6 * w);
-    const bool usable = r.has_schedule() && (!elastic || (r.checked && r.check.operational_ok &&
-                                                          r.check.max_window_violation_at_nodes <=
-                                                              tolerance));
+    const bool usable =
+        r.has_schedule() && (!elastic || (r.checked && r.check.operational_ok &&
+                                          r.check.max_window_violation_at_nodes <= tolerance));
     if (usable && r.solve.objective < accepted->solve.objective - 1e-9) {
       // Either problem's bound is a valid bound of the cycle's MILP.
       const double bound = std::max(accepted->solve.best_bound, r.solve.best_bound);
@@ -517,9 +522,8 @@ ScheduleResult LongHorizonSimulation::Attempt(const ScheduleProblem& p, const Le
     r = SolveBuilt(milp, *solver_, opt);
     attempt->status = r.solve.status;
     attempt->solve_seconds = r.solve.wall_seconds;
-    attempt->detail =
-        std::string(lv.raw ? "retry with CBC preprocessing and presolve off: " : "") +
-        r.solve.detail;
+    attempt->detail = std::string(lv.raw ? "retry with CBC preprocessing and presolve off: " : "") +
+                      r.solve.detail;
     for (const std::string& reason : r.infeasibility_reasons) {
       attempt->detail += (attempt->detail.empty() ? "" : "; ") + reason;
     }

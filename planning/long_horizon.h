@@ -161,7 +161,7 @@ struct LongHorizonOptions {
   /// ignored (= cycle_s). The last cycle is shortened to end at the run end
   /// (fixed: its whole grid; receding: its applied part).
   double control_s = 0.0;
-  double step_s = 0.0;      // grid step; must divide cycle_s, control_s and duration_s
+  double step_s = 0.0;  // grid step; must divide cycle_s, control_s and duration_s
   /// End-of-horizon constraint in fixed mode (typically kStationKeepingSets);
   /// receding mode drops it (thesis) unless terminal_in_receding.
   TerminalSpec terminal;
@@ -214,7 +214,7 @@ struct CycleAttempt {
   Fallback level = Fallback::kNone;
   milp::SolveStatus status = milp::SolveStatus::kError;
   double solve_seconds = 0.0;
-  std::string detail;   // solver detail, exception text or reasons
+  std::string detail;  // solver detail, exception text or reasons
 };
 
 /// Everything that happened in one cycle.
@@ -225,50 +225,50 @@ struct CycleRecord {
   double prediction_end_s = 0.0;  // end of the MILP grid
   Fallback fallback = Fallback::kNone;
   std::vector<CycleAttempt> attempts;
-  milp::SolveStatus status = milp::SolveStatus::kError;  // of the accepted attempt
-  double objective = std::numeric_limits<double>::quiet_NaN();   // accepted MILP
+  milp::SolveStatus status = milp::SolveStatus::kError;         // of the accepted attempt
+  double objective = std::numeric_limits<double>::quiet_NaN();  // accepted MILP
   double best_bound = std::numeric_limits<double>::quiet_NaN();
   double gap = std::numeric_limits<double>::quiet_NaN();
   long long nodes = 0;
-  double solve_seconds = 0.0;           // all attempts
+  double solve_seconds = 0.0;                                                // all attempts
   double first_solution_seconds = std::numeric_limits<double>::quiet_NaN();  // accepted attempt
-  double build_seconds = 0.0;           // discretise + build, all attempts
+  double build_seconds = 0.0;  // discretise + build, all attempts
   double check_seconds = 0.0;
   double replay_seconds = 0.0;
-  double wall_seconds = 0.0;            // the whole cycle
-  double cpu_seconds = 0.0;             // process CPU time of the cycle (load-independent)
+  double wall_seconds = 0.0;  // the whole cycle
+  double cpu_seconds = 0.0;   // process CPU time of the cycle (load-independent)
   bool controllable = true;
-  std::string note;                     // "uncontrollable: ...", reasons, failures
+  std::string note;  // "uncontrollable: ...", reasons, failures
 
   // Applied schedule (burns inside [start_s, applied_end_s)) and its totals.
   std::vector<Burn> burns;
-  int planned_burns = 0;                // in the whole prediction
+  int planned_burns = 0;  // in the whole prediction
   double consumption_l1_m_s = 0.0;
   double delta_v_m_s = 0.0;
   double propellant_kg = 0.0;
-  double normal_delta_v_m_s = 0.0;      // sum |a_N| x duration
-  std::vector<double> on_time_s;        // per thruster
+  double normal_delta_v_m_s = 0.0;  // sum |a_N| x duration
+  std::vector<double> on_time_s;    // per thruster
 
   // Check of the accepted plan on the synthesis model (whole prediction).
   bool checked = false;
   bool rules_ok = true;
   double linear_window_violation_deg = std::numeric_limits<double>::quiet_NaN();  // nodes
-  double soft_violation_deg = 0.0;      // soft fallbacks: largest planned violation at nodes
+  double soft_violation_deg = 0.0;  // soft fallbacks: largest planned violation at nodes
 
   // Nonlinear replay of the applied part, from the true state.
   double max_abs_lat_deg = 0.0;
   double max_abs_lon_deg = 0.0;
   double max_window_violation_deg = 0.0;  // max(|lat|, |lon|) - half width, 0 if inside
   double worst_time_s = std::numeric_limits<double>::quiet_NaN();
-  double time_outside_window_s = 0.0;   // trapezoid rule on the samples (as the checker)
+  double time_outside_window_s = 0.0;  // trapezoid rule on the samples (as the checker)
   /// Largest |linear plan - nonlinear replay| of lat and lon at grid nodes of
   /// the applied part (deg): the synthesis-model error over the cycle.
   double prediction_error_deg = 0.0;
 
   dynamics::Vector6d eci_start = dynamics::Vector6d::Zero();
   dynamics::Vector6d eci_end = dynamics::Vector6d::Zero();
-  Eigen::VectorXd initial_state;        // relative state at start_s
-  Eigen::VectorXd final_state;          // relative state at applied_end_s (replay)
+  Eigen::VectorXd initial_state;  // relative state at start_s
+  Eigen::VectorXd final_state;    // relative state at applied_end_s (replay)
 
   /// Replay samples (not needed for resuming): times, outputs [dr_m, lat_rad,
   /// lon_rad] and relative states [da_m, ex, ey, ix, iy, dl_rad].
@@ -284,7 +284,7 @@ struct CycleRecord {
 /// cycle records are the caller's).
 struct LongHorizonState {
   int next_cycle = 0;
-  double time_s = 0.0;                 // start of cycle next_cycle
+  double time_s = 0.0;                                  // start of cycle next_cycle
   dynamics::Vector6d eci = dynamics::Vector6d::Zero();  // true state at time_s
   /// Per thruster: end of its last burn (s), -inf if it never fired.
   std::vector<double> last_burn_end_s;
@@ -296,7 +296,7 @@ struct Distribution {
   double p90 = std::numeric_limits<double>::quiet_NaN();  // nearest rank
   double max = std::numeric_limits<double>::quiet_NaN();
   double mean = std::numeric_limits<double>::quiet_NaN();
-  int count = 0;                                          // finite values used
+  int count = 0;  // finite values used
 };
 Distribution Distribute(std::vector<double> values);
 
@@ -308,8 +308,8 @@ struct LongHorizonSummary {
   double propellant_kg = 0.0;
   double normal_delta_v_m_s = 0.0;
   int burns = 0;
-  std::vector<double> on_time_s;       // per thruster
-  std::vector<double> thrust_days;     // per thruster
+  std::vector<double> on_time_s;                                        // per thruster
+  std::vector<double> thrust_days;                                      // per thruster
   double north_days = 0, south_days = 0, east_days = 0, west_days = 0;  // FacesOf
   double time_outside_window_s = 0.0;
   double max_abs_lat_deg = 0.0;
@@ -318,7 +318,7 @@ struct LongHorizonSummary {
   double worst_time_s = std::numeric_limits<double>::quiet_NaN();
   int fallback_soft_window = 0, fallback_free_terminal = 0, fallback_zero_thrust = 0;
   int uncontrollable_cycles = 0;
-  int time_limited_cycles = 0;         // accepted with status feasible (gap not reached)
+  int time_limited_cycles = 0;  // accepted with status feasible (gap not reached)
   bool rules_ok = true;
   Distribution solve_seconds, gap, wall_seconds, cpu_seconds;
   double wall_seconds_total = 0.0;

@@ -36,7 +36,8 @@ void RecordAccepted(const ScheduleResult& accepted, CycleRecord* rec) {
     rec->checked = true;
     rec->rules_ok = accepted.check.operational_ok;
     rec->linear_window_violation_deg = accepted.check.max_window_violation_at_nodes * kRadToDeg;
-    if (rec->fallback != Fallback::kNone) rec->soft_violation_deg = rec->linear_window_violation_deg;
+    if (rec->fallback != Fallback::kNone)
+      rec->soft_violation_deg = rec->linear_window_violation_deg;
   }
 }
 

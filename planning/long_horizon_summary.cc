@@ -10,9 +10,9 @@
 namespace thrustsched::planning {
 
 Distribution Distribute(std::vector<double> values) {
-  values.erase(std::remove_if(values.begin(), values.end(),
-                              [](double v) { return !std::isfinite(v); }),
-               values.end());
+  values.erase(
+      std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+      values.end());
   Distribution d;
   d.count = static_cast<int>(values.size());
   if (values.empty()) return d;

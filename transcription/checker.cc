@@ -43,8 +43,8 @@
 #include "common/error.h"
 #include "common/format.h"
 #include "dynamics/geo_model.h"
-#include "dynamics/models.h"
 #include "dynamics/geo_simulator.h"
+#include "dynamics/models.h"
 #include "dynamics/propagation.h"
 
 namespace thrustsched::transcription {
@@ -209,17 +209,20 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
       const bool across_end = rules.allow_burn_across_end && b.end >= tf - kTol;
       if (duration < rules.min_burn_s - kTol && !across_end) {
         Add(&out, "min_burn", i, b.start,
-            what + " lasts " + FormatG(duration, 10) + " s < min_burn " + FormatG(rules.min_burn_s, 10) + " s");
+            what + " lasts " + FormatG(duration, 10) + " s < min_burn " +
+                FormatG(rules.min_burn_s, 10) + " s");
       }
       if (duration > rules.max_burn_s + kTol) {
         Add(&out, "max_burn", i, b.start,
-            what + " lasts " + FormatG(duration, 10) + " s > max_burn " + FormatG(rules.max_burn_s, 10) + " s");
+            what + " lasts " + FormatG(duration, 10) + " s > max_burn " +
+                FormatG(rules.max_burn_s, 10) + " s");
       }
       if (!is_cont) {
         if (prev_end > -kInf && b.start - prev_end < rules.min_off_same_s - kTol) {
           Add(&out, "min_off_same", i, b.start,
               what + " starts " + FormatG(b.start - prev_end, 10) + " s after its switch-off at " +
-                  FormatG(prev_end, 10) + " s < min_off_same " + FormatG(rules.min_off_same_s, 10) + " s");
+                  FormatG(prev_end, 10) + " s < min_off_same " + FormatG(rules.min_off_same_s, 10) +
+                  " s");
         }
         starts[static_cast<std::size_t>(i)].push_back(b.start);
         ++counted;
@@ -256,9 +259,9 @@ std::vector<RuleViolation> CheckRules(const OperationalRules& rules, const Bound
         for (double e : ends[static_cast<std::size_t>(i)]) {
           if (s >= e - kTol && s - e < rules.min_gap_other_s - kTol) {
             Add(&out, "min_gap_other", l, s,
-                name(l) + " burn starts at " + FormatG(s, 10) + " s, " + FormatG(s - e, 10) + " s after " +
-                    name(i) + " switched off at " + FormatG(e, 10) + " s < min_gap_other " +
-                    FormatG(rules.min_gap_other_s, 10) + " s");
+                name(l) + " burn starts at " + FormatG(s, 10) + " s, " + FormatG(s - e, 10) +
+                    " s after " + name(i) + " switched off at " + FormatG(e, 10) +
+                    " s < min_gap_other " + FormatG(rules.min_gap_other_s, 10) + " s");
           }
         }
       }
@@ -366,8 +369,9 @@ double StationKeepingExcess(const ScheduleProblem& problem, const Eigen::VectorX
     along = 2;
     normal = 1;
   } else {
-    throw std::invalid_argument("CheckSchedule: station-keeping sets need an HCW or GEO model, got " +
-                                std::string(model.name()));
+    throw std::invalid_argument(
+        "CheckSchedule: station-keeping sets need an HCW or GEO model, got " +
+        std::string(model.name()));
   }
   double eps_y = 0.0, eps_z = 0.0;
   const WindowSpec& w = problem.window;
@@ -406,11 +410,11 @@ void ReplayNonlinear(const ScheduleProblem& problem, const dynamics::GeoSimulato
   }
   if (geo->options().station_longitude_deg != sim.options().station_longitude_deg ||
       geo->options().epoch != sim.options().epoch) {
-    throw std::invalid_argument("CheckSchedule: options.nonlinear simulates station " +
-                                FormatG(sim.options().station_longitude_deg, 10) + " deg at epoch " +
-                                sim.options().epoch + ", the problem's model station " +
-                                FormatG(geo->options().station_longitude_deg, 10) + " deg at epoch " +
-                                geo->options().epoch);
+    throw std::invalid_argument(
+        "CheckSchedule: options.nonlinear simulates station " +
+        FormatG(sim.options().station_longitude_deg, 10) + " deg at epoch " + sim.options().epoch +
+        ", the problem's model station " + FormatG(geo->options().station_longitude_deg, 10) +
+        " deg at epoch " + geo->options().epoch);
   }
   const double t0 = problem.grid.front();
   const dynamics::Vector6d eci0 = sim.EciFromRelative(problem.initial_state, t0);
@@ -466,7 +470,8 @@ std::vector<RuleViolation> CheckOperationalRules(const OperationalRules& rules,
 
 bool CheckOptions::IsValid(std::string* error) const {
   if (samples_per_interval < 0) {
-    return common::Fail(error, "samples_per_interval must be >= 0, got " + std::to_string(samples_per_interval));
+    return common::Fail(
+        error, "samples_per_interval must be >= 0, got " + std::to_string(samples_per_interval));
   }
   if (!(propagation_tolerance > 0.0) || !std::isfinite(propagation_tolerance)) {
     return common::Fail(error, "propagation_tolerance must be finite and > 0, got " +
@@ -495,10 +500,10 @@ CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn
                                  burns, thrusters.names());
   for (const Burn& b : burns) {
     if (b.thruster >= 0 && b.thruster < m && !thrusters.thruster(b.thruster).enabled) {
-      r.rule_violations.push_back(RuleViolation{"disabled", b.thruster, b.start_s,
-                                                thrusters.thruster(b.thruster).name +
-                                                    " is disabled but fires on [" + FormatG(b.start_s, 10) +
-                                                    ", " + FormatG(b.end_s, 10) + ")"});
+      r.rule_violations.push_back(
+          RuleViolation{"disabled", b.thruster, b.start_s,
+                        thrusters.thruster(b.thruster).name + " is disabled but fires on [" +
+                            FormatG(b.start_s, 10) + ", " + FormatG(b.end_s, 10) + ")"});
     }
   }
   std::stable_sort(
@@ -593,8 +598,8 @@ std::string CheckReport::Summary() const {
     }
   }
   if (max_window_violation > 0.0) {
-    os << "window (linear re-propagation): violated by " << FormatG(max_window_violation, 10) << " (output "
-       << worst_output << " at t = " << FormatG(worst_time_s, 10)
+    os << "window (linear re-propagation): violated by " << FormatG(max_window_violation, 10)
+       << " (output " << worst_output << " at t = " << FormatG(worst_time_s, 10)
        << " s); at nodes only: " << FormatG(max_window_violation_at_nodes, 10) << "\n";
   } else {
     os << "window (linear re-propagation): ok at " << sample_times.size() << " samples\n";
@@ -603,9 +608,9 @@ std::string CheckReport::Summary() const {
      << FormatG(terminal_error, 10) << ")\n";
   if (nonlinear_checked) {
     os << "window (nonlinear replay): violation " << FormatG(max_window_violation_nonlinear_deg, 10)
-       << " deg at t = " << FormatG(worst_time_nonlinear_s, 10) << " s; max |lat| " << FormatG(max_abs_lat_deg, 10)
-       << " deg, max |lon| " << FormatG(max_abs_lon_deg, 10) << " deg; about "
-       << FormatG(time_outside_window_nonlinear_s, 10) << " s outside\n";
+       << " deg at t = " << FormatG(worst_time_nonlinear_s, 10) << " s; max |lat| "
+       << FormatG(max_abs_lat_deg, 10) << " deg, max |lon| " << FormatG(max_abs_lon_deg, 10)
+       << " deg; about " << FormatG(time_outside_window_nonlinear_s, 10) << " s outside\n";
   }
   return os.str();
 }

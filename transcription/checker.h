@@ -44,7 +44,7 @@ std::vector<RuleViolation> CheckOperationalRules(const OperationalRules& rules,
                                                  const std::vector<Burn>& burns);
 
 struct CheckOptions {
-  int samples_per_interval = 4;       // propagation samples strictly inside each interval
+  int samples_per_interval = 4;  // propagation samples strictly inside each interval
   double propagation_tolerance = 1e-11;
   /// GEO only: also replay through this nonlinear model (~0.1-1 s per week).
   std::shared_ptr<const dynamics::GeoSimulator> nonlinear;
@@ -83,9 +83,9 @@ struct CheckReport {
   double worst_time_nonlinear_s = std::numeric_limits<double>::quiet_NaN();
   double max_abs_lat_deg = std::numeric_limits<double>::quiet_NaN();
   double max_abs_lon_deg = std::numeric_limits<double>::quiet_NaN();
-  double time_outside_window_nonlinear_s = 0.0;  // sampled estimate
-  std::vector<Eigen::Matrix<double, 6, 1>> nonlinear_eci;   // at sample_times
-  std::vector<Eigen::Vector3d> nonlinear_outputs;           // [dr_m, dlat_rad, dlon_rad]
+  double time_outside_window_nonlinear_s = 0.0;            // sampled estimate
+  std::vector<Eigen::Matrix<double, 6, 1>> nonlinear_eci;  // at sample_times
+  std::vector<Eigen::Vector3d> nonlinear_outputs;          // [dr_m, dlat_rad, dlon_rad]
 
   /// Terminal constraint satisfied by the re-propagated final state (fixed or
   /// box terminal kinds; true for free or polytope kinds) within tolerance.

@@ -11,7 +11,6 @@
 #include "common/constants.h"
 #include "common/format.h"
 
-
 namespace thrustsched::transcription {
 namespace {
 
@@ -20,16 +19,19 @@ using common::kPi;
 constexpr double kSqrt2 = 1.41421356237309504880;
 
 // Gauss-Kronrod 7-15 nodes (positive half) and weights.
-constexpr std::array<double, 8> kXk = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-                                       0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-                                       0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                                       0.207784955007898467600689403773245, 0.0};
-constexpr std::array<double, 8> kWk = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-                                       0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-                                       0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-                                       0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-constexpr std::array<double, 4> kWg = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-                                       0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+constexpr std::array<double, 8> kXk = {
+    0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+    0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+    0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+    0.207784955007898467600689403773245, 0.0};
+constexpr std::array<double, 8> kWk = {
+    0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+    0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+    0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+constexpr std::array<double, 4> kWg = {
+    0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+    0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
 
 // One Gauss-Kronrod 7-15 rule on [a, b]: the Kronrod value and |K - G|.
 template <typename F>
@@ -73,7 +75,8 @@ double Integrate(const F& f, double a, double b, std::vector<double> breaks, dou
       error += pieces[i].error;
       if (pieces[i].error > pieces[worst].error) worst = i;
     }
-    if (error <= rel * std::abs(value) || error <= 1e-300 || pieces.size() >= kMaxPieces) return value;
+    if (error <= rel * std::abs(value) || error <= 1e-300 || pieces.size() >= kMaxPieces)
+      return value;
     const Piece w = pieces[worst];
     const double mid = 0.5 * (w.a + w.b);
     const auto [v1, e1] = Rule(f, w.a, mid);
@@ -124,7 +127,8 @@ double DiskIntegral(const Eigen::Vector3d& nu, const Eigen::Vector3d& sd, double
     }
     auto f2 = [&](double t2) {
       const double y2 = h2 * std::sin(t2), h3 = h2 * std::cos(t2);
-      return GaussianDensity(y2, nu[1], sd[1]) * CentralInterval(nu[2], sd[2], h3) * h2 * std::cos(t2);
+      return GaussianDensity(y2, nu[1], sd[1]) * CentralInterval(nu[2], sd[2], h3) * h2 *
+             std::cos(t2);
     };
     return Integrate(f2, -0.5 * kPi, 0.5 * kPi, PeakBreaks(nu[1], sd[1], h2), kRelTol);
   };
@@ -145,12 +149,14 @@ double BallProbability(const Eigen::Vector3d& mean, const Eigen::Matrix3d& covar
   if (!mean.allFinite() || !covariance.allFinite() || !std::isfinite(radius)) {
     throw std::invalid_argument("BallProbability: mean, covariance and radius must be finite");
   }
-  if (radius <= 0.0) throw std::invalid_argument("BallProbability: radius must be > 0, got " + FormatG(radius, 10));
+  if (radius <= 0.0)
+    throw std::invalid_argument("BallProbability: radius must be > 0, got " + FormatG(radius, 10));
   const double big = covariance.cwiseAbs().maxCoeff();
   if ((covariance - covariance.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(big, 1e-300)) {
     throw std::invalid_argument("BallProbability: the covariance is not symmetric");
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (covariance + covariance.transpose()));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 *
+                                                           (covariance + covariance.transpose()));
   const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending
   if (lambda[0] < -1e-9 * std::max(lambda[2], 1e-300)) {
     throw std::invalid_argument("BallProbability: the covariance has a negative eigenvalue " +
@@ -177,10 +183,10 @@ namespace {
 // Acklam's approximation of the lower-half quantile (p <= 0.5), refined by
 // one Halley step on NormalCdf, which is accurate there.
 double LowerQuantile(double p) {
-  static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
+  static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02,  -2.759285104469687e+02,
                              1.383577518672690e+02,  -3.066479806614716e+01, 2.506628277459239e+00};
   static const double b[] = {-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
-                             6.680131188771972e+01,  -1.328068155288572e+01};
+                             6.680131188771972e+01, -1.328068155288572e+01};
   static const double c[] = {-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
                              -2.549732539343734e+00, 4.374664141464968e+00,  2.938163982698783e+00};
   static const double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
@@ -203,7 +209,8 @@ double LowerQuantile(double p) {
 }  // namespace
 
 double NormalQuantile(double p) {
-  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("NormalQuantile: p must be in (0, 1), got " + FormatG(p, 10));
+  if (!(p > 0.0 && p < 1.0))
+    throw std::invalid_argument("NormalQuantile: p must be in (0, 1), got " + FormatG(p, 10));
   return p <= 0.5 ? LowerQuantile(p) : -LowerQuantile(1.0 - p);
 }
 
@@ -214,7 +221,8 @@ double NormalUpperQuantile(double q) {
   return q <= 0.5 ? -LowerQuantile(q) : LowerQuantile(1.0 - q);
 }
 
-Eigen::MatrixXd ClipToPositiveSemidefinite(const Eigen::MatrixXd& covariance, double* min_eigenvalue) {
+Eigen::MatrixXd ClipToPositiveSemidefinite(const Eigen::MatrixXd& covariance,
+                                           double* min_eigenvalue) {
   if (covariance.rows() != covariance.cols() || !covariance.allFinite()) {
     throw std::invalid_argument("ClipToPositiveSemidefinite: expected a finite square matrix");
   }
@@ -222,7 +230,8 @@ Eigen::MatrixXd ClipToPositiveSemidefinite(const Eigen::MatrixXd& covariance, do
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sym);
   if (min_eigenvalue != nullptr) *min_eigenvalue = eig.eigenvalues().minCoeff();
   const Eigen::VectorXd clipped = eig.eigenvalues().cwiseMax(0.0);
-  const Eigen::MatrixXd out = eig.eigenvectors() * clipped.asDiagonal() * eig.eigenvectors().transpose();
+  const Eigen::MatrixXd out =
+      eig.eigenvectors() * clipped.asDiagonal() * eig.eigenvectors().transpose();
   return 0.5 * (out + out.transpose());
 }
 
@@ -230,7 +239,8 @@ Eigen::MatrixXd CovarianceFactor(const Eigen::MatrixXd& covariance) {
   if (covariance.rows() != covariance.cols() || !covariance.allFinite()) {
     throw std::invalid_argument("CovarianceFactor: expected a finite square matrix");
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (covariance + covariance.transpose()));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 *
+                                                           (covariance + covariance.transpose()));
   const Eigen::VectorXd lambda = eig.eigenvalues();
   if (lambda.size() > 0 && lambda.minCoeff() < -1e-12 * std::max(lambda.maxCoeff(), 1e-300)) {
     throw std::invalid_argument("CovarianceFactor: the matrix has a negative eigenvalue " +

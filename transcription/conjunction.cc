@@ -53,7 +53,8 @@ KeepOutPolytope ConjunctionSpec::EffectivePolytope() const {
   return polytope.size() == 0 ? KeepOutPolytope::Cube(radius_m) : polytope;
 }
 
-std::vector<double> ConjunctionSpec::CheckTimes(double horizon_start_s, double horizon_end_s) const {
+std::vector<double> ConjunctionSpec::CheckTimes(double horizon_start_s,
+                                                double horizon_end_s) const {
   const double a = std::isnan(check_start_s) ? horizon_start_s : check_start_s;
   const double b = std::isnan(check_end_s) ? horizon_end_s : check_end_s;
   std::vector<double> t(num_checks);
@@ -72,20 +73,25 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
   const double big = covariance.cwiseAbs().maxCoeff();
   const double asym = (covariance - covariance.transpose()).cwiseAbs().maxCoeff();
   if (asym > 1e-12 * big) {
-    return Fail(error, "conjunction.covariance is not symmetric (largest |S_ij - S_ji| = " + FormatG(asym, 10) + ")");
+    return Fail(error, "conjunction.covariance is not symmetric (largest |S_ij - S_ji| = " +
+                           FormatG(asym, 10) + ")");
   }
   for (int i = 0; i < 6; ++i) {
     if (covariance(i, i) < 0.0) {
-      return Fail(error, "conjunction.covariance has a negative variance " + FormatG(covariance(i, i), 10) +
-                             " on the diagonal (entry " + std::to_string(i) + ")");
+      return Fail(error, "conjunction.covariance has a negative variance " +
+                             FormatG(covariance(i, i), 10) + " on the diagonal (entry " +
+                             std::to_string(i) + ")");
     }
   }
   if (repair == CovarianceRepair::kNone) {
-    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(covariance).eigenvalues();
+    const Eigen::VectorXd ev =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(covariance).eigenvalues();
     const double low = ev.minCoeff();
     if (low < -1e-12 * ev.maxCoeff()) {
-      return Fail(error, "conjunction.covariance is not positive semi-definite (smallest eigenvalue " +
-                             FormatG(low, 10) + "); give covariance_repair \"clip_eigenvalues\" to repair it");
+      return Fail(error,
+                  "conjunction.covariance is not positive semi-definite (smallest eigenvalue " +
+                      FormatG(low, 10) +
+                      "); give covariance_repair \"clip_eigenvalues\" to repair it");
     }
   }
   if (!(radius_m > 0.0) || !std::isfinite(radius_m)) {
@@ -102,17 +108,18 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
     return Fail(error, "conjunction check window bounds must be finite");
   }
   if (!std::isnan(check_start_s) && !std::isnan(check_end_s) && !(check_end_s > check_start_s)) {
-    return Fail(error, "conjunction.check_end_s (" + FormatG(check_end_s, 10) + ") must be after check_start_s (" +
-                           FormatG(check_start_s, 10) + ")");
+    return Fail(error, "conjunction.check_end_s (" + FormatG(check_end_s, 10) +
+                           ") must be after check_start_s (" + FormatG(check_start_s, 10) + ")");
   }
   if (polytope.size() > 0) {
     if (polytope.faces.rows() != polytope.size() || polytope.faces.cols() != 3 ||
         !polytope.faces.allFinite() || !polytope.offsets.allFinite()) {
-      return Fail(error, "conjunction.polytope needs m x 3 finite face normals and m finite offsets");
+      return Fail(error,
+                  "conjunction.polytope needs m x 3 finite face normals and m finite offsets");
     }
     if (!polytope.ContainsBall(radius_m)) {
-      return Fail(error, "conjunction.polytope does not contain the ball of radius " + FormatG(radius_m, 10) +
-                             " m (every face needs b_j >= R |a_j|)");
+      return Fail(error, "conjunction.polytope does not contain the ball of radius " +
+                             FormatG(radius_m, 10) + " m (every face needs b_j >= R |a_j|)");
     }
   }
   if (std::isnan(cost_budget) || cost_budget <= 0.0) {
@@ -121,15 +128,16 @@ bool ConjunctionSpec::IsValid(std::string* error) const {
   return true;
 }
 
-Eigen::MatrixXd EffectiveCovariance(const ConjunctionSpec& spec, double time_scale_s, double* min_eigenvalue) {
+Eigen::MatrixXd EffectiveCovariance(const ConjunctionSpec& spec, double time_scale_s,
+                                    double* min_eigenvalue) {
   if (!(time_scale_s > 0.0) || !std::isfinite(time_scale_s)) {
     throw std::invalid_argument("EffectiveCovariance: time scale must be finite and > 0, got " +
                                 FormatG(time_scale_s, 10));
   }
   Eigen::VectorXd d = Eigen::VectorXd::Ones(spec.covariance.rows());
   d.tail(d.size() / 2).setConstant(time_scale_s);
-  const Eigen::MatrixXd scaled = d.asDiagonal() * (0.5 * (spec.covariance + spec.covariance.transpose())) *
-                                 d.asDiagonal();
+  const Eigen::MatrixXd scaled =
+      d.asDiagonal() * (0.5 * (spec.covariance + spec.covariance.transpose())) * d.asDiagonal();
   double low = 0.0;
   const Eigen::MatrixXd clipped = ClipToPositiveSemidefinite(scaled, &low);
   if (min_eigenvalue != nullptr) *min_eigenvalue = low;
@@ -141,9 +149,7 @@ Eigen::MatrixXd EffectiveCovariance(const ConjunctionSpec& spec, double time_sca
 Eigen::Matrix3d SerraLvlhToLocal() {
   // Local x (radial out) = -z_S, y (along-track) = x_S, z (normal, +h) = -y_S.
   Eigen::Matrix3d m;
-  m << 0, 0, -1,
-       1, 0, 0,
-       0, -1, 0;
+  m << 0, 0, -1, 1, 0, 0, 0, -1, 0;
   return m;
 }
 
@@ -151,7 +157,8 @@ double InstantaneousThreshold(double risk, double encounter_s, double t0_s) {
   if (!(risk > 0.0 && risk < 1.0)) {
     throw std::invalid_argument("risk threshold must be in (0, 1), got " + FormatG(risk, 10));
   }
-  if (!(encounter_s > 0.0) || !std::isfinite(encounter_s) || !(t0_s > 0.0) || !std::isfinite(t0_s)) {
+  if (!(encounter_s > 0.0) || !std::isfinite(encounter_s) || !(t0_s > 0.0) ||
+      !std::isfinite(t0_s)) {
     throw std::invalid_argument("encounter duration and T0 must be finite and > 0");
   }
   return t0_s * risk / encounter_s;

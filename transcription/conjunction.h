@@ -69,8 +69,8 @@ struct ConjunctionSpec {
   /// secondary at state_time_s: the sum of both objects' covariances.
   Eigen::MatrixXd covariance;
   CovarianceRepair repair = CovarianceRepair::kNone;
-  double radius_m = 0.0;                  // combined radius R
-  double instantaneous_threshold = 0.0;   // eps' in (0, 0.5)
+  double radius_m = 0.0;                 // combined radius R
+  double instantaneous_threshold = 0.0;  // eps' in (0, 0.5)
   /// Check grid: num_checks uniform times strictly inside [check_start_s,
   /// check_end_s] (t_k = start + k (end - start) / (num_checks + 1)); NaN =
   /// the horizon's start / end.

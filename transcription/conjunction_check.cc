@@ -45,15 +45,16 @@ struct Fundamental {
   std::vector<Eigen::VectorXd> drift;
 };
 
-Fundamental Propagate(const dynamics::LinearModel& model, double t0, const std::vector<double>& times,
-                      double tol) {
+Fundamental Propagate(const dynamics::LinearModel& model, double t0,
+                      const std::vector<double>& times, double tol) {
   const int n = model.num_states();
   const Eigen::MatrixXd none = Eigen::MatrixXd::Zero(model.num_inputs(), 1);
   Fundamental f;
   f.drift = dynamics::PropagateLinear(model, none, Eigen::VectorXd::Zero(n), t0, {}, times, tol);
   f.phi.assign(times.size(), Eigen::MatrixXd(n, n));
   for (int c = 0; c < n; ++c) {
-    const auto xs = dynamics::PropagateLinear(model, none, Eigen::VectorXd::Unit(n, c), t0, {}, times, tol);
+    const auto xs =
+        dynamics::PropagateLinear(model, none, Eigen::VectorXd::Unit(n, c), t0, {}, times, tol);
     for (size_t i = 0; i < times.size(); ++i) f.phi[i].col(c) = xs[i] - f.drift[i];
   }
   return f;
@@ -88,7 +89,8 @@ std::vector<Eigen::VectorXd> PrimaryPath(const ScheduleProblem& p, const std::ve
     std::vector<double> seg;
     const double end = j < nn ? p.grid[j + 1] : p.grid[j];
     size_t first = i;
-    for (; i < times.size() && (times[i] < end || (j == nn && times[i] <= end)); ++i) seg.push_back(times[i]);
+    for (; i < times.size() && (times[i] < end || (j == nn && times[i] <= end)); ++i)
+      seg.push_back(times[i]);
     if (j < nn) seg.push_back(end);
     const auto xs = dynamics::PropagateLinear(model, none, x, p.grid[j], {}, seg, tol);
     for (size_t q = first; q < i; ++q) out[q] = xs[q - first];
@@ -107,11 +109,11 @@ double SegmentDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 
 // Relative-state data on the timeline (model states, local positions).
 struct Relative {
-  Eigen::VectorXd secondary0;                 // model state at t0
-  Eigen::MatrixXd covariance0;                // at t0, model state
-  std::vector<Eigen::VectorXd> secondary;     // mean, model state
-  std::vector<Eigen::VectorXd> primary, free; // planned and unmanoeuvred
-  std::vector<Eigen::MatrixXd> position;      // 3 x n local position map
+  Eigen::VectorXd secondary0;                  // model state at t0
+  Eigen::MatrixXd covariance0;                 // at t0, model state
+  std::vector<Eigen::VectorXd> secondary;      // mean, model state
+  std::vector<Eigen::VectorXd> primary, free;  // planned and unmanoeuvred
+  std::vector<Eigen::MatrixXd> position;       // 3 x n local position map
   Fundamental f;
 };
 
@@ -156,7 +158,9 @@ Inertial YaInertial(const ScheduleProblem& p, const dynamics::YamanakaAnkersenMo
   Inertial out;
   const double a = fine.front();
   out.mu = ya.mu();
-  out.secondary_eci = [&ya, a](const Eigen::VectorXd& x) { return dynamics::EciFromRelative(ya, x, a); };
+  out.secondary_eci = [&ya, a](const Eigen::VectorXd& x) {
+    return dynamics::EciFromRelative(ya, x, a);
+  };
   std::vector<std::pair<double, Eigen::Vector3d>> kicks;  // inertial delta-v after the start
   for (const Impulse& im : impulses) {
     const double t = p.grid[im.node];
@@ -164,14 +168,16 @@ Inertial YaInertial(const ScheduleProblem& p, const dynamics::YamanakaAnkersenMo
     kicks.push_back({t, dynamics::RelativeFrameBasis(ya, t) *
                             (im.delta_v_m_s * p.thrusters.thruster(im.thruster).direction)});
   }
-  std::sort(kicks.begin(), kicks.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::sort(kicks.begin(), kicks.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
   dynamics::KeplerOrbit arc(dynamics::EciFromRelative(ya, x_start, a), a, ya.mu());
   size_t next = 0;
   for (double t : fine) {
     while (next < kicks.size() && kicks[next].first <= t) {
       dynamics::Vector6d s = arc.At(kicks[next].first);
       double when = kicks[next].first;
-      for (; next < kicks.size() && kicks[next].first == when; ++next) s.tail<3>() += kicks[next].second;
+      for (; next < kicks.size() && kicks[next].first == when; ++next)
+        s.tail<3>() += kicks[next].second;
       arc = dynamics::KeplerOrbit(s, when, ya.mu());
     }
     out.primary.push_back(arc.At(t).head<3>());
@@ -194,8 +200,8 @@ Inertial GeoInertial(const ScheduleProblem& p, const dynamics::GeoLinearModel& g
     const double s = std::max(bu.start_s, a), e = std::min(bu.end_s, b);
     if (e > s) pulses.push_back({bu.thruster, s, e});
   }
-  const auto xs = sim->Propagate(sim->EciFromRelative(x_start, a), a, p.thrusters.AccelerationMatrix(),
-                                 pulses, fine);
+  const auto xs = sim->Propagate(sim->EciFromRelative(x_start, a), a,
+                                 p.thrusters.AccelerationMatrix(), pulses, fine);
   for (const auto& x : xs) out.primary.push_back(x.head<3>());
   return out;
 }
@@ -211,8 +217,9 @@ Inertial MakeInertial(const ScheduleProblem& p, const std::vector<Burn>& burns,
     if (!impulsive) return GeoInertial(p, *geo, burns, x_start, fine);
   }
   Inertial out;
-  out.note = "no nonlinear two-body counterpart for the " + std::string(p.model->name()) + " model in " +
-             (impulsive ? "impulsive" : "on-off") + " mode (available: yamanaka_ankersen impulsive, geo on-off)";
+  out.note = "no nonlinear two-body counterpart for the " + std::string(p.model->name()) +
+             " model in " + (impulsive ? "impulsive" : "on-off") +
+             " mode (available: yamanaka_ankersen impulsive, geo on-off)";
   return out;
 }
 
@@ -224,7 +231,8 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
   const Clock::time_point start = Clock::now();
   std::string err;
   if (!p.IsValid(&err)) throw std::invalid_argument(err);
-  if (!p.conjunction) throw std::invalid_argument("CheckConjunction: the problem has no conjunction");
+  if (!p.conjunction)
+    throw std::invalid_argument("CheckConjunction: the problem has no conjunction");
   if (o.monte_carlo_samples < 0 || !(o.sample_step_s >= 0.0)) {
     throw std::invalid_argument("CheckConjunction: samples and sample_step_s must be >= 0");
   }
@@ -247,10 +255,13 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
     const Eigen::MatrixXd g = rel.position[i] * rel.f.phi[i];
     const Eigen::Matrix3d cov = g * rel.covariance0 * g.transpose();
     const Eigen::Matrix3d sym = 0.5 * (cov + cov.transpose());
-    const double risk = BallProbability(rel.position[i] * (rel.primary[i] - rel.secondary[i]), sym, c.radius_m);
-    const double free = BallProbability(rel.position[i] * (rel.free[i] - rel.secondary[i]), sym, c.radius_m);
+    const double risk =
+        BallProbability(rel.position[i] * (rel.primary[i] - rel.secondary[i]), sym, c.radius_m);
+    const double free =
+        BallProbability(rel.position[i] * (rel.free[i] - rel.secondary[i]), sym, c.radius_m);
     if (risk >= r.max_risk) r.max_risk = risk, r.max_risk_time_s = t;
-    if (free >= r.max_risk_unmanoeuvred) r.max_risk_unmanoeuvred = free, r.max_risk_unmanoeuvred_time_s = t;
+    if (free >= r.max_risk_unmanoeuvred)
+      r.max_risk_unmanoeuvred = free, r.max_risk_unmanoeuvred_time_s = t;
   }
   r.risk_ok = r.max_risk <= r.threshold;
 
@@ -258,7 +269,8 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
   const int nf = static_cast<int>(fine.size());
   std::vector<Eigen::Vector3d> mu_plan(nf), mu_free(nf);
   std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> g(nf);
-  r.min_mean_distance_m = r.min_mean_distance_unmanoeuvred_m = std::numeric_limits<double>::infinity();
+  r.min_mean_distance_m = r.min_mean_distance_unmanoeuvred_m =
+      std::numeric_limits<double>::infinity();
   for (int k = 0; k < nf; ++k) {
     const int i = tl.Index(fine[k]);
     mu_plan[k] = rel.position[i] * (rel.primary[i] - rel.secondary[i]);
@@ -268,7 +280,8 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
       r.min_mean_distance_m = mu_plan[k].norm();
       r.min_mean_distance_time_s = fine[k];
     }
-    r.min_mean_distance_unmanoeuvred_m = std::min(r.min_mean_distance_unmanoeuvred_m, mu_free[k].norm());
+    r.min_mean_distance_unmanoeuvred_m =
+        std::min(r.min_mean_distance_unmanoeuvred_m, mu_free[k].norm());
   }
 
   r.samples = o.monte_carlo_samples;

@@ -52,19 +52,19 @@ struct ConjunctionCheckOptions {
   /// Step of the Monte Carlo time grid over the check window (s); 0: the
   /// window divided into 2000 steps.
   double sample_step_s = 0.0;
-  bool nonlinear = true;             // also the two-body Monte Carlo, where available
+  bool nonlinear = true;  // also the two-body Monte Carlo, where available
   double propagation_tolerance = 1e-11;
 };
 
 struct ConjunctionCheckReport {
-  double threshold = 0.0;       // eps' of the problem
+  double threshold = 0.0;  // eps' of the problem
   // Computed instantaneous risk at the check times.
   double max_risk = 0.0;
   double max_risk_time_s = std::numeric_limits<double>::quiet_NaN();
   double max_risk_unmanoeuvred = 0.0;
   double max_risk_unmanoeuvred_time_s = std::numeric_limits<double>::quiet_NaN();
-  bool risk_ok = false;                  // max_risk <= threshold
-  double min_mean_distance_m = 0.0;      // planned mean relative distance, on the fine grid
+  bool risk_ok = false;              // max_risk <= threshold
+  double min_mean_distance_m = 0.0;  // planned mean relative distance, on the fine grid
   double min_mean_distance_time_s = std::numeric_limits<double>::quiet_NaN();
   double min_mean_distance_unmanoeuvred_m = 0.0;
   // Monte Carlo (sample_step_s over the check window).
@@ -74,7 +74,7 @@ struct ConjunctionCheckReport {
   long long collisions_unmanoeuvred_linear = 0;  // the same samples without manoeuvre
   double min_distance_linear_m = std::numeric_limits<double>::quiet_NaN();
   bool nonlinear_checked = false;
-  std::string nonlinear_note;                    // why not, if not
+  std::string nonlinear_note;  // why not, if not
   long long collisions_nonlinear = 0;
   double min_distance_nonlinear_m = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
@@ -88,7 +88,8 @@ struct ConjunctionCheckReport {
 /// problem.conjunction.
 /// @throws std::invalid_argument if the problem has no (valid) conjunction or
 ///         the options are out of range (samples < 0, step < 0).
-ConjunctionCheckReport CheckConjunction(const ScheduleProblem& problem, const std::vector<Burn>& burns,
+ConjunctionCheckReport CheckConjunction(const ScheduleProblem& problem,
+                                        const std::vector<Burn>& burns,
                                         const std::vector<Impulse>& impulses,
                                         const ConjunctionCheckOptions& options = {});
 

@@ -36,15 +36,18 @@ ConjunctionGeometry ComputeConjunctionGeometry(const ScheduleProblem& p,
   const int n = model.num_states();
   const int nn = p.num_intervals();
   if (n != 6 || discrete.num_intervals() != nn) {
-    throw std::invalid_argument("conjunction: needs a 6-state model and its discretisation on the grid");
+    throw std::invalid_argument(
+        "conjunction: needs a 6-state model and its discretisation on the grid");
   }
   ConjunctionGeometry g;
   g.polytope = c.EffectivePolytope();
   g.quantile = NormalUpperQuantile(c.instantaneous_threshold);
 
   // Covariance as given (local frame), repaired if asked.
-  const Eigen::MatrixXd sigma_local = EffectiveCovariance(c, model.time_scale(), &g.covariance_min_eigenvalue);
-  g.covariance_repaired = c.repair == CovarianceRepair::kClipEigenvalues && g.covariance_min_eigenvalue < 0.0;
+  const Eigen::MatrixXd sigma_local =
+      EffectiveCovariance(c, model.time_scale(), &g.covariance_min_eigenvalue);
+  g.covariance_repaired =
+      c.repair == CovarianceRepair::kClipEigenvalues && g.covariance_min_eigenvalue < 0.0;
 
   // Every time at which a map is needed: the checks and the state time.
   std::vector<double> times = c.CheckTimes(p.grid.front(), p.grid.back());
@@ -55,15 +58,15 @@ ConjunctionGeometry ComputeConjunctionGeometry(const ScheduleProblem& p,
   std::vector<double> sorted;
   for (int i : order) sorted.push_back(times[i]);
   if (sorted.front() < p.grid.front() || sorted.back() > p.grid.back()) {
-    throw std::invalid_argument("conjunction: the check window and state_time_s must lie in the horizon");
+    throw std::invalid_argument(
+        "conjunction: the check window and state_time_s must lie in the horizon");
   }
   const std::vector<PartialMap> maps =
       PartialMaps(model, p.thrusters.AccelerationMatrix(), p.grid, sorted, options);
 
   // Secondary state and covariance at the state time, then at the grid start.
-  const int state_slot = static_cast<int>(std::find(order.begin(), order.end(),
-                                                    static_cast<int>(times.size()) - 1) -
-                                          order.begin());
+  const int state_slot = static_cast<int>(
+      std::find(order.begin(), order.end(), static_cast<int>(times.size()) - 1) - order.begin());
   const PartialMap& at_state = maps[state_slot];
   const AffineMap local = HcwCoordinates(model, c.state_time_s);
   const Eigen::MatrixXd to_state = InverseLocalMap(local);

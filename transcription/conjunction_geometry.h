@@ -29,12 +29,12 @@
 namespace thrustsched::transcription {
 
 struct CheckGeometry {
-  PartialMap map;                  // from t_{map.interval} to map.t
-  Eigen::MatrixXd position;        // 3 x n: local position of a model state at t
+  PartialMap map;            // from t_{map.interval} to map.t
+  Eigen::MatrixXd position;  // 3 x n: local position of a model state at t
   Eigen::Vector3d position_offset;
-  Eigen::Vector3d secondary;       // secondary's mean local position (m)
-  Eigen::Matrix3d covariance;      // relative position covariance (m^2)
-  Eigen::VectorXd margins;         // c_j (m), one per polytope face
+  Eigen::Vector3d secondary;   // secondary's mean local position (m)
+  Eigen::Matrix3d covariance;  // relative position covariance (m^2)
+  Eigen::VectorXd margins;     // c_j (m), one per polytope face
   double t() const { return map.t; }
 };
 

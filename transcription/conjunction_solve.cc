@@ -86,7 +86,8 @@ ConjunctionStart RepairedPlanStart(const ScheduleMilp& m, const milp::Solver& so
   x.head(ko.first_binary_column) = r0.x.head(ko.first_binary_column);
   const Eigen::VectorXd act = m.lp().a_matrix * x;  // keep-out binaries at 0
   milp::LpData lp = m.lp();
-  FixFaces(ko, [&](const KeepOutGroup& g) { return LeastMissedFace(g, act, lp); }, &lp);
+  FixFaces(
+      ko, [&](const KeepOutGroup& g) { return LeastMissedFace(g, act, lp); }, &lp);
   o.objective_step = m.objective_step();
   const milp::SolveResult r = solver.Solve(lp, o);
   if (!r.has_solution()) return out;
@@ -102,14 +103,16 @@ ConjunctionStart FixedFaceStart(const ScheduleMilp& m, const milp::Solver& solve
                                 const milp::SolveOptions& base) {
   if (!m.keep_out()) throw std::invalid_argument("FixedFaceStart: the problem has no conjunction");
   ConjunctionStart best;
-  if (m.problem().input_mode != InputMode::kImpulsive) return RepairedPlanStart(m, solver, base, 0.25);
+  if (m.problem().input_mode != InputMode::kImpulsive)
+    return RepairedPlanStart(m, solver, base, 0.25);
   const KeepOutStats& ko = *m.keep_out();
   const int num_faces = m.problem().conjunction->EffectivePolytope().size();
   const Clock::time_point t0 = Clock::now();
   const double time_left = base.time_limit_s;
   for (int face = -1; face < num_faces; ++face) {
     milp::LpData lp = m.lp();
-    FixFaces(ko, [face](const KeepOutGroup& g) { return PickFace(g, face); }, &lp);
+    FixFaces(
+        ko, [face](const KeepOutGroup& g) { return PickFace(g, face); }, &lp);
     milp::SolveOptions o = base;
     o.initial_solution.reset();
     o.progress = nullptr;
@@ -134,7 +137,8 @@ void AddObjectiveFloor(double lower, milp::Model* model) {
     const double cost = model->objective_coefficient(v);
     if (cost != 0.0) objective.AddTerm(v, cost);
   }
-  const double floor = lower - 1e-9 * std::abs(lower) - model->objective_offset();  // solver tolerance
+  const double floor =
+      lower - 1e-9 * std::abs(lower) - model->objective_offset();  // solver tolerance
   model->AddConstraint(objective, floor, kInf, "keep_out_floor");
 }
 
@@ -202,7 +206,8 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
     throw std::invalid_argument("SolveConjunction: the problem has no conjunction");
   }
   if (!(co.restart_ratio > 0.0 && co.restart_ratio <= 1.0) || co.max_rounds < 1) {
-    throw std::invalid_argument("SolveConjunction: restart_ratio must be in (0, 1] and max_rounds >= 1");
+    throw std::invalid_argument(
+        "SolveConjunction: restart_ratio must be in (0, 1] and max_rounds >= 1");
   }
   const Clock::time_point t0 = Clock::now();
   const double limit = options.milp.time_limit_s;
@@ -257,7 +262,8 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
     o.milp.progress_interval_s = std::min(options.milp.progress_interval_s, 1.0);
     o.milp.progress = [&](const milp::SolveProgress& p) {
       if (options.milp.interrupt != nullptr && options.milp.interrupt->load()) stop = true;
-      if (co.tighten_budget && !last_round && p.new_incumbent && p.objective < co.restart_ratio * br.budget) {
+      if (co.tighten_budget && !last_round && p.new_incumbent &&
+          p.objective < co.restart_ratio * br.budget) {
         restart = true;
         stop = true;
       }

@@ -21,7 +21,8 @@
 //     any cheaper plan would have fit its budget.
 //
 //   transcription::ConjunctionSolve r = transcription::SolveConjunction(milp, *solver, options);
-//   std::cout << r.result.schedule.consumption_l1_m_s << " after " << r.rounds.size() << " rounds\n";
+//   std::cout << r.result.schedule.consumption_l1_m_s << " after " << r.rounds.size() << "
+//   rounds\n";
 //
 // The scenario's own budget is the first round's when no start is found.
 #ifndef THRUSTSCHED_TRANSCRIPTION_CONJUNCTION_SOLVE_H_
@@ -39,9 +40,9 @@
 namespace thrustsched::transcription {
 
 struct ConjunctionSolveOptions {
-  bool fixed_face_start = true;   // step 1 (fixed faces, or the repaired plan in on-off mode)
-  bool tighten_budget = true;     // step 2; false: one solve of the model as built
-  double restart_ratio = 0.9;     // in (0, 1]
+  bool fixed_face_start = true;  // step 1 (fixed faces, or the repaired plan in on-off mode)
+  bool tighten_budget = true;    // step 2; false: one solve of the model as built
+  double restart_ratio = 0.9;    // in (0, 1]
   /// Rebuilt rounds bound their big-M with the terminal constraint too
   /// (BuildOptions::keep_out_bound_solver).
   bool lp_bounds = true;
@@ -49,22 +50,22 @@ struct ConjunctionSolveOptions {
 };
 
 struct BudgetRound {
-  double budget = 0.0;            // objective units
-  int binaries = 0;               // keep-out binaries of this build
+  double budget = 0.0;  // objective units
+  int binaries = 0;     // keep-out binaries of this build
   milp::SolveStatus status = milp::SolveStatus::kError;
   double objective = std::numeric_limits<double>::quiet_NaN();
   double best_bound = std::numeric_limits<double>::quiet_NaN();
-  double seconds = 0.0;           // build + solve
-  bool restarted = false;         // stopped for a cheaper plan
+  double seconds = 0.0;    // build + solve
+  bool restarted = false;  // stopped for a cheaper plan
 };
 
 struct ConjunctionSolve {
-  ScheduleResult result;               // of the last round, checked as SolveBuilt does
+  ScheduleResult result;  // of the last round, checked as SolveBuilt does
   /// The last round's model; null if the last round solved `first` itself.
   std::shared_ptr<const ScheduleMilp> milp;
   std::vector<BudgetRound> rounds;
   double start_objective = std::numeric_limits<double>::quiet_NaN();  // step 1, NaN if none
-  std::string start_label;             // which fixed-face assignment gave it
+  std::string start_label;  // which fixed-face assignment gave it
   double start_seconds = 0.0;
   /// The start's lower bound, added to every rebuilt round as the row
   /// "objective >= bound" (valid, and it tightens the LP relaxation).

@@ -94,8 +94,9 @@ class Builder {
     if (t_.size() < 2) throw std::invalid_argument("encoding: grid needs at least 2 points");
     for (size_t j = 0; j < t_.size(); ++j) {
       if (!std::isfinite(t_[j]) || (j > 0 && !(t_[j] > t_[j - 1]))) {
-        throw std::invalid_argument("encoding: grid must be finite and strictly increasing (index " +
-                                    std::to_string(j) + ")");
+        throw std::invalid_argument(
+            "encoding: grid must be finite and strictly increasing (index " + std::to_string(j) +
+            ")");
       }
     }
     if (!in_.rules.IsValid(&err)) throw std::invalid_argument(err);
@@ -112,10 +113,9 @@ class Builder {
     }
     for (int i = 0; i < m_; ++i) {
       if (in_.history.on_for(i) > in_.rules.max_burn_s + kTimeTolerance) {
-        throw std::invalid_argument("history.on_for_s[" + std::to_string(i) + "] = " +
-                                    FormatG(in_.history.on_for(i), 10) +
-                                    " s already exceeds operations.max_burn_s = " +
-                                    FormatG(in_.rules.max_burn_s, 10));
+        throw std::invalid_argument(
+            "history.on_for_s[" + std::to_string(i) + "] = " + FormatG(in_.history.on_for(i), 10) +
+            " s already exceeds operations.max_burn_s = " + FormatG(in_.rules.max_burn_s, 10));
       }
     }
   }
@@ -154,7 +154,8 @@ class Builder {
     for (int i = 0; i < m_; ++i) {
       enc_.on[i].reserve(n_);
       for (int j = 0; j < n_; ++j) {
-        enc_.on[i].push_back(model_.AddVariable(0.0, 1.0, milp::VarType::kBinary, Name("on", i, j)));
+        enc_.on[i].push_back(
+            model_.AddVariable(0.0, 1.0, milp::VarType::kBinary, Name("on", i, j)));
       }
     }
     if (starts) {
@@ -174,8 +175,9 @@ class Builder {
       }
     } else {
       for (int j = 0; j < n_; ++j) {
-        enc_.gamma.push_back(model_.AddContinuous(
-            0.0, std::min<double>(in_.rules.max_simultaneous, m_), prefix_ + "gamma_" + std::to_string(j)));
+        enc_.gamma.push_back(model_.AddContinuous(0.0,
+                                                  std::min<double>(in_.rules.max_simultaneous, m_),
+                                                  prefix_ + "gamma_" + std::to_string(j)));
       }
     }
   }
@@ -205,8 +207,9 @@ class Builder {
         }
         if (!r.allow_burn_across_end && t_[n_] < began + r.min_burn_s - kTimeTolerance) {
           enc_.infeasibility_reasons.push_back(
-              "thruster " + std::to_string(i) + " is on at t0 for " + FormatG(in_.history.on_for(i), 10) +
-              " s and cannot reach the minimum burn of " + FormatG(r.min_burn_s, 10) +
+              "thruster " + std::to_string(i) + " is on at t0 for " +
+              FormatG(in_.history.on_for(i), 10) + " s and cannot reach the minimum burn of " +
+              FormatG(r.min_burn_s, 10) +
               " s before the horizon ends, and burns across the end are not allowed");
           upper_[i][n_ - 1] = 0.0;
         }
@@ -470,9 +473,9 @@ class Builder {
           // Forced on (history) and forced off (window, disabled) at once.
           model_.SetBounds(enc_.on[i][j], 0.0, 0.0);
           Add(LinearExpr(enc_.on[i][j]), 1.0, kInf, Name("conflict", i, j));
-          enc_.infeasibility_reasons.push_back(
-              "thruster " + std::to_string(i) + " must stay on in interval " + std::to_string(j) +
-              " (burn in progress at t0) but is forced off there");
+          enc_.infeasibility_reasons.push_back("thruster " + std::to_string(i) +
+                                               " must stay on in interval " + std::to_string(j) +
+                                               " (burn in progress at t0) but is forced off there");
         }
       }
     }
@@ -513,16 +516,16 @@ int IntervalsSpanning(const std::vector<double>& grid, int a, double duration_s)
 
 void OperationalEncoding::Complete(const Eigen::MatrixXi& pattern, Eigen::VectorXd* x) const {
   if (pattern.rows() != num_thrusters || pattern.cols() != num_intervals) {
-    throw std::invalid_argument("OperationalEncoding::Complete: pattern is " +
-                                std::to_string(pattern.rows()) + "x" +
-                                std::to_string(pattern.cols()) + ", expected " +
-                                std::to_string(num_thrusters) + "x" + std::to_string(num_intervals));
+    throw std::invalid_argument(
+        "OperationalEncoding::Complete: pattern is " + std::to_string(pattern.rows()) + "x" +
+        std::to_string(pattern.cols()) + ", expected " + std::to_string(num_thrusters) + "x" +
+        std::to_string(num_intervals));
   }
   for (int i = 0; i < num_thrusters; ++i) {
     for (int j = 0; j < num_intervals; ++j) {
       const int now = pattern(i, j);
-      const int before = j == 0 ? (i < static_cast<int>(prev_on.size()) ? prev_on[i] : 0)
-                                : pattern(i, j - 1);
+      const int before =
+          j == 0 ? (i < static_cast<int>(prev_on.size()) ? prev_on[i] : 0) : pattern(i, j - 1);
       (*x)[on[i][j].index()] = now;
       if (!start.empty()) (*x)[start[i][j].index()] = std::max(0, now - before);
       if (!stop.empty()) (*x)[stop[i][j].index()] = std::max(0, before - now);

@@ -50,11 +50,11 @@ std::string_view ToString(Encoding encoding);
 Encoding ParseEncoding(std::string_view name);
 
 struct EncodingInput {
-  std::vector<double> grid;           // t_0 < ... < t_N
+  std::vector<double> grid;  // t_0 < ... < t_N
   OperationalRules rules;
-  BoundaryHistory history;            // empty = all off, never fired
+  BoundaryHistory history;  // empty = all off, never fired
   std::vector<ForcedOff> forced_off;
-  std::vector<bool> enabled;          // empty = all enabled; disabled = forced off
+  std::vector<bool> enabled;  // empty = all enabled; disabled = forced off
   int num_thrusters = 0;
   /// Add start indicators (for a per-start objective penalty) even if the
   /// encoding does not need them.

@@ -25,8 +25,10 @@ void AddBudgetRow(double budget, milp::Model* model) {
     const double cost = model->objective_coefficient(v);
     if (cost == 0.0) continue;
     if (cost < 0.0 || model->lower_bound(v) < 0.0) {
-      throw std::invalid_argument("conjunction.cost_budget: the objective has a term that can be "
-                                  "negative (column " + model->variable_name(v) + ")");
+      throw std::invalid_argument(
+          "conjunction.cost_budget: the objective has a term that can be "
+          "negative (column " +
+          model->variable_name(v) + ")");
     }
     objective.AddTerm(v, cost);
   }
@@ -43,7 +45,8 @@ Eigen::Vector3d WindowBounds(const ScheduleProblem& p, const CheckGeometry& k) {
   const WindowSpec& win = p.window;
   const int node = k.map.interval;
   const bool at_node = std::abs(k.t() - p.grid[node]) <= 1e-9 * (p.grid[1] - p.grid[0]);
-  if (!win.enabled() || win.soft || !at_node || node < 1 || k.t() < win.enforce_from_s - kTimeTolerance) {
+  if (!win.enabled() || win.soft || !at_node || node < 1 ||
+      k.t() < win.enforce_from_s - kTimeTolerance) {
     return w;
   }
   const Eigen::MatrixXd c = p.model->EvaluateOutput(k.t()).c;
@@ -97,7 +100,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
     for (int j = 0; j <= nn; ++j) kick.push_back(dyn.Evaluate(p.grid[j]).b * dirs);
   }
   std::optional<internal::ReachLp> reach;
-  if (bound_solver != nullptr) reach.emplace(p, d, kick, cols, bounds, c.cost_budget, *bound_solver);
+  if (bound_solver != nullptr)
+    reach.emplace(p, d, kick, cols, bounds, c.cost_budget, *bound_solver);
   std::vector<Eigen::VectorXd> free(nn + 1);
   free[0] = p.initial_state;
   for (int j = 0; j < nn; ++j) free[j + 1] = d.phi[j] * free[j] + d.drift[j];
@@ -108,7 +112,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
     const CheckGeometry& k = g.checks[kk];
     const int j = k.map.interval;
     s.margin_max_m = std::max(s.margin_max_m, k.margins.maxCoeff());
-    const std::vector<internal::Effect> effects = internal::Effects(p, d, kick, k.map, k.position, cols, bounds);
+    const std::vector<internal::Effect> effects =
+        internal::Effects(p, d, kick, k.map, k.position, cols, bounds);
     const Eigen::Vector3d drift_pos = k.position * k.map.drift + k.position_offset;
     const Eigen::Vector3d r_free = k.position * (k.map.phi * free[j]) + drift_pos;
     const Eigen::Vector3d window = WindowBounds(p, k);
@@ -124,7 +129,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
       const Eigen::Vector3d a = g.polytope.faces.row(f).transpose();
       const double rhs = g.polytope.offsets[f] + k.margins[f] + a.dot(k.secondary);
       auto [lo, hi] = internal::KnapsackRange(effects, a, c.cost_budget);
-      if (reach && a.dot(r_free) + lo < rhs && a.dot(r_free) + hi >= rhs) {  // undecided: ask the LP
+      if (reach && a.dot(r_free) + lo < rhs &&
+          a.dot(r_free) + hi >= rhs) {  // undecided: ask the LP
         const auto [lp_lo, lp_hi] = reach->Range(effects, a);
         lo = std::max(lo, lp_lo);
         hi = std::min(hi, lp_hi);
@@ -163,8 +169,10 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
       // Infeasible by construction; the closest face stays as a hard row so
       // that the model itself is infeasible too.
       s.infeasibility_reasons.push_back(
-          "keep-out at t = " + FormatG(k.t(), 10) + " s: no face of the polytope can be left with margin within "
-          "the cost budget and thrust bounds (the closest is missed by " + FormatG(closest_miss, 10) + " m)");
+          "keep-out at t = " + FormatG(k.t(), 10) +
+          " s: no face of the polytope can be left with margin within "
+          "the cost budget and thrust bounds (the closest is missed by " +
+          FormatG(closest_miss, 10) + " m)");
       faces.push_back(closest);
     }
     KeepOutGroup group;
@@ -173,7 +181,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
     if (faces.size() > 1) {
       ++s.checks_with_binaries;
       for (const Face& f : faces) {
-        w.push_back(model->AddBinary("keep_out_w_" + std::to_string(kk) + "_" + std::to_string(f.f)));
+        w.push_back(
+            model->AddBinary("keep_out_w_" + std::to_string(kk) + "_" + std::to_string(f.f)));
         big_ms.push_back(f.big_m);
       }
       s.num_binaries += static_cast<int>(faces.size());
@@ -185,15 +194,17 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
       const Eigen::Vector3d a = g.polytope.faces.row(faces[q].f).transpose();
       const Eigen::RowVectorXd on_state = a.transpose() * k.position * k.map.phi;
       rows.Begin();
-      for (int col = 0; col < n; ++col) rows.Coef(cols.state[j][col].index(), on_state[col] * cols.scale[col]);
+      for (int col = 0; col < n; ++col)
+        rows.Coef(cols.state[j][col].index(), on_state[col] * cols.scale[col]);
       for (int i = 0; i < m; ++i) {
-        const double coef = cols.impulsive ? on_state.dot(kick[j].col(i))
-                                           : a.dot(k.position * k.map.gamma.col(i));
+        const double coef =
+            cols.impulsive ? on_state.dot(kick[j].col(i)) : a.dot(k.position * k.map.gamma.col(i));
         rows.Coef(cols.thrust[i][j].index(), coef);
       }
       if (!w.empty()) rows.Coef(w[q].index(), faces[q].big_m);
-      group.row_scale.push_back(rows.End(faces[q].rhs - a.dot(drift_pos), kInf,
-                                         "keep_out_" + std::to_string(kk) + "_" + std::to_string(faces[q].f)));
+      group.row_scale.push_back(
+          rows.End(faces[q].rhs - a.dot(drift_pos), kInf,
+                   "keep_out_" + std::to_string(kk) + "_" + std::to_string(faces[q].f)));
       group.faces.push_back(faces[q].f);
       group.rows.push_back(s.num_rows++);  // relative to the buffered block, fixed below
       group.binaries.push_back(w.empty() ? -1 : w[q].index());
@@ -223,7 +234,8 @@ KeepOutStats AddKeepOut(const ScheduleProblem& p, const dynamics::DiscreteModel&
 void CompleteKeepOut(const milp::LpData& lp, const KeepOutStats& stats, Eigen::VectorXd* x) {
   if (x->size() != lp.num_cols()) {
     throw std::invalid_argument("CompleteKeepOut: the vector has " + std::to_string(x->size()) +
-                                " entries, the model " + std::to_string(lp.num_cols()) + " columns");
+                                " entries, the model " + std::to_string(lp.num_cols()) +
+                                " columns");
   }
   for (const KeepOutGroup& g : stats.groups) {
     for (int w : g.binaries) {

@@ -50,7 +50,7 @@ namespace thrustsched::transcription {
 
 /// The transcription's columns the keep-out rows are written on.
 struct KeepOutColumns {
-  std::vector<std::vector<milp::Variable>> state;   // [node][component], x = scale .* column
+  std::vector<std::vector<milp::Variable>> state;  // [node][component], x = scale .* column
   Eigen::VectorXd scale;
   /// [thruster][interval] on-off binaries, or [thruster][node] impulses (m/s).
   std::vector<std::vector<milp::Variable>> thrust;
@@ -61,28 +61,28 @@ struct KeepOutColumns {
 /// starts and heuristics): face j is enforced where binaries[j] is 0.
 struct KeepOutGroup {
   double t = 0.0;
-  std::vector<int> faces;        // polytope face of each row
-  std::vector<int> rows;         // row index in the model
-  std::vector<int> binaries;     // column index of w (-1: single face, no binary)
+  std::vector<int> faces;            // polytope face of each row
+  std::vector<int> rows;             // row index in the model
+  std::vector<int> binaries;         // column index of w (-1: single face, no binary)
   std::vector<double> free_slack_m;  // a_j^T r_p - rhs_j along the thrust-free path (m)
   std::vector<double> row_scale;     // the row is (its value in metres) times this
 };
 
 struct KeepOutStats {
   int num_checks = 0;
-  int checks_clear = 0;          // a face holds for every reachable position: no row
-  int checks_single_face = 0;    // one possible face: one row, no binary
+  int checks_clear = 0;        // a face holds for every reachable position: no row
+  int checks_single_face = 0;  // one possible face: one row, no binary
   int checks_with_binaries = 0;
-  int faces_impossible = 0;      // faces no reachable position satisfies (dropped)
+  int faces_impossible = 0;  // faces no reachable position satisfies (dropped)
   int num_binaries = 0;
-  int num_rows = 0;              // keep-out rows (the budget row not counted)
+  int num_rows = 0;  // keep-out rows (the budget row not counted)
   double big_m_min_m = std::numeric_limits<double>::quiet_NaN();
   double big_m_median_m = std::numeric_limits<double>::quiet_NaN();
   double big_m_max_m = std::numeric_limits<double>::quiet_NaN();
   double cost_budget = std::numeric_limits<double>::infinity();  // inf: no budget row
-  double threshold = 0.0;        // eps'
-  double quantile = 0.0;         // Phi^-1(1 - eps')
-  double margin_max_m = 0.0;     // largest c_kj
+  double threshold = 0.0;                                        // eps'
+  double quantile = 0.0;                                         // Phi^-1(1 - eps')
+  double margin_max_m = 0.0;                                     // largest c_kj
   double covariance_min_eigenvalue = 0.0;  // as given, before any repair (m^2, EffectiveCovariance)
   bool covariance_repaired = false;
   std::vector<std::string> infeasibility_reasons;
@@ -105,8 +105,9 @@ void CompleteKeepOut(const milp::LpData& lp, const KeepOutStats& stats, Eigen::V
 ///         or no finite big-M exists (an unbounded thrust column and no
 ///         cost_budget; the message says which field to set).
 KeepOutStats AddKeepOut(const ScheduleProblem& problem, const dynamics::DiscreteModel& discrete,
-                        const dynamics::DiscretizationOptions& options, const KeepOutColumns& columns,
-                        milp::Model* model, const milp::Solver* bound_solver = nullptr);
+                        const dynamics::DiscretizationOptions& options,
+                        const KeepOutColumns& columns, milp::Model* model,
+                        const milp::Solver* bound_solver = nullptr);
 
 }  // namespace thrustsched::transcription
 

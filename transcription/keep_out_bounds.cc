@@ -18,7 +18,8 @@ struct Item {
 // coefficient per unit cost first. -inf if a column without bound can go down.
 double KnapsackMin(std::vector<Item> items, double budget) {
   auto ratio = [](const Item& x) { return x.cost > 0.0 ? x.coef / x.cost : -kInf; };
-  std::sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return ratio(a) < ratio(b); });
+  std::sort(items.begin(), items.end(),
+            [&](const Item& a, const Item& b) { return ratio(a) < ratio(b); });
   double total = 0.0, left = budget;
   for (const Item& x : items) {
     if (left <= 0.0 && x.cost > 0.0) break;
@@ -32,8 +33,8 @@ double KnapsackMin(std::vector<Item> items, double budget) {
 
 }  // namespace
 
-std::pair<double, double> KnapsackRange(const std::vector<Effect>& effects, const Eigen::VectorXd& a,
-                                        double budget) {
+std::pair<double, double> KnapsackRange(const std::vector<Effect>& effects,
+                                        const Eigen::VectorXd& a, double budget) {
   std::vector<Item> down, up;
   for (const Effect& f : effects) {
     const double coef = a.dot(f.e);
@@ -42,7 +43,6 @@ std::pair<double, double> KnapsackRange(const std::vector<Effect>& effects, cons
   }
   return {KnapsackMin(down, budget), -KnapsackMin(up, budget)};
 }
-
 
 ThrustBounds ReadBounds(const KeepOutColumns& cols, const milp::Model& model) {
   ThrustBounds b;
@@ -59,7 +59,8 @@ ThrustBounds ReadBounds(const KeepOutColumns& cols, const milp::Model& model) {
 
 std::vector<Effect> Effects(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
                             const std::vector<Eigen::MatrixXd>& kick, const PartialMap& at,
-                            const Eigen::MatrixXd& map, const KeepOutColumns& cols, const ThrustBounds& b) {
+                            const Eigen::MatrixXd& map, const KeepOutColumns& cols,
+                            const ThrustBounds& b) {
   std::vector<Effect> out;
   const int m = p.thrusters.size();
   const int last = at.interval;
@@ -68,7 +69,9 @@ std::vector<Effect> Effects(const ScheduleProblem& p, const dynamics::DiscreteMo
     out.push_back({cols.thrust[i][slot].index(), b.cost[i][slot], b.upper[i][slot], e});
   };
   for (int i = 0; i < m; ++i) {
-    push(i, last, cols.impulsive ? Eigen::VectorXd(r * kick[last].col(i)) : Eigen::VectorXd(map * at.gamma.col(i)));
+    push(i, last,
+         cols.impulsive ? Eigen::VectorXd(r * kick[last].col(i))
+                        : Eigen::VectorXd(map * at.gamma.col(i)));
   }
   for (int j = last - 1; j >= 0; --j) {
     if (cols.impulsive) {
@@ -83,8 +86,8 @@ std::vector<Effect> Effects(const ScheduleProblem& p, const dynamics::DiscreteMo
 }
 
 ReachLp::ReachLp(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
-                 const std::vector<Eigen::MatrixXd>& kick, const KeepOutColumns& cols, const ThrustBounds& b,
-                 double budget, const milp::Solver& solver)
+                 const std::vector<Eigen::MatrixXd>& kick, const KeepOutColumns& cols,
+                 const ThrustBounds& b, double budget, const milp::Solver& solver)
     : solver_(solver) {
   const int n = p.model->num_states();
   const int nn = p.num_intervals();
@@ -95,10 +98,12 @@ ReachLp::ReachLp(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
   end.phi = d.phi[nn - 1];
   end.gamma = d.gamma[nn - 1];
   end.drift = d.drift[nn - 1];
-  std::vector<Effect> final_effects = Effects(p, d, kick, end, Eigen::MatrixXd::Identity(n, n), cols, b);
+  std::vector<Effect> final_effects =
+      Effects(p, d, kick, end, Eigen::MatrixXd::Identity(n, n), cols, b);
   if (cols.impulsive) {
     for (int i = 0; i < p.thrusters.size(); ++i) {
-      final_effects.push_back({cols.thrust[i][nn].index(), b.cost[i][nn], b.upper[i][nn], kick[nn].col(i)});
+      final_effects.push_back(
+          {cols.thrust[i][nn].index(), b.cost[i][nn], b.upper[i][nn], kick[nn].col(i)});
     }
   }
   Eigen::VectorXd free = p.initial_state;
@@ -123,7 +128,8 @@ ReachLp::ReachLp(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
       if (std::isinf(tol)) continue;
       milp::LinearExpr row;
       for (const Effect& f : final_effects) row.AddTerm(vars[lp_column_[f.column]], f.e[c] / s[c]);
-      model.AddConstraint(row, (term.target[c] - tol - free[c]) / s[c], (term.target[c] + tol - free[c]) / s[c]);
+      model.AddConstraint(row, (term.target[c] - tol - free[c]) / s[c],
+                          (term.target[c] + tol - free[c]) / s[c]);
     }
   }
   if (std::isfinite(budget)) {
@@ -134,7 +140,8 @@ ReachLp::ReachLp(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
   lp_ = model.ToLpData();
 }
 
-std::pair<double, double> ReachLp::Range(const std::vector<Effect>& effects, const Eigen::VectorXd& a) const {
+std::pair<double, double> ReachLp::Range(const std::vector<Effect>& effects,
+                                         const Eigen::VectorXd& a) const {
   milp::LpData lp = lp_;
   lp.col_cost.setZero();
   for (const Effect& f : effects) {

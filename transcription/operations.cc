@@ -27,18 +27,20 @@ bool CheckDuration(const char* field, double v, bool allow_inf, std::string* err
 
 bool OperationalRules::IsValid(std::string* error) const {
   if (max_simultaneous < 1) {
-    return Fail(error, "operations.max_simultaneous must be >= 1, got " +
-                           std::to_string(max_simultaneous));
+    return Fail(
+        error, "operations.max_simultaneous must be >= 1, got " + std::to_string(max_simultaneous));
   }
   if (!CheckDuration("min_burn_s", min_burn_s, false, error)) return false;
   if (!CheckDuration("min_off_same_s", min_off_same_s, false, error)) return false;
   if (!CheckDuration("min_gap_other_s", min_gap_other_s, false, error)) return false;
   if (std::isnan(max_burn_s) || max_burn_s <= 0.0) {
-    return Fail(error, "operations.max_burn_s must be > 0 (or infinite), got " + FormatG(max_burn_s, 10));
+    return Fail(error,
+                "operations.max_burn_s must be > 0 (or infinite), got " + FormatG(max_burn_s, 10));
   }
   if (max_burn_s + kTimeTolerance < min_burn_s) {
     return Fail(error, "operations.max_burn_s (" + FormatG(max_burn_s, 10) +
-                           ") is smaller than operations.min_burn_s (" + FormatG(min_burn_s, 10) + ")");
+                           ") is smaller than operations.min_burn_s (" + FormatG(min_burn_s, 10) +
+                           ")");
   }
   return true;
 }
@@ -53,13 +55,13 @@ BoundaryHistory BoundaryHistory::AllOff(int num_thrusters) {
 bool BoundaryHistory::IsValid(int num_thrusters, std::string* error) const {
   if (!on_for_s.empty() && static_cast<int>(on_for_s.size()) != num_thrusters) {
     return Fail(error, "history.on_for_s has " + std::to_string(on_for_s.size()) +
-                           " entries, expected one per thruster (" +
-                           std::to_string(num_thrusters) + ")");
+                           " entries, expected one per thruster (" + std::to_string(num_thrusters) +
+                           ")");
   }
   if (!off_for_s.empty() && static_cast<int>(off_for_s.size()) != num_thrusters) {
     return Fail(error, "history.off_for_s has " + std::to_string(off_for_s.size()) +
-                           " entries, expected one per thruster (" +
-                           std::to_string(num_thrusters) + ")");
+                           " entries, expected one per thruster (" + std::to_string(num_thrusters) +
+                           ")");
   }
   for (size_t i = 0; i < on_for_s.size(); ++i) {
     if (!std::isfinite(on_for_s[i]) || on_for_s[i] < 0.0) {

@@ -39,12 +39,12 @@ namespace thrustsched::transcription {
 inline constexpr double kTimeTolerance = 1e-6;
 
 struct OperationalRules {
-  int max_simultaneous = 1;                  // K >= 1
-  double min_burn_s = 0.0;                   // T_l >= 0
+  int max_simultaneous = 1;  // K >= 1
+  double min_burn_s = 0.0;   // T_l >= 0
   double max_burn_s = std::numeric_limits<double>::infinity();
-  double min_off_same_s = 0.0;               // same thruster, >= 0
-  double min_gap_other_s = 0.0;              // different thrusters, >= 0
-  int max_burns_per_thruster = -1;           // < 0: no limit
+  double min_off_same_s = 0.0;      // same thruster, >= 0
+  double min_gap_other_s = 0.0;     // different thrusters, >= 0
+  int max_burns_per_thruster = -1;  // < 0: no limit
   /// A burn on in the last interval may be shorter than min_burn_s (it is
   /// assumed to continue in the next horizon, whose history carries it).
   bool allow_burn_across_end = false;
@@ -64,8 +64,8 @@ struct BoundaryHistory {
   static BoundaryHistory AllOff(int num_thrusters);
   bool IsValid(int num_thrusters, std::string* error) const;
   bool is_on(int thruster) const;
-  double on_for(int thruster) const;    // 0 when off or unspecified
-  double off_for(int thruster) const;   // +inf when unspecified
+  double on_for(int thruster) const;   // 0 when off or unspecified
+  double off_for(int thruster) const;  // +inf when unspecified
 };
 
 /// Thruster `thruster` may not fire on [start_s, end_s) (failure, eclipse, blackout).
@@ -85,11 +85,11 @@ struct Burn {
 
 /// One broken rule, for reports.
 struct RuleViolation {
-  std::string rule;      // "max_simultaneous", "min_burn", "max_burn", "min_off_same",
-                         // "min_gap_other", "forced_off", "max_burns", "horizon", "overlap"
-  int thruster;          // -1 if not specific
-  double time_s;         // where it happens
-  std::string message;   // human-readable, with the numbers
+  std::string rule;     // "max_simultaneous", "min_burn", "max_burn", "min_off_same",
+                        // "min_gap_other", "forced_off", "max_burns", "horizon", "overlap"
+  int thruster;         // -1 if not specific
+  double time_s;        // where it happens
+  std::string message;  // human-readable, with the numbers
 };
 
 }  // namespace thrustsched::transcription

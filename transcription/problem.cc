@@ -53,7 +53,8 @@ bool ScheduleProblem::IsValid(std::string* error) const {
   }
   for (size_t j = 0; j < grid.size(); ++j) {
     if (!std::isfinite(grid[j])) {
-      return Fail(error, "problem.grid[" + std::to_string(j) + "] is not finite: " + FormatG(grid[j], 10));
+      return Fail(error,
+                  "problem.grid[" + std::to_string(j) + "] is not finite: " + FormatG(grid[j], 10));
     }
     if (j > 0 && !(grid[j] > grid[j - 1])) {
       return Fail(error, "problem.grid is not strictly increasing at index " + std::to_string(j) +
@@ -75,8 +76,8 @@ bool ScheduleProblem::IsValid(std::string* error) const {
                              " is not a thruster index (0.." + std::to_string(m - 1) + ")");
     }
     if (std::isnan(f.start_s) || std::isnan(f.end_s) || !(f.end_s > f.start_s)) {
-      return Fail(error, where + " must have start_s < end_s, got [" + FormatG(f.start_s, 10) + ", " +
-                             FormatG(f.end_s, 10) + ")");
+      return Fail(error, where + " must have start_s < end_s, got [" + FormatG(f.start_s, 10) +
+                             ", " + FormatG(f.end_s, 10) + ")");
     }
   }
   // Window.
@@ -139,7 +140,8 @@ bool ScheduleProblem::IsValid(std::string* error) const {
       for (int i = 0; i < n; ++i) {
         if (std::isnan(terminal.tolerance[i]) || terminal.tolerance[i] < 0.0) {
           return Fail(error, "terminal.tolerance[" + std::to_string(i) +
-                                 "] must be >= 0 (or infinite), got " + FormatG(terminal.tolerance[i], 10));
+                                 "] must be >= 0 (or infinite), got " +
+                                 FormatG(terminal.tolerance[i], 10));
         }
       }
       break;
@@ -153,11 +155,13 @@ bool ScheduleProblem::IsValid(std::string* error) const {
       }
       for (double t : terminal.lookahead_s) {
         if (!std::isfinite(t) || t < 0.0) {
-          return Fail(error, "terminal.lookahead_s entries must be finite and >= 0, got " + FormatG(t, 10));
+          return Fail(
+              error, "terminal.lookahead_s entries must be finite and >= 0, got " + FormatG(t, 10));
         }
       }
       if (!(terminal.margin >= 0.0 && terminal.margin < 1.0)) {
-        return Fail(error, "terminal.margin must be in [0, 1), got " + FormatG(terminal.margin, 10));
+        return Fail(error,
+                    "terminal.margin must be in [0, 1), got " + FormatG(terminal.margin, 10));
       }
       if (window.outputs.size() < 2) {
         return Fail(error, "terminal station-keeping sets need a window on two outputs");
@@ -179,7 +183,8 @@ bool ScheduleProblem::IsValid(std::string* error) const {
     }
     for (double v : max_impulse_per_thruster_m_s) {
       if (std::isnan(v) || v < 0.0) {
-        return Fail(error, "problem.max_impulse_per_thruster_m_s entries must be >= 0, got " + FormatG(v, 10));
+        return Fail(error, "problem.max_impulse_per_thruster_m_s entries must be >= 0, got " +
+                               FormatG(v, 10));
       }
     }
   }
@@ -194,17 +199,20 @@ bool ScheduleProblem::IsValid(std::string* error) const {
     auto inside = [&](double t) { return std::isnan(t) || (t >= t0 - tol && t <= tf + tol); };
     if (!inside(conjunction->state_time_s)) {
       return Fail(error, "conjunction.state_time_s " + FormatG(conjunction->state_time_s, 10) +
-                             " s is outside the horizon [" + FormatG(t0, 10) + ", " + FormatG(tf, 10) + "] s");
+                             " s is outside the horizon [" + FormatG(t0, 10) + ", " +
+                             FormatG(tf, 10) + "] s");
     }
     if (!inside(conjunction->check_start_s) || !inside(conjunction->check_end_s)) {
-      return Fail(error, "conjunction check window [" + FormatG(conjunction->check_start_s, 10) + ", " +
-                             FormatG(conjunction->check_end_s, 10) + "] s is not inside the horizon [" +
-                             FormatG(t0, 10) + ", " + FormatG(tf, 10) + "] s");
+      return Fail(error, "conjunction check window [" + FormatG(conjunction->check_start_s, 10) +
+                             ", " + FormatG(conjunction->check_end_s, 10) +
+                             "] s is not inside the horizon [" + FormatG(t0, 10) + ", " +
+                             FormatG(tf, 10) + "] s");
     }
     const double a = std::isnan(conjunction->check_start_s) ? t0 : conjunction->check_start_s;
     const double b = std::isnan(conjunction->check_end_s) ? tf : conjunction->check_end_s;
     if (!(b > a)) {
-      return Fail(error, "conjunction check window [" + FormatG(a, 10) + ", " + FormatG(b, 10) + "] s is empty");
+      return Fail(error, "conjunction check window [" + FormatG(a, 10) + ", " + FormatG(b, 10) +
+                             "] s is empty");
     }
   }
   return true;

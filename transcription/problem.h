@@ -38,8 +38,8 @@ namespace thrustsched::transcription {
 /// nodes j >= 1 with t_j >= enforce_from_s (the initial node is data, not a
 /// decision, so it is never constrained; the checker still reports it).
 struct WindowSpec {
-  std::vector<int> outputs;           // indices into the model outputs
-  std::vector<double> half_widths;    // > 0, output units (m or rad)
+  std::vector<int> outputs;         // indices into the model outputs
+  std::vector<double> half_widths;  // > 0, output units (m or rad)
   double enforce_from_s = -std::numeric_limits<double>::infinity();
   /// Soft window: violations allowed at a cost of `soft_penalty` objective
   /// units per (violation / half_width) per node and output.
@@ -57,10 +57,10 @@ struct WindowSpec {
 };
 
 enum class TerminalKind {
-  kFree,                 // no terminal constraint
-  kFixedState,           // x_N == target
-  kStateBox,             // |x_N - target| <= tolerance componentwise (inf = free)
-  kStationKeepingSets,   // thesis ch. 5 end-of-horizon polytopes (corrected)
+  kFree,                // no terminal constraint
+  kFixedState,          // x_N == target
+  kStateBox,            // |x_N - target| <= tolerance componentwise (inf = free)
+  kStationKeepingSets,  // thesis ch. 5 end-of-horizon polytopes (corrected)
 };
 
 struct TerminalSpec {
@@ -101,10 +101,10 @@ enum class InputMode {
 struct ScheduleProblem {
   std::shared_ptr<const dynamics::LinearModel> model;
   dynamics::ThrusterSet thrusters;
-  std::vector<double> grid;          // t_0 < ... < t_N (s since model epoch)
-  Eigen::VectorXd initial_state;     // x(t_0), model state units
+  std::vector<double> grid;       // t_0 < ... < t_N (s since model epoch)
+  Eigen::VectorXd initial_state;  // x(t_0), model state units
   OperationalRules rules;
-  BoundaryHistory history;           // empty vectors = all off, never fired
+  BoundaryHistory history;  // empty vectors = all off, never fired
   std::vector<ForcedOff> forced_off;
   WindowSpec window;
   TerminalSpec terminal;

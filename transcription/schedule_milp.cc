@@ -80,7 +80,8 @@ void ComputeTotals(const dynamics::ThrusterSet& thrusters, Schedule* s) {
   }
 }
 
-std::vector<Burn> BurnsFromPattern(const Eigen::MatrixXi& pattern, const std::vector<double>& grid) {
+std::vector<Burn> BurnsFromPattern(const Eigen::MatrixXi& pattern,
+                                   const std::vector<double>& grid) {
   std::vector<Burn> burns;
   for (int i = 0; i < pattern.rows(); ++i) {
     int j = 0;
@@ -168,7 +169,8 @@ void ScheduleMilp::Build() {
     in.forced_off = problem_.forced_off;
     in.num_thrusters = problem_.thrusters.size();
     in.enabled.resize(in.num_thrusters);
-    for (int i = 0; i < in.num_thrusters; ++i) in.enabled[i] = problem_.thrusters.thruster(i).enabled;
+    for (int i = 0; i < in.num_thrusters; ++i)
+      in.enabled[i] = problem_.thrusters.thruster(i).enabled;
     in.need_starts = problem_.objective.burn_start_penalty > 0.0;
     encoding_ = AddOperationalConstraints(&model_, in, options_.encoding);
     reasons_ = encoding_.infeasibility_reasons;
@@ -179,11 +181,11 @@ void ScheduleMilp::Build() {
   if (mask.size() > 0) {
     if (problem_.input_mode != InputMode::kOnOff || mask.rows() != problem_.thrusters.size() ||
         mask.cols() != problem_.num_intervals()) {
-      throw std::invalid_argument(
-          "ScheduleMilp: free_slots must be thrusters x intervals (" +
-          std::to_string(problem_.thrusters.size()) + " x " +
-          std::to_string(problem_.num_intervals()) + ") in on-off mode, got " +
-          std::to_string(mask.rows()) + " x " + std::to_string(mask.cols()));
+      throw std::invalid_argument("ScheduleMilp: free_slots must be thrusters x intervals (" +
+                                  std::to_string(problem_.thrusters.size()) + " x " +
+                                  std::to_string(problem_.num_intervals()) +
+                                  ") in on-off mode, got " + std::to_string(mask.rows()) + " x " +
+                                  std::to_string(mask.cols()));
     }
     // An always-off slot, and the start/stop indicators between two
     // always-off slots: any pattern the free slots allow keeps them at 0
@@ -234,7 +236,8 @@ std::vector<std::vector<PartialMap>> InterSampleMaps(const ScheduleProblem& p,
     const double h = p.grid[j + 1] - p.grid[j];
     for (int k = 1; k <= r; ++k) times.push_back(p.grid[j] + h * k / (r + 1));
   }
-  for (PartialMap& q : PartialMaps(*p.model, p.thrusters.AccelerationMatrix(), p.grid, times, opt)) {
+  for (PartialMap& q :
+       PartialMaps(*p.model, p.thrusters.AccelerationMatrix(), p.grid, times, opt)) {
     out[q.interval].push_back(std::move(q));
   }
   return out;
@@ -278,7 +281,8 @@ void ScheduleMilp::BuildSparse() {
   const std::vector<std::string> names = model.state_names();
   for (int j = 0; j <= nn; ++j) {
     for (int c = 0; c < n; ++c) {
-      state_[j].push_back(model_.AddContinuous(-kInf, kInf, "x_" + names[c] + "_" + std::to_string(j)));
+      state_[j].push_back(
+          model_.AddContinuous(-kInf, kInf, "x_" + names[c] + "_" + std::to_string(j)));
     }
   }
   for (int c = 0; c < n; ++c) {
@@ -339,14 +343,14 @@ void ScheduleMilp::BuildSparse() {
   if (p.window.enabled()) {
     const auto partials = InterSampleMaps(p, options_.discretisation);
     auto add_window_row = [&](const Eigen::RowVectorXd& cx, int node_for_x,
-                              const Eigen::RowVectorXd& cu, int interval_for_u, double shift,
-                              int k, int node, int sub) {
+                              const Eigen::RowVectorXd& cu, int interval_for_u, double shift, int k,
+                              int node, int sub) {
       const double w = p.window.half_widths[k] * (1.0 - p.window.margin);  // planned box
       milp::Variable slack;
       if (p.window.soft) {
-        slack = model_.AddContinuous(0.0, kInf,
-                                     "viol_" + std::to_string(k) + "_" + std::to_string(node) +
-                                         "_" + std::to_string(sub));
+        slack = model_.AddContinuous(
+            0.0, kInf,
+            "viol_" + std::to_string(k) + "_" + std::to_string(node) + "_" + std::to_string(sub));
         slacks_.push_back({slack, node, k, sub});
       }
       const std::string tag = "win_" + std::to_string(k) + "_" + std::to_string(node) +
@@ -426,7 +430,7 @@ void ScheduleMilp::BuildCondensed() {
   // x_j = base_j + G_j u over the free on-columns (all of them without a
   // free_slots mask), stacked in time order: G_j has nonzeros in the columns
   // of the intervals before j only. A fixed slot (always off) adds nothing.
-  std::vector<milp::Variable> cols;  // the free on-columns, in time order
+  std::vector<milp::Variable> cols;                            // the free on-columns, in time order
   std::vector<int> first_col(static_cast<size_t>(nn) + 1, 0);  // of interval j
   for (int j = 0; j < nn; ++j) {
     first_col[static_cast<size_t>(j)] = static_cast<int>(cols.size());
@@ -442,7 +446,8 @@ void ScheduleMilp::BuildCondensed() {
   auto add_row = [&](const Eigen::RowVectorXd& coef, int used_cols, double shift, double lo,
                      double hi, const std::string& name, milp::Variable slack, double slack_coef) {
     rows.Begin();
-    for (int col = 0; col < used_cols; ++col) rows.Coef(cols[static_cast<size_t>(col)].index(), coef[col]);
+    for (int col = 0; col < used_cols; ++col)
+      rows.Coef(cols[static_cast<size_t>(col)].index(), coef[col]);
     if (slack.is_valid()) rows.Coef(slack.index(), slack_coef);
     rows.End(std::isfinite(lo) ? lo - shift : lo, std::isfinite(hi) ? hi - shift : hi, name);
   };
@@ -456,7 +461,8 @@ void ScheduleMilp::BuildCondensed() {
       return;
     }
     milp::Variable slack = model_.AddContinuous(
-        0.0, kInf, "viol_" + std::to_string(k) + "_" + std::to_string(node) + "_" + std::to_string(sub));
+        0.0, kInf,
+        "viol_" + std::to_string(k) + "_" + std::to_string(node) + "_" + std::to_string(sub));
     slacks_.push_back({slack, node, k, sub});
     add_row(coef / w, used_cols, shift / w, -kInf, 1.0, tag + "_hi", slack, -1.0);
     add_row(coef / w, used_cols, shift / w, -1.0, kInf, tag + "_lo", slack, 1.0);
@@ -464,10 +470,12 @@ void ScheduleMilp::BuildCondensed() {
 
   // Gamma_j's columns of the free slots of interval j.
   auto gamma_free = [&](const Eigen::MatrixXd& gamma, int j) {
-    Eigen::MatrixXd out(gamma.rows(), first_col[static_cast<size_t>(j) + 1] - first_col[static_cast<size_t>(j)]);
+    Eigen::MatrixXd out(gamma.rows(),
+                        first_col[static_cast<size_t>(j) + 1] - first_col[static_cast<size_t>(j)]);
     int k = 0;
     for (int i = 0; i < m; ++i) {
-      if (options_.free_slots.size() == 0 || options_.free_slots(i, j) != 0) out.col(k++) = gamma.col(i);
+      if (options_.free_slots.size() == 0 || options_.free_slots(i, j) != 0)
+        out.col(k++) = gamma.col(i);
     }
     return out;
   };
@@ -495,8 +503,8 @@ void ScheduleMilp::BuildCondensed() {
           const Eigen::RowVectorXd cphi = c.row(o) * q.phi;
           coef.head(used) = cphi * g.leftCols(used);
           coef.tail(here) = c.row(o) * qg;
-          add_window(coef, used + here, cphi.dot(base) + c.row(o).dot(q.drift), static_cast<int>(k), j,
-                     static_cast<int>(s) + 1);
+          add_window(coef, used + here, cphi.dot(base) + c.row(o).dot(q.drift), static_cast<int>(k),
+                     j, static_cast<int>(s) + 1);
         }
       }
     }
@@ -590,8 +598,8 @@ void ScheduleMilp::AddObjective() {
   model_.Minimize(obj);
 }
 
-std::vector<Eigen::VectorXd> ScheduleMilp::PropagateDiscrete(const Eigen::MatrixXi& pattern,
-                                                             const Eigen::MatrixXd& impulses) const {
+std::vector<Eigen::VectorXd> ScheduleMilp::PropagateDiscrete(
+    const Eigen::MatrixXi& pattern, const Eigen::MatrixXd& impulses) const {
   const ScheduleProblem& p = problem_;
   const int nn = p.num_intervals();
   std::vector<Eigen::VectorXd> x(nn + 1);
@@ -599,12 +607,13 @@ std::vector<Eigen::VectorXd> ScheduleMilp::PropagateDiscrete(const Eigen::Matrix
   Eigen::MatrixXd directions;
   if (p.input_mode == InputMode::kImpulsive) {
     directions.resize(3, p.thrusters.size());
-    for (int i = 0; i < p.thrusters.size(); ++i) directions.col(i) = p.thrusters.thruster(i).direction;
+    for (int i = 0; i < p.thrusters.size(); ++i)
+      directions.col(i) = p.thrusters.thruster(i).direction;
   }
   for (int j = 0; j < nn; ++j) {
     if (p.input_mode == InputMode::kOnOff) {
-      x[j + 1] = discrete_.phi[j] * x[j] +
-                 discrete_.gamma[j] * pattern.col(j).cast<double>() + discrete_.drift[j];
+      x[j + 1] = discrete_.phi[j] * x[j] + discrete_.gamma[j] * pattern.col(j).cast<double>() +
+                 discrete_.drift[j];
     } else {
       const Eigen::VectorXd kick = p.model->Evaluate(p.grid[j]).b * directions * impulses.col(j);
       x[j + 1] = discrete_.phi[j] * (x[j] + kick) + discrete_.drift[j];
@@ -682,7 +691,8 @@ Eigen::VectorXd ScheduleMilp::StartFromPattern(const Eigen::MatrixXi& pattern) c
   encoding_.Complete(pattern, &x);
   const std::vector<Eigen::VectorXd> states = PropagateDiscrete(pattern, Eigen::MatrixXd());
   for (size_t j = 0; j < state_.size(); ++j) {
-    for (size_t c = 0; c < state_[j].size(); ++c) x[state_[j][c].index()] = states[j][c] / scale_[c];
+    for (size_t c = 0; c < state_[j].size(); ++c)
+      x[state_[j][c].index()] = states[j][c] / scale_[c];
   }
   // Soft-window slacks: each appears in two rows lo <= a x + coef * slack <=
   // hi (coef > 0 in the lower-bound row, < 0 in the upper-bound row); raise

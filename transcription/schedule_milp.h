@@ -73,7 +73,7 @@ struct BuildOptions {
 
 struct BuildStats {
   double discretise_seconds = 0.0;
-  double build_seconds = 0.0;   // rows + columns + freeze into LpData
+  double build_seconds = 0.0;  // rows + columns + freeze into LpData
   int num_binaries = 0;
   int num_columns = 0;
   int num_rows = 0;
@@ -182,7 +182,7 @@ class ScheduleMilp {
   std::vector<std::string> reasons_;
   double objective_step_ = 0.0;
   std::optional<KeepOutStats> keep_out_;
-  Eigen::VectorXd scale_;                          // state scale S (ones if !scale)
+  Eigen::VectorXd scale_;                           // state scale S (ones if !scale)
   std::vector<std::vector<milp::Variable>> state_;  // sparse: [node][component], scaled
   std::vector<std::vector<milp::Variable>> dv_;     // impulsive: [thruster][node]
   std::vector<milp::Variable> final_state_;         // impulsive sparse: after the last impulse

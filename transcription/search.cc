@@ -26,9 +26,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The schedule MILP restricted to a set of free slots, condensed over them.
 struct Restriction {
   ScheduleMilp milp;
-  milp::LpData small;      // without its fixed columns
-  std::vector<int> kept;   // column of `milp` of each column of `small`
-  bool feasible = true;    // false: the fixed slots alone break a row
+  milp::LpData small;     // without its fixed columns
+  std::vector<int> kept;  // column of `milp` of each column of `small`
+  bool feasible = true;   // false: the fixed slots alone break a row
 };
 
 class Search {
@@ -175,9 +175,9 @@ class Search {
     dual_ = milp::SafeDualBound(lp_, relaxation_.row_duals);
     if (report_ != nullptr) report_->lp_bound = dual_.bound;
     RaiseBound(dual_.bound);
-    Step("LP bound " + FormatG(dual_.bound, 8) + (bound_ > dual_.bound ? " (" + FormatG(bound_, 8) +
-                                                  " on the objective step)"
-                                            : std::string()) +
+    Step("LP bound " + FormatG(dual_.bound, 8) +
+         (bound_ > dual_.bound ? " (" + FormatG(bound_, 8) + " on the objective step)"
+                               : std::string()) +
          " by interior point in " + FormatG(Elapsed() - t0, 3) + " s");
     Report(milp::SolvePhase::kPresolve, false);
     return true;
@@ -306,8 +306,8 @@ class Search {
     Restriction r = Restrict(mask);
     const double before = objective_;
     // Only schedules better than the incumbent by a step count.
-    const double cutoff = objective_ - std::max(step_, 0.0) +
-                          1e-7 * std::max(1.0, std::abs(objective_));
+    const double cutoff =
+        objective_ - std::max(step_, 0.0) + 1e-7 * std::max(1.0, std::abs(objective_));
     AddObjectiveCutoff(&r.small, cutoff);
     const double t0 = Elapsed();
     milp::SolveResult s;
@@ -318,16 +318,16 @@ class Search {
     if (!r.feasible || s.status == milp::SolveStatus::kInfeasible) {
       // No schedule better than the incumbent: it is optimal.
       bound_ = objective_;
-      Step(what + ": no better schedule (" + FormatG(Elapsed() - t0, 3) + " s): the incumbent is "
+      Step(what + ": no better schedule (" + FormatG(Elapsed() - t0, 3) +
+           " s): the incumbent is "
            "optimal");
       return true;
     }
     if (s.has_solution()) Offer(Lift(r, s.x), "the exact restricted MILP");
     // Every better schedule lies in the restriction: the bound is the
     // smaller of the old incumbent and the restricted solve's bound.
-    const double restricted_bound = s.has_solution() || std::isfinite(s.best_bound)
-                                        ? s.best_bound
-                                        : -kInf;
+    const double restricted_bound =
+        s.has_solution() || std::isfinite(s.best_bound) ? s.best_bound : -kInf;
     if (s.status == milp::SolveStatus::kOptimal) {
       bound_ = std::max(bound_, std::min(before, objective_));
     } else if (std::isfinite(restricted_bound)) {
@@ -411,9 +411,10 @@ class Search {
         why = "; time limit";
       }
     }
-    r.detail = "search: " + detail_ + why +
-               (solver_detail_.empty() ? std::string()
-                                       : "; " + std::string(solver_.name()) + ": " + solver_detail_);
+    r.detail =
+        "search: " + detail_ + why +
+        (solver_detail_.empty() ? std::string()
+                                : "; " + std::string(solver_.name()) + ": " + solver_detail_);
     r.wall_seconds = Elapsed();
     return r;
   }
@@ -449,12 +450,15 @@ bool SearchOptions::IsValid(std::string* error) const {
   if (!(candidate_threshold > 0.0 && candidate_threshold < 1.0)) {
     return fail("candidate_threshold must be in (0, 1), got " + FormatG(candidate_threshold, 6));
   }
-  if (neighbourhood < 0) return fail("neighbourhood must be >= 0, got " + std::to_string(neighbourhood));
-  if (max_widenings < 0) return fail("max_widenings must be >= 0, got " + std::to_string(max_widenings));
+  if (neighbourhood < 0)
+    return fail("neighbourhood must be >= 0, got " + std::to_string(neighbourhood));
+  if (max_widenings < 0)
+    return fail("max_widenings must be >= 0, got " + std::to_string(max_widenings));
   if (restricted_max_nodes < 0) {
     return fail("restricted_max_nodes must be >= 0, got " + std::to_string(restricted_max_nodes));
   }
-  if (max_exact_slots < 0) return fail("max_exact_slots must be >= 0, got " + std::to_string(max_exact_slots));
+  if (max_exact_slots < 0)
+    return fail("max_exact_slots must be >= 0, got " + std::to_string(max_exact_slots));
   return true;
 }
 

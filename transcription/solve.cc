@@ -141,8 +141,8 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
   }
   const bool interrupted = options.milp.interrupt != nullptr && options.milp.interrupt->load();
   if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted &&
-      options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff &&
-      p.window.enabled() && !p.window.soft) {
+      options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff && p.window.enabled() &&
+      !p.window.soft) {
     if (options.announce) {
       char buf[320];
       std::snprintf(buf, sizeof(buf),

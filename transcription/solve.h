@@ -67,7 +67,7 @@ struct SolveScheduleOptions {
 /// (adaptive propagation between nodes), window at nodes, terminal error.
 struct ImpulsiveCheck {
   double max_window_violation = 0.0;
-  double terminal_error = 0.0;   // max |x_N+ - target| / state_scale (fixed/box kinds)
+  double terminal_error = 0.0;  // max |x_N+ - target| / state_scale (fixed/box kinds)
   Eigen::VectorXd final_state;
 };
 ImpulsiveCheck CheckImpulses(const ScheduleProblem& problem, const std::vector<Impulse>& impulses);
@@ -75,9 +75,9 @@ ImpulsiveCheck CheckImpulses(const ScheduleProblem& problem, const std::vector<I
 struct ScheduleResult {
   BuildStats stats;
   milp::SolveResult solve;
-  Schedule schedule;             // valid if has_schedule()
+  Schedule schedule;  // valid if has_schedule()
   bool checked = false;
-  CheckReport check;             // on-off mode
+  CheckReport check;               // on-off mode
   ImpulsiveCheck impulsive_check;  // impulsive mode
   double check_seconds = 0.0;
   double diagnosis_seconds = 0.0;  // the infeasibility diagnosis (0 if it did not run)

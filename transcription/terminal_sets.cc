@@ -44,18 +44,20 @@ Eigen::Matrix<double, 1, 6> XiDrift(double n, double t) {
 bool SkSetOptions::IsValid(std::string* error) const {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   if (!positive(mean_motion)) {
-    return common::Fail(error, "mean_motion must be finite and > 0, got " + std::to_string(mean_motion));
+    return common::Fail(error,
+                        "mean_motion must be finite and > 0, got " + std::to_string(mean_motion));
   }
   if (!positive(eps_y) || !positive(eps_z)) {
-    return common::Fail(error, "window half widths must be finite and > 0, got " + std::to_string(eps_y) +
-                                   " and " + std::to_string(eps_z));
+    return common::Fail(error, "window half widths must be finite and > 0, got " +
+                                   std::to_string(eps_y) + " and " + std::to_string(eps_z));
   }
   if (facets_out_of_plane < 3 || facets_cone_plus < 3 || facets_cone_minus < 3) {
     return common::Fail(error, "at least 3 facets per polygon are needed");
   }
   if (lookahead_s.empty()) return common::Fail(error, "lookahead_s is empty");
   for (double t : lookahead_s) {
-    if (!std::isfinite(t) || t < 0.0) return common::Fail(error, "lookahead_s entries must be finite and >= 0");
+    if (!std::isfinite(t) || t < 0.0)
+      return common::Fail(error, "lookahead_s entries must be finite and >= 0");
   }
   return true;
 }
@@ -113,8 +115,8 @@ bool InExactStationKeepingSet(const SkSetOptions& o, const Eigen::Matrix<double,
   const double amp = std::hypot(xi1, xi2);
   for (double t : o.lookahead_s) {
     const double drift = XiDrift(n, t) * zeta;
-    if (amp > o.eps_y + drift + tolerance) return false;   // xi+
-    if (amp > o.eps_y - drift + tolerance) return false;   // -xi-
+    if (amp > o.eps_y + drift + tolerance) return false;  // xi+
+    if (amp > o.eps_y - drift + tolerance) return false;  // -xi-
   }
   return true;
 }
@@ -147,8 +149,9 @@ AffineMap HcwCoordinates(const dynamics::LinearModel& model, double t) {
     m.offset << 0.0, 0.0, 0.0, rate0(0), rho * rate0(2), rho * rate0(1);
     return m;
   }
-  throw std::invalid_argument("local HCW coordinates need an HCW, Yamanaka-Ankersen or GEO model, got " +
-                              std::string(model.name()));
+  throw std::invalid_argument(
+      "local HCW coordinates need an HCW, Yamanaka-Ankersen or GEO model, got " +
+      std::string(model.name()));
 }
 
 double HcwMeanMotion(const dynamics::LinearModel& model) {

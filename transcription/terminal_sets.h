@@ -48,9 +48,9 @@ struct HalfSpaces {
 };
 
 struct SkSetOptions {
-  double mean_motion = 0.0;   // rad/s
-  double eps_y = 0.0;         // along-track half width (m)
-  double eps_z = 0.0;         // normal half width (m)
+  double mean_motion = 0.0;  // rad/s
+  double eps_y = 0.0;        // along-track half width (m)
+  double eps_z = 0.0;        // normal half width (m)
   int facets_out_of_plane = 16;
   int facets_cone_plus = 16;
   int facets_cone_minus = 16;

@@ -34,11 +34,16 @@ namespace bench = thrustsched::bench;
 
 const char* KindName(bench::CaseKind k) {
   switch (k) {
-    case bench::CaseKind::kAccuracy: return "accuracy";
-    case bench::CaseKind::kDiscretise: return "discretise";
-    case bench::CaseKind::kBuild: return "build";
-    case bench::CaseKind::kSolve: return "solve";
-    case bench::CaseKind::kConjunction: return "conjunction";
+    case bench::CaseKind::kAccuracy:
+      return "accuracy";
+    case bench::CaseKind::kDiscretise:
+      return "discretise";
+    case bench::CaseKind::kBuild:
+      return "build";
+    case bench::CaseKind::kSolve:
+      return "solve";
+    case bench::CaseKind::kConjunction:
+      return "conjunction";
   }
   return "?";
 }
@@ -46,8 +51,9 @@ const char* KindName(bench::CaseKind k) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"thrustsched-bench: compare integration schemes, formulations and encodings "
-               "on the thesis scenarios; writes DIR/results.csv, DIR/report.md and SVG plots"};
+  CLI::App app{
+      "thrustsched-bench: compare integration schemes, formulations and encodings "
+      "on the thesis scenarios; writes DIR/results.csv, DIR/report.md and SVG plots"};
   bool quick = false, report_only = false, list = false, no_fork = false, keep_mps = false;
   bool merge = false;
   std::string glob = "*", case_glob = "*", out = "bench-out";
@@ -118,8 +124,8 @@ int main(int argc, char** argv) {
     }
     if (list) {
       for (const bench::CaseSpec& c : cases) {
-        std::cout << c.id << "  [" << KindName(c.kind) << ", x" << c.repeats << ", "
-                  << c.threads << " thr, " << c.time_limit_s << " s] " << c.variant << "\n";
+        std::cout << c.id << "  [" << KindName(c.kind) << ", x" << c.repeats << ", " << c.threads
+                  << " thr, " << c.time_limit_s << " s] " << c.variant << "\n";
       }
       std::cout << cases.size() << " cases\n";
       return 0;

@@ -38,7 +38,8 @@ nlohmann::json ReferenceCase(const CaseSpec& spec) {
 
 }  // namespace
 
-std::vector<Row> ExecuteConjunction(const CaseSpec& spec, int repeat, const RunContext& /*context*/) {
+std::vector<Row> ExecuteConjunction(const CaseSpec& spec, int repeat,
+                                    const RunContext& /*context*/) {
   const app::Scenario s = LoadPatched(spec);
   Row r = BaseRow(spec, repeat, s);
   const nlohmann::json ref = ReferenceCase(spec);
@@ -87,7 +88,8 @@ std::vector<Row> ExecuteConjunction(const CaseSpec& spec, int repeat, const RunC
     if (r.Has("published")) r.Set("ratio", res.solve.objective / r.Num("published"));
     r.Set("consumption_l1_m_s", res.schedule.consumption_l1_m_s);
     r.Set("delta_v_m_s", res.schedule.delta_v_m_s);
-    r.Set("n_burns", s.impulsive() ? static_cast<int>(res.schedule.impulses.size()) : res.schedule.num_burns());
+    r.Set("n_burns", s.impulsive() ? static_cast<int>(res.schedule.impulses.size())
+                                   : res.schedule.num_burns());
     if (s.impulsive()) {
       r.Set("terminal_error", res.impulsive_check.terminal_error);
     } else {

@@ -93,11 +93,10 @@ ExternalResult RunGlpsol(const std::string& mps, const std::string& stem, double
   ExternalResult r;
   const std::string out = stem + ".glpsol.txt", log = stem + ".glpsol.log";
   std::remove(out.c_str());
-  const CommandOutcome o =
-      RunTimed("glpsol --freemps '" + mps + "' --tmlim " +
-                   std::to_string(static_cast<int>(std::ceil(limit))) + " -o '" + out + "' > '" +
-                   log + "' 2>&1",
-               limit);
+  const CommandOutcome o = RunTimed("glpsol --freemps '" + mps + "' --tmlim " +
+                                        std::to_string(static_cast<int>(std::ceil(limit))) +
+                                        " -o '" + out + "' > '" + log + "' 2>&1",
+                                    limit);
   r.seconds = o.seconds;
   std::string text;
   try {
@@ -138,10 +137,10 @@ ExternalResult RunHighs(const std::string& mps, const std::string& stem, double 
   }
   const std::string out = stem + ".highs.txt", log = stem + ".highs.log";
   std::remove(out.c_str());
-  const CommandOutcome o = RunTimed("node '" + std::string(kHighsRunner) + "' '" + mps +
-                                        "' --format mps --time-limit " + FormatValue(limit) +
-                                        " > '" + out + "' 2> '" + log + "'",
-                                    limit);
+  const CommandOutcome o =
+      RunTimed("node '" + std::string(kHighsRunner) + "' '" + mps + "' --format mps --time-limit " +
+                   FormatValue(limit) + " > '" + out + "' 2> '" + log + "'",
+               limit);
   std::string text;
   try {
     text = ReadTextFile(out);
@@ -212,8 +211,7 @@ ExternalResult RunExternalSolver(const std::string& solver, const std::string& m
   return solver == "cbc" ? RunCbcProgram(mps, stem, limit_s) : RunGlpsol(mps, stem, limit_s);
 }
 
-void RunExternalSolvers(const std::string& mps, const std::string& stem, double limit_s,
-                        Row* row) {
+void RunExternalSolvers(const std::string& mps, const std::string& stem, double limit_s, Row* row) {
   for (const std::string& solver : ExternalSolverNames()) {
     const ExternalResult e = RunExternalSolver(solver, mps, stem, limit_s);
     const std::string prefix = "ext_" + solver;
@@ -228,7 +226,7 @@ void RunExternalSolvers(const std::string& mps, const std::string& stem, double 
 }
 
 std::vector<std::string> ExternalOutputFiles(const std::string& stem) {
-  return {stem + ".cbc.sol",   stem + ".cbc.log",   stem + ".glpsol.txt",
+  return {stem + ".cbc.sol",    stem + ".cbc.log",   stem + ".glpsol.txt",
           stem + ".glpsol.log", stem + ".highs.txt", stem + ".highs.log"};
 }
 

@@ -60,8 +60,8 @@ class Builder {
     c.threads = o_.threads;
     c.time_limit_s = o_.time_limit_s;
     c.external_time_limit_s = o_.external_time_limit_s > 0.0 ? o_.external_time_limit_s
-                              : o_.quick                      ? 10.0
-                                                              : std::min(30.0, o_.time_limit_s);
+                              : o_.quick                     ? 10.0
+                                                             : std::min(30.0, o_.time_limit_s);
     return c;
   }
 
@@ -386,9 +386,8 @@ void AddOperations(Builder* b, const MatrixOptions& o) {
                                       {"min_gap_other_s", 0}}}};
   const nlohmann::json min_burn_10 = {{"operations", {{"min_burn_s", 600}}}};
   if (o.quick) {
-    for (const auto& [label, patch] :
-         std::vector<std::pair<std::string, nlohmann::json>>{{"rules_off", rules_off},
-                                                             {"min_burn_600", min_burn_10}}) {
+    for (const auto& [label, patch] : std::vector<std::pair<std::string, nlohmann::json>>{
+             {"rules_off", rules_off}, {"min_burn_600", min_burn_10}}) {
       CaseSpec c = b->Make(kSectionOperations, "hcw_table41_1d", CaseKind::kSolve);
       c.patch = patch;
       if (label == "rules_off") c.patch["operations"]["max_simultaneous"] = 6;
@@ -399,9 +398,8 @@ void AddOperations(Builder* b, const MatrixOptions& o) {
     return;
   }
   for (const char* scheme : {"exact_zoh", "hermite_simpson"}) {
-    for (const auto& [label, patch] :
-         std::vector<std::pair<std::string, nlohmann::json>>{{"rules_off", rules_off},
-                                                             {"min_burn_600", min_burn_10}}) {
+    for (const auto& [label, patch] : std::vector<std::pair<std::string, nlohmann::json>>{
+             {"rules_off", rules_off}, {"min_burn_600", min_burn_10}}) {
       CaseSpec c = b->Make(kSectionOperations, "geo_week_constrained_final", CaseKind::kSolve);
       c.patch = Merge(Scheme(scheme), patch);
       c.time_limit_s = std::max(o.time_limit_s, 120.0);
@@ -421,8 +419,8 @@ nlohmann::json MergePatch(nlohmann::json target, const nlohmann::json& patch) {
     if (it.value().is_null()) {
       target.erase(it.key());
     } else {
-      target[it.key()] = MergePatch(target.contains(it.key()) ? target[it.key()] : nlohmann::json(),
-                                    it.value());
+      target[it.key()] =
+          MergePatch(target.contains(it.key()) ? target[it.key()] : nlohmann::json(), it.value());
     }
   }
   return target;

@@ -40,20 +40,20 @@ inline constexpr const char* kSectionSolverSpeed = "solver_speed";
 inline constexpr const char* kSectionCollisionAvoidance = "collision_avoidance";
 
 enum class CaseKind {
-  kAccuracy,    // every scheme vs the reference on each step of `accuracy_steps_s`
-  kDiscretise,  // discretise only (and the error vs the reference)
-  kBuild,       // discretise + build (sizes, build time, memory)
-  kSolve,       // + LP relaxation + MILP solve + independent check
-  kConjunction, // collision avoidance: SolveConjunction + verification (conjunction_case.h)
+  kAccuracy,     // every scheme vs the reference on each step of `accuracy_steps_s`
+  kDiscretise,   // discretise only (and the error vs the reference)
+  kBuild,        // discretise + build (sizes, build time, memory)
+  kSolve,        // + LP relaxation + MILP solve + independent check
+  kConjunction,  // collision avoidance: SolveConjunction + verification (conjunction_case.h)
 };
 
 struct CaseSpec {
-  std::string id;             // unique; also the file stem under DIR/runs/
+  std::string id;  // unique; also the file stem under DIR/runs/
   std::string section;
-  std::string scenario;       // scenario name (file stem), matched by --scenarios
+  std::string scenario;  // scenario name (file stem), matched by --scenarios
   std::string scenario_path;
   nlohmann::json patch = nlohmann::json::object();  // merge patch for the scenario JSON
-  std::string variant;        // short human label ("rules off", "dual LP", ...)
+  std::string variant;  // short human label ("rules off", "dual LP", ...)
   CaseKind kind = CaseKind::kSolve;
   int repeats = 1;
 
@@ -74,13 +74,13 @@ struct CaseSpec {
   double target_opt_s = std::numeric_limits<double>::quiet_NaN();
   double target_gap = std::numeric_limits<double>::quiet_NaN();
   double target_gap_s = std::numeric_limits<double>::quiet_NaN();
-  bool lp_relaxation = true;       // also solve the root LP alone (lp_bound, lp_s)
+  bool lp_relaxation = true;  // also solve the root LP alone (lp_bound, lp_s)
   /// Algorithm of that separate LP solve if set (else lp_algorithm): the
   /// encoding comparison wants the bound itself, with the fastest algorithm.
   std::optional<milp::LpAlgorithm> lp_relaxation_algorithm;
   double lp_relaxation_time_limit_s = 0.0;  // > 0: its own limit (else time_limit_s)
-  bool error_metrics = true;       // max_rel_err_* against the reference discretisation
-  bool external = false;           // cross-check the exported MPS with cbc / glpsol
+  bool error_metrics = true;                // max_rel_err_* against the reference discretisation
+  bool external = false;                    // cross-check the exported MPS with cbc / glpsol
   double external_time_limit_s = 60.0;
 
   // kAccuracy: steps to compare (s) and schemes (empty = all but the reference).

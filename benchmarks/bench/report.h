@@ -32,14 +32,14 @@ struct EarlierRun {
 };
 
 struct ReportMeta {
-  std::string command;         // command line as run
-  std::string date_utc;        // ISO 8601
-  std::string machine;         // CPU model, cores, memory, kernel
-  std::string load_average;    // /proc/loadavg at start
-  std::string git_revision;    // short hash (+ "-dirty"), or "unknown"
-  std::string solver;          // CBC/CLP versions linked
-  std::string external;        // versions of the cbc and glpsol programs found
-  std::string build_type;      // CMAKE_BUILD_TYPE of the tool
+  std::string command;       // command line as run
+  std::string date_utc;      // ISO 8601
+  std::string machine;       // CPU model, cores, memory, kernel
+  std::string load_average;  // /proc/loadavg at start
+  std::string git_revision;  // short hash (+ "-dirty"), or "unknown"
+  std::string solver;        // CBC/CLP versions linked
+  std::string external;      // versions of the cbc and glpsol programs found
+  std::string build_type;    // CMAKE_BUILD_TYPE of the tool
   bool quick = false;
   int threads = 0;
   double time_limit_s = 0.0;

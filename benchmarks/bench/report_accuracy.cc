@@ -5,12 +5,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
-#include <limits>
 
 #include "benchmarks/bench/accuracy.h"
 #include "benchmarks/bench/report_format.h"
@@ -47,7 +47,8 @@ void WriteAccuracy(std::ostream& md, const Index& idx, Plotter* plot) {
       by[g->Get("scheme")][g->Num("step_s")] = g;
     }
     if (by.empty()) continue;
-    md << "### " << (model == "hcw" ? "HCW (time-invariant)" : "GEO linearised model (time-varying)")
+    md << "### "
+       << (model == "hcw" ? "HCW (time-invariant)" : "GEO linearised model (time-varying)")
        << "\n\n";
     std::vector<std::string> head = {"scheme", "order p"};
     for (double s : steps) head.push_back("Phi @ " + G(s / 60) + " min");
@@ -60,8 +61,8 @@ void WriteAccuracy(std::ostream& md, const Index& idx, Plotter* plot) {
     std::ostringstream dat;
     for (const std::string& scheme : ComparedSchemes()) {
       if (!by.count(scheme)) continue;
-      std::vector<std::string> row = {scheme, ExpectedOrder(scheme) ? G(ExpectedOrder(scheme))
-                                                                      : "exact"};
+      std::vector<std::string> row = {scheme,
+                                      ExpectedOrder(scheme) ? G(ExpectedOrder(scheme)) : "exact"};
       std::vector<double> xs, gl;
       const Group* any = nullptr;
       for (double s : steps) {

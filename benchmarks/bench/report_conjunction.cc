@@ -15,9 +15,9 @@ void WriteCase(std::ostream& md, const Row& r) {
      << G(r.Num("ratio"), 4) << " | " << Sec(r.Num("time_to_opt_s")) << " | "
      << G(r.Num("published_time_s"), 4) << " | " << r.Get("budget_rounds") << " | "
      << r.Get("keep_out_binaries") << " | " << G(r.Num("max_risk"), 3) << " | "
-     << G(r.Num("max_risk_unmanoeuvred"), 4) << " ("
-     << G(r.Num("published_risk_unmanoeuvred"), 3) << ") | " << r.Get("mc_collisions_linear")
-     << ", " << (r.Has("mc_collisions_nonlinear") ? r.Get("mc_collisions_nonlinear") : "-") << " ("
+     << G(r.Num("max_risk_unmanoeuvred"), 4) << " (" << G(r.Num("published_risk_unmanoeuvred"), 3)
+     << ") | " << r.Get("mc_collisions_linear") << ", "
+     << (r.Has("mc_collisions_nonlinear") ? r.Get("mc_collisions_nonlinear") : "-") << " ("
      << r.Get("mc_samples") << ") |\n";
 }
 
@@ -40,7 +40,8 @@ void WriteCollisionAvoidance(std::ostream& md, const std::vector<Row>& rows) {
         "(not sampled) at the check times; the Monte Carlo has the scenario's sample count, "
         "linear and two-body. Data defects and the covariance repair: data/scenarios/README.md "
         "section 11.\n\n";
-  md << "| scenario | status | cost (mm/s) | published (mm/s) | ratio | CBC time to optimum (s) | Gurobi (s) "
+  md << "| scenario | status | cost (mm/s) | published (mm/s) | ratio | CBC time to optimum (s) | "
+        "Gurobi (s) "
         "| rounds | keep-out binaries (last round) | max risk | unmanoeuvred risk (published) "
         "| Monte Carlo collisions: linear, two-body (samples) |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";

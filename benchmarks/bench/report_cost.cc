@@ -53,7 +53,8 @@ void WriteCost(std::ostream& md, const Index& idx, const BenchReference& ref, Pl
             "final state forced back to the station point within 5 % of the state scale "
             "(|da| <= 1839.8 m, |ex|, |ey|, |ix|, |iy|, |dl| <= 4.363e-5), so the whole "
             "week's natural drift must be cancelled. Solved to a 1 % gap (time limit "
-            << G(by_scenario[sc].front()->Num("time_limit_s")) << " s). The thesis figures "
+         << G(by_scenario[sc].front()->Num("time_limit_s"))
+         << " s). The thesis figures "
             "are for its own (unknown) target: compare the *spread between schemes*, not the "
             "absolute values.\n\n";
     } else {
@@ -76,7 +77,8 @@ void WriteCost(std::ostream& md, const Index& idx, const BenchReference& ref, Pl
         if (scheme == "exact_zoh" || scheme == "frozen_start") pub = ref.table_4_3_tm_rules_on;
         if (scheme == "hermite_simpson") pub = ref.table_4_3_hs_rules_on;
         if (std::isfinite(pub)) {
-          thesis = G(pub) + (scheme == "hermite_simpson" ? " (Hermite-Simpson)" : " (transition matrices)");
+          thesis = G(pub) +
+                   (scheme == "hermite_simpson" ? " (Hermite-Simpson)" : " (transition matrices)");
           ratio = G(g->Num("objective") / pub, 3);
         }
       }
@@ -112,15 +114,14 @@ void WriteCost(std::ostream& md, const Index& idx, const BenchReference& ref, Pl
         md << "All " << with_schedule << " schemes that found a schedule give the same objective, "
            << G(lo, 6) << " m/s" << slots << ".";
       } else {
-        md << "Objectives range from " << G(lo, 5) << " (" << lo_s << ") to " << G(hi, 5)
-           << " (" << hi_s << ") m/s, a spread of " << Pct((hi - lo) / lo) << " of the lowest";
+        md << "Objectives range from " << G(lo, 5) << " (" << lo_s << ") to " << G(hi, 5) << " ("
+           << hi_s << ") m/s, a spread of " << Pct((hi - lo) / lo) << " of the lowest";
         if (std::isfinite(exact_obj)) {
           md << "; exact_zoh (the reference transition matrices) gives " << G(exact_obj, 5);
         }
         md << ".";
       }
-      md << " The solves stop at their gap ("
-         << Pct(by_scenario[sc].front()->Num("relative_gap"))
+      md << " The solves stop at their gap (" << Pct(by_scenario[sc].front()->Num("relative_gap"))
          << "), so differences below it would not be significant.\n";
       if (violating.empty()) {
         md << "Every schedule passes the independent checker at the grid nodes (window "
@@ -145,21 +146,21 @@ void WriteCost(std::ostream& md, const Index& idx, const BenchReference& ref, Pl
         if (g->Get("scheme") == "hermite_simpson") hs = g->Num("objective");
       }
       if (!std::isfinite(ex) || !std::isfinite(hs)) continue;
-      hs_vs_exact += std::string(hs_vs_exact.empty() ? "" : "; ") + "on " + sc + " gives " +
-                     (std::abs(hs - ex) <= 1e-9 * std::abs(ex)
-                          ? "the same optimum (" + G(hs, 6) + " m/s)"
-                          : G(hs, 6) + " m/s against " + G(ex, 6) + " (" +
-                                Pct((hs - ex) / ex) + ")");
+      hs_vs_exact +=
+          std::string(hs_vs_exact.empty() ? "" : "; ") + "on " + sc + " gives " +
+          (std::abs(hs - ex) <= 1e-9 * std::abs(ex)
+               ? "the same optimum (" + G(hs, 6) + " m/s)"
+               : G(hs, 6) + " m/s against " + G(ex, 6) + " (" + Pct((hs - ex) / ex) + ")");
     }
     if (hs_vs_exact.empty()) hs_vs_exact = "(no week with both schemes solved in this run)";
     const double tm = ref.table_4_3_tm_rules_on, hs_pub = ref.table_4_3_hs_rules_on;
     const double cheb = ref.table_5_2_chebfun_m_s, hs_year = ref.table_5_2_hermite_simpson_m_s;
     md << "**The thesis's scheme comparison, and what we find.** Table 4.3 reports " << G(tm)
        << " m/s with transition matrices and " << G(hs_pub)
-       << " m/s with Hermite-Simpson on its constrained-final-state week ("
-       << std::showpos << std::lround(100.0 * (hs_pub - tm) / tm) << std::noshowpos
-       << " %), and Table 5.2 " << Fixed1(cheb) << " versus " << Fixed1(hs_year)
-       << " m/s over a year (" << Fixed1(100.0 * (hs_year - cheb) / cheb)
+       << " m/s with Hermite-Simpson on its constrained-final-state week (" << std::showpos
+       << std::lround(100.0 * (hs_pub - tm) / tm) << std::noshowpos << " %), and Table 5.2 "
+       << Fixed1(cheb) << " versus " << Fixed1(hs_year) << " m/s over a year ("
+       << Fixed1(100.0 * (hs_year - cheb) / cheb)
        << " %). On both weeks above, the tables show how much each of our seven "
           "schemes moves the optimum and whether its schedule survives the independent "
           "checker (continuous-model re-propagation, nonlinear replay, terminal box).\n\n"
@@ -183,7 +184,8 @@ void WriteCost(std::ostream& md, const Index& idx, const BenchReference& ref, Pl
           "matters most when the "
           "final state is pinned (Table 4.3) and little when it is free (the thesis's "
           "free-final-state week, "
-       << G(ref.free_final_week_m_s) << " m/s, was the same for both methods). The yearly "
+       << G(ref.free_final_week_m_s)
+       << " m/s, was the same for both methods). The yearly "
           "-0.6 % (about 0.6 slot per week) is below the 1 % gaps at which receding weekly "
           "solves stop, so it is not evidence either way. This is our reading of the "
           "measurements, not a measurement of the thesis's code.\n\n";

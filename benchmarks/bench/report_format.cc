@@ -27,10 +27,14 @@ std::string Sec(double v) {
   if (std::isnan(v)) return "-";
   if (std::isinf(v)) return "not reached";
   char buf[64];
-  if (v < 0.01) std::snprintf(buf, sizeof(buf), "%.4f", v);
-  else if (v < 1) std::snprintf(buf, sizeof(buf), "%.3g", v);
-  else if (v < 10) std::snprintf(buf, sizeof(buf), "%.2f", v);
-  else std::snprintf(buf, sizeof(buf), "%.1f", v);
+  if (v < 0.01)
+    std::snprintf(buf, sizeof(buf), "%.4f", v);
+  else if (v < 1)
+    std::snprintf(buf, sizeof(buf), "%.3g", v);
+  else if (v < 10)
+    std::snprintf(buf, sizeof(buf), "%.2f", v);
+  else
+    std::snprintf(buf, sizeof(buf), "%.1f", v);
   return buf;
 }
 
@@ -90,6 +94,5 @@ std::string Verdict(double value, double limit) {
   if (value < limit) return "met (" + G(100.0 * value / limit, 3) + " % of the limit)";
   return "**missed** by " + Sec(value - limit) + " s (" + G(value / limit, 3) + "x the limit)";
 }
-
 
 }  // namespace thrustsched::bench

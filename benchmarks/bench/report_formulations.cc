@@ -47,7 +47,8 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
     // Encoding comparison summary.
     int tight_faster = 0, pairs = 0;
     std::map<std::string, std::map<std::string, const Group*>> enc;
-    for (const Group* g : f) enc[g->Get("scenario") + "/" + g->Get("formulation")][g->Get("encoding")] = g;
+    for (const Group* g : f)
+      enc[g->Get("scenario") + "/" + g->Get("formulation")][g->Get("encoding")] = g;
     std::ostringstream lines;
     for (const auto& [key, m] : enc) {
       if (!m.count("tight") || !m.count("thesis")) continue;
@@ -55,9 +56,9 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
       ++pairs;
       if (a < b) ++tight_faster;
       lines << "- " << key << ": LP bound tight " << G(m.at("tight")->Num("lp_bound"), 5)
-            << " vs thesis " << G(m.at("thesis")->Num("lp_bound"), 5) << "; solve "
-            << Sec(a) << " vs " << Sec(b) << " s ("
-            << m.at("tight")->Get("status") << " / " << m.at("thesis")->Get("status") << ")\n";
+            << " vs thesis " << G(m.at("thesis")->Num("lp_bound"), 5) << "; solve " << Sec(a)
+            << " vs " << Sec(b) << " s (" << m.at("tight")->Get("status") << " / "
+            << m.at("thesis")->Get("status") << ")\n";
     }
     if (pairs > 0) {
       int equal_bounds = 0, both_bounds = 0;
@@ -90,7 +91,8 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
              << g->Get("encoding") << "): proven optimum " << G(g->Num("objective"), 6)
              << " m/s = " << G(g->Num("objective") / slot, 4) << " slots, published "
              << G(g->Num("published"), 4) << " m/s = " << G(g->Num("published") / slot, 4)
-             << " slots (ratio " << G(ratio, 4) << "); the schedule passes the independent "
+             << " slots (ratio " << G(ratio, 4)
+             << "); the schedule passes the independent "
                 "checker.\n";
       }
     }
@@ -118,8 +120,8 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
     MdTable t({"scenario", "variant", "LP bound", "LP (s)", "status", "objective", "gap",
                "first (s)", "1 % gap (s)", "optimal (s)", "solve (s)", "nodes"});
     for (const Group* g : a) {
-      t.Add({g->Get("scenario"), g->Get("variant"), G(g->Num("lp_bound"), 5),
-             Sec(g->Num("lp_s")), StatusCell(*g), G(g->Num("objective"), 5), Pct(g->Num("gap")),
+      t.Add({g->Get("scenario"), g->Get("variant"), G(g->Num("lp_bound"), 5), Sec(g->Num("lp_s")),
+             StatusCell(*g), G(g->Num("objective"), 5), Pct(g->Num("gap")),
              Sec(g->Num("time_to_first_s")), Sec(g->Num("time_to_1pct_s")),
              Sec(g->Num("time_to_opt_s")), Sec(g->Num("solve_s")), G(g->Num("nodes"))});
     }
@@ -210,8 +212,8 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
       if (!beats.empty()) agree += std::string(agree.empty() ? "" : "; ") + "**" + beats + "**";
     }
     x.Add({g->Get("scenario"),
-           StatusCell(*g) + ", " + G(ours, 6) + " in " + Sec(g->Num("solve_s")) + " s",
-           cell("cbc"), cell("glpsol"), cell("highs"), agree});
+           StatusCell(*g) + ", " + G(ours, 6) + " in " + Sec(g->Num("solve_s")) + " s", cell("cbc"),
+           cell("glpsol"), cell("highs"), agree});
   }
   if (any) {
     md << x.Str() << "\n";
@@ -258,8 +260,8 @@ void WriteScaling(std::ostream& md, const Index& idx, Plotter* plot) {
       n_s.push_back(n);
       build_s.push_back(g->Num("build_s"));
       nnz_s.push_back(g->Num("n_nonzeros"));
-      const bool finished = g->Get("status") == "optimal" &&
-                            g->Num("solve_s") < 0.98 * g->Num("time_limit_s");
+      const bool finished =
+          g->Get("status") == "optimal" && g->Num("solve_s") < 0.98 * g->Num("time_limit_s");
       solve_s.push_back(finished ? g->Num("solve_s") : kNaN);
       dat_s << HorizonDays(*g) << " " << FormatValue(g->Num("build_s")) << " "
             << (finished ? FormatValue(g->Num("solve_s")) : "?") << " "
@@ -274,26 +276,28 @@ void WriteScaling(std::ostream& md, const Index& idx, Plotter* plot) {
   if (!h.empty()) {
     md << "### Against the horizon (5-min step)\n\n" << t.Str() << "\n";
     md << "Fitted growth exponents (time or size ~ N^k): sparse build k = "
-       << G(FitLogLogSlope(n_s, build_s), 3) << ", sparse nonzeros k = "
-       << G(FitLogLogSlope(n_s, nnz_s), 3) << ", sparse solve (finished runs) k = "
-       << G(FitLogLogSlope(n_s, solve_s), 3) << "; condensed build k = "
-       << G(FitLogLogSlope(n_c, build_c), 3) << ", condensed nonzeros k = "
-       << G(FitLogLogSlope(n_c, nnz_c), 3) << ".\n\n";
+       << G(FitLogLogSlope(n_s, build_s), 3)
+       << ", sparse nonzeros k = " << G(FitLogLogSlope(n_s, nnz_s), 3)
+       << ", sparse solve (finished runs) k = " << G(FitLogLogSlope(n_s, solve_s), 3)
+       << "; condensed build k = " << G(FitLogLogSlope(n_c, build_c), 3)
+       << ", condensed nonzeros k = " << G(FitLogLogSlope(n_c, nnz_c), 3) << ".\n\n";
     plot->Data("scaling_horizon_sparse.dat", dat_s.str());
     plot->Data("scaling_horizon_condensed.dat", dat_c.str());
-    plot->Run("scaling_horizon",
-              "set title 'GEO, 5-min step: time against horizon'\n"
-              "set logscale xy\nset xlabel 'horizon (days)'\nset ylabel 'seconds'\nset grid\n"
-              "set key top left\n"
-              "plot 'scaling_horizon_sparse.dat' using 1:2 with linespoints title 'build, sparse', "
-              "'scaling_horizon_sparse.dat' using 1:3 with linespoints title 'solve, sparse (finished)', "
-              "'scaling_horizon_sparse.dat' using 1:4 with points pt 6 ps 1.5 title 'solve, sparse (time limit)', "
-              "'scaling_horizon_condensed.dat' using 1:2 with linespoints title 'build, condensed'\n");
+    plot->Run(
+        "scaling_horizon",
+        "set title 'GEO, 5-min step: time against horizon'\n"
+        "set logscale xy\nset xlabel 'horizon (days)'\nset ylabel 'seconds'\nset grid\n"
+        "set key top left\n"
+        "plot 'scaling_horizon_sparse.dat' using 1:2 with linespoints title 'build, sparse', "
+        "'scaling_horizon_sparse.dat' using 1:3 with linespoints title 'solve, sparse (finished)', "
+        "'scaling_horizon_sparse.dat' using 1:4 with points pt 6 ps 1.5 title 'solve, sparse (time "
+        "limit)', "
+        "'scaling_horizon_condensed.dat' using 1:2 with linespoints title 'build, condensed'\n");
     md << plot->Link("scaling_horizon", "time against horizon");
   }
   if (!s.empty()) {
-    MdTable ts({"step (min)", "N", "binaries", "nonzeros", "discretise (s)", "build (s)",
-                "status", "objective", "first (s)", "1 % gap (s)", "solve (s)", "checker"});
+    MdTable ts({"step (min)", "N", "binaries", "nonzeros", "discretise (s)", "build (s)", "status",
+                "objective", "first (s)", "1 % gap (s)", "solve (s)", "checker"});
     std::vector<double> n, b, sv;
     std::ostringstream dat;
     for (const Group* g : s) {
@@ -302,8 +306,8 @@ void WriteScaling(std::ostream& md, const Index& idx, Plotter* plot) {
               G(g->Num("n_nonzeros"), 8), Sec(g->Num("discretise_s")), Sec(g->Num("build_s")),
               StatusCell(*g), G(g->Num("objective"), 5), Sec(g->Num("time_to_first_s")),
               Sec(g->Num("time_to_1pct_s")), Sec(g->Num("solve_s")), CheckerCell(*g)});
-      const bool finished = g->Get("status") == "optimal" &&
-                            g->Num("solve_s") < 0.98 * g->Num("time_limit_s");
+      const bool finished =
+          g->Get("status") == "optimal" && g->Num("solve_s") < 0.98 * g->Num("time_limit_s");
       n.push_back(nn);
       b.push_back(g->Num("build_s"));
       sv.push_back(finished ? g->Num("solve_s") : kNaN);

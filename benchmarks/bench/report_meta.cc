@@ -53,9 +53,8 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
     md << "- **Partial re-run** (`--merge`): this command re-ran the cases matching `"
        << m.cases_glob << "`; every other row comes from an earlier run:\n";
     for (const EarlierRun& e : m.earlier) {
-      md << "  - " << e.date_utc << ", revision " << e.git_revision << ", cases `"
-         << e.cases_glob << "`, machine " << e.machine << ", load average at start "
-         << e.load_average << ", "
+      md << "  - " << e.date_utc << ", revision " << e.git_revision << ", cases `" << e.cases_glob
+         << "`, machine " << e.machine << ", load average at start " << e.load_average << ", "
          << Sec(e.total_wall_s) << " s: `" << e.command << "`\n";
     }
   }
@@ -89,20 +88,23 @@ ReportMeta CollectMeta(int argc, char** argv, bool quick) {
   m.date_utc = date;
   std::string cpu = Capture("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'");
   const std::string cores = Capture("nproc");
-  const std::string mem = Capture("awk '/MemTotal/ {printf \"%.1f GB\", $2/1048576}' /proc/meminfo");
+  const std::string mem =
+      Capture("awk '/MemTotal/ {printf \"%.1f GB\", $2/1048576}' /proc/meminfo");
   utsname u{};
   uname(&u);
   m.machine = (cpu.empty() ? "unknown CPU" : cpu) + ", " + cores + " cores (nproc), " + mem +
               " RAM, " + u.sysname + " " + u.release;
   m.load_average = Capture("cut -d' ' -f1-3 /proc/loadavg");
-  m.git_revision = Capture("git -C '" THRUSTSCHED_SOURCE_DIR
-                           "' rev-parse --short HEAD 2>/dev/null");
-  if (m.git_revision.empty()) m.git_revision = "unknown";
+  m.git_revision =
+      Capture("git -C '" THRUSTSCHED_SOURCE_DIR "' rev-parse --short HEAD 2>/dev/null");
+  if (m.git_revision.empty())
+    m.git_revision = "unknown";
   else if (!Capture("git -C '" THRUSTSCHED_SOURCE_DIR "' status --porcelain 2>/dev/null").empty())
     m.git_revision += " (with uncommitted changes)";
   m.solver = milp::CbcVersion();
   std::string ext;
-  const std::string cbc = Capture("command -v cbc >/dev/null 2>&1 && echo quit | cbc 2>/dev/null | grep -m1 Version");
+  const std::string cbc =
+      Capture("command -v cbc >/dev/null 2>&1 && echo quit | cbc 2>/dev/null | grep -m1 Version");
   const std::string glp = Capture("glpsol --version 2>/dev/null | head -1");
   ext += cbc.empty() ? "cbc program not found" : "cbc program (" + cbc + ")";
   ext += ", ";
@@ -114,12 +116,18 @@ ReportMeta CollectMeta(int argc, char** argv, bool quick) {
 }
 
 void WriteMetaJson(const std::string& path, const ReportMeta& m) {
-  const nlohmann::json j = {{"command", m.command},       {"date_utc", m.date_utc},
-                            {"machine", m.machine},       {"load_average", m.load_average},
-                            {"git_revision", m.git_revision}, {"solver", m.solver},
-                            {"external", m.external},     {"build_type", m.build_type},
-                            {"quick", m.quick},           {"threads", m.threads},
-                            {"time_limit_s", m.time_limit_s}, {"scenario_glob", m.scenario_glob},
+  const nlohmann::json j = {{"command", m.command},
+                            {"date_utc", m.date_utc},
+                            {"machine", m.machine},
+                            {"load_average", m.load_average},
+                            {"git_revision", m.git_revision},
+                            {"solver", m.solver},
+                            {"external", m.external},
+                            {"build_type", m.build_type},
+                            {"quick", m.quick},
+                            {"threads", m.threads},
+                            {"time_limit_s", m.time_limit_s},
+                            {"scenario_glob", m.scenario_glob},
                             {"total_wall_s", m.total_wall_s}};
   nlohmann::json j2 = j;
   j2["cases_glob"] = m.cases_glob;

@@ -101,14 +101,15 @@ void WriteSkipped(std::ostream& md, const Index& idx, const ReportMeta& m) {
 
 void WriteColumns(std::ostream& md) {
   md << "## Columns of results.csv\n\n"
-     << "One row per run (accuracy: per scheme and step). Contract columns (fixed names): `"
-     << [] {
-          std::string s;
-          for (const std::string& c : ContractColumns()) s += (s.empty() ? "" : "`, `") + c;
-          return s;
-        }()
+     << "One row per run (accuracy: per scheme and step). Contract columns (fixed names): `" <<
+      [] {
+        std::string s;
+        for (const std::string& c : ContractColumns()) s += (s.empty() ? "" : "`, `") + c;
+        return s;
+      }()
      << "`. Extensions: `section`, `case_id`, `repeat`, `variant` (what was changed), "
-        "`model`, `n_thrusters`, `threads`, `time_limit_s`, `relative_gap`, `lp_algorithm`, `lp_relaxation_algorithm`, "
+        "`model`, `n_thrusters`, `threads`, `time_limit_s`, `relative_gap`, `lp_algorithm`, "
+        "`lp_relaxation_algorithm`, "
         "`objective_step` (0 = off), `global_rel_err`, `observed_order_phi/gamma` (accuracy "
         "rows), `nodes`, `time_to_opt_s`, `time_within_1pct_of_opt_s`, `operational_ok`, "
         "`max_window_violation_nodes`, `window_unit`, `terminal_ok`, `terminal_error`, "

@@ -57,8 +57,9 @@ void WriteOperations(std::ostream& md, const Index& idx, const BenchReference& r
       }
     }
   }
-  MdTable t({"scenario", "scheme", "rules on, p = 1", "rules off", "off / on", "min burn 10 min (p = 2)",
-             "p2 / p1", "thesis (TM or HS): on, off, p = 2", "thesis off/on, p2/p1", "checker (off; p = 2)"});
+  MdTable t({"scenario", "scheme", "rules on, p = 1", "rules off", "off / on",
+             "min burn 10 min (p = 2)", "p2 / p1", "thesis (TM or HS): on, off, p = 2",
+             "thesis off/on, p2/p1", "checker (off; p = 2)"});
   for (const std::string& key : order) {
     const Cells& c = by[key];
     auto obj = [](const Group* g) { return g ? g->Num("objective") : kNaN; };
@@ -106,7 +107,8 @@ void WriteOperations(std::ostream& md, const Index& idx, const BenchReference& r
   md << "Removing the rules can only lower the optimum (it relaxes the problem) and a longer "
         "minimum burn can only raise it on a fixed grid (it restricts it) - up to the solve "
         "gap. The thesis reports p = 2 *below* p = 1 ("
-     << G(ref.table_4_4_tm_p2) << " < " << G(ref.table_4_3_tm_rules_on) << "), which a restriction "
+     << G(ref.table_4_4_tm_p2) << " < " << G(ref.table_4_3_tm_rules_on)
+     << "), which a restriction "
         "cannot do for exact optima on the same grid; it explains it by fewer, longer burns. "
         "Our solves stop at a 1 % gap, so differences below 1 % are not significant.\n\n";
 }

@@ -81,7 +81,8 @@ void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
       measures.push_back({"time to proven optimality", "time_to_opt_s", "target_opt_s"});
     }
     if (spec.Has("target_gap")) {
-      measures.push_back({"within " + Pct(spec.Num("target_gap")) + " of its bound", "", "target_gap_s"});
+      measures.push_back(
+          {"within " + Pct(spec.Num("target_gap")) + " of its bound", "", "target_gap_s"});
     }
     for (const Measure& m : measures) {
       auto value = [&](const std::vector<const Row*>& arm) {

@@ -31,8 +31,9 @@ void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m,
     md << "Discretise/build targets: not run" << (m.quick ? " (quick mode uses a 1-day grid)" : "")
        << ".\n\n";
   } else {
-    MdTable t({"scheme", "discretise 7-day GEO, 5 min (s)", "target < " + G(ref.target_discretise_week_s) + " s",
-               "thesis (min/week)", "build its MILP (s)", "target < " + G(ref.target_build_week_s) + " s", "MILP size"});
+    MdTable t({"scheme", "discretise 7-day GEO, 5 min (s)",
+               "target < " + G(ref.target_discretise_week_s) + " s", "thesis (min/week)",
+               "build its MILP (s)", "target < " + G(ref.target_build_week_s) + " s", "MILP size"});
     for (const Group* g : cost) {
       const std::string scheme = g->Get("scheme");
       const double d = MedianOf(g->Values("discretise_s"), true);
@@ -40,8 +41,8 @@ void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m,
       std::string thesis = "-";
       if (scheme == "hermite_simpson") thesis = "10-15 (Hermite-Simpson, L4573/L5169)";
       if (scheme == "exact_zoh") thesis = "40 (chebfun transition matrices)";
-      t.Add({scheme, MedSpread(*g, "discretise_s", true), Verdict(d, ref.target_discretise_week_s), thesis,
-             MedSpread(*g, "build_s", true), Verdict(b, ref.target_build_week_s),
+      t.Add({scheme, MedSpread(*g, "discretise_s", true), Verdict(d, ref.target_discretise_week_s),
+             thesis, MedSpread(*g, "build_s", true), Verdict(b, ref.target_build_week_s),
              G(g->Num("n_binaries")) + " bin, " + G(g->Num("n_rows"), 6) + " rows, " +
                  G(g->Num("n_nonzeros"), 6) + " nz"});
     }
@@ -58,8 +59,7 @@ void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m,
        << G(d_hs / 600.0, 2) << " (Hermite-Simpson, vs 10 min) and " << G(d_ex / 2400.0, 2)
        << " (reference vs chebfun).\n\n";
   }
-  MdTable t({"target", "limit", "measured: median (min-max, n)", "verdict", "also",
-             "load / CPU"});
+  MdTable t({"target", "limit", "measured: median (min-max, n)", "verdict", "also", "load / CPU"});
   auto load_cpu = [](const Group& g) {
     return "1-min load avg " + G(Median(g.Values("load_1min")), 3) + "; CPU " +
            Sec(Median(g.Values("cpu_s"))) + " s for " + Sec(Median(g.Values("wall_s"))) +
@@ -80,10 +80,9 @@ void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m,
              Verdict(w, ref.target_table_4_2_within_1pct_s),
              "proven 1 % gap " + MedSpread(*g, "time_to_1pct_s", true) +
                  " s; proven optimal (gap 1e-4) in " + std::to_string(n_opt) + "/" +
-                 std::to_string(g->rows.size()) + " runs within " +
-                 G(g->Num("time_limit_s")) + " s, median " + Sec(opt) + " s; objective " +
-                 G(g->Num("objective"), 6) + " m/s (ratio to 1.721: " + G(g->Num("ratio"), 5) +
-                 ")",
+                 std::to_string(g->rows.size()) + " runs within " + G(g->Num("time_limit_s")) +
+                 " s, median " + Sec(opt) + " s; objective " + G(g->Num("objective"), 6) +
+                 " m/s (ratio to 1.721: " + G(g->Num("ratio"), 5) + ")",
              load_cpu(*g)});
     } else if (sc == "geo_week_anzel4") {
       const double p = MedianOf(g->Values("time_to_1pct_s"), true);
@@ -121,8 +120,8 @@ void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m,
         if (!std::filesystem::exists(plot->dir + "/runs/" + trace)) continue;
         const std::string f = "'../runs/" + trace + "'";
         plots += std::string(plots.empty() ? "" : ", ") + f +
-                 " using 1:2 with steps lw 2 title 'run " + r->Get("repeat") + " incumbent', " +
-                 f + " using 1:3 with steps dt 2 title 'run " + r->Get("repeat") + " bound'";
+                 " using 1:2 with steps lw 2 title 'run " + r->Get("repeat") + " incumbent', " + f +
+                 " using 1:3 with steps dt 2 title 'run " + r->Get("repeat") + " bound'";
       }
       if (plots.empty()) continue;
       ++panels;

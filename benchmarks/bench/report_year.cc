@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "benchmarks/bench/reference_figures.h"
 
@@ -44,7 +44,8 @@ void WriteYear(std::ostream& md, const ReportMeta& m, const BenchReference& ref)
       if (!v.contains("scenario")) continue;
       const std::string stem = fs::path(v.at("scenario").get<std::string>()).stem().string();
       std::string where = v.contains("table") ? v.at("table").get<std::string>() : "";
-      if (v.contains("lines")) where += (where.empty() ? "" : ", ") + v.at("lines").get<std::string>();
+      if (v.contains("lines"))
+        where += (where.empty() ? "" : ", ") + v.at("lines").get<std::string>();
       published[stem] = {v.at("l1_m_s").get<double>(), where};
     }
   } catch (const std::exception& e) {
@@ -71,9 +72,7 @@ void WriteYear(std::ostream& md, const ReportMeta& m, const BenchReference& ref)
          << " |||||||||||||\n";
       continue;
     }
-    auto num = [&y](const nlohmann::json& v) {
-      return v.is_number() ? v.get<double>() : kNaN;
-    };
+    auto num = [&y](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : kNaN; };
     const std::string name = y.value("scenario", dir.filename().string());
     const double l1 = num(y["consumption_l1_m_s"]);
     if (name == "year_anzel4_fixed" && y.value("complete", false)) {
@@ -86,19 +85,17 @@ void WriteYear(std::ostream& md, const ReportMeta& m, const BenchReference& ref)
     const double outside = num(y["time_outside_window_s"]);
     md << "| " << name << " | " << y.value("cycles", 0) << "/" << y.value("cycles_total", 0)
        << (y.value("complete", false) ? "" : " (incomplete)") << " | " << G(l1, 5) << " | "
-       << (pub == published.end() ? std::string("-") : G(pub->second.first, 4) + " (" +
-                                                           pub->second.second + ")")
+       << (pub == published.end() ? std::string("-")
+                                  : G(pub->second.first, 4) + " (" + pub->second.second + ")")
        // A ratio only for a whole year: a partial run's consumption is not comparable.
        << " | "
-       << (pub == published.end() || !y.value("complete", false)
-               ? std::string("-")
-               : G(l1 / pub->second.first, 4))
+       << (pub == published.end() || !y.value("complete", false) ? std::string("-")
+                                                                 : G(l1 / pub->second.first, 4))
        << " | " << G(num(y["normal_delta_v_m_s"]), 4) << " | " << G(num(td["total"]), 4) << " ("
        << G(num(td["north"]), 3) << " / " << G(num(td["south"]), 3) << " / "
        << G(num(td["east"]), 3) << " / " << G(num(td["west"]), 3) << ") | "
-       << (outside > 0 ? G(outside, 4) + " s, by up to " +
-                             Sci(num(y["max_window_violation_deg"])) + " deg (worst " +
-                             y.value("worst_time_utc", std::string("?")) + ")"
+       << (outside > 0 ? G(outside, 4) + " s, by up to " + Sci(num(y["max_window_violation_deg"])) +
+                             " deg (worst " + y.value("worst_time_utc", std::string("?")) + ")"
                        : std::string("0 s (box held)"))
        << " | " << G(num(y["max_abs_lat_deg"]), 4) << " / " << G(num(y["max_abs_lon_deg"]), 4)
        << " | " << y["fallbacks"].value("total", 0) << " | " << G(num(sol["median"]), 3) << " / "

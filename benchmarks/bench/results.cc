@@ -13,15 +13,35 @@
 namespace thrustsched::bench {
 
 const std::vector<std::string>& ContractColumns() {
-  static const std::vector<std::string> kColumns = {
-      "scenario",      "scheme",          "formulation",         "encoding",
-      "step_s",        "horizon_s",       "discretise_s",        "max_rel_err_phi",
-      "max_rel_err_gamma", "n_binaries",  "n_rows",              "n_columns",
-      "n_nonzeros",    "build_s",         "peak_rss_mb",         "lp_bound",
-      "lp_s",          "status",          "objective",           "best_bound",
-      "gap",           "time_to_first_s", "time_to_1pct_s",      "solve_s",
-      "consumption_l1_m_s", "delta_v_m_s", "n_burns",            "max_window_violation",
-      "max_window_violation_nonlinear_deg"};
+  static const std::vector<std::string> kColumns = {"scenario",
+                                                    "scheme",
+                                                    "formulation",
+                                                    "encoding",
+                                                    "step_s",
+                                                    "horizon_s",
+                                                    "discretise_s",
+                                                    "max_rel_err_phi",
+                                                    "max_rel_err_gamma",
+                                                    "n_binaries",
+                                                    "n_rows",
+                                                    "n_columns",
+                                                    "n_nonzeros",
+                                                    "build_s",
+                                                    "peak_rss_mb",
+                                                    "lp_bound",
+                                                    "lp_s",
+                                                    "status",
+                                                    "objective",
+                                                    "best_bound",
+                                                    "gap",
+                                                    "time_to_first_s",
+                                                    "time_to_1pct_s",
+                                                    "solve_s",
+                                                    "consumption_l1_m_s",
+                                                    "delta_v_m_s",
+                                                    "n_burns",
+                                                    "max_window_violation",
+                                                    "max_window_violation_nonlinear_deg"};
   return kColumns;
 }
 
@@ -33,16 +53,16 @@ const std::vector<std::string>& ResultColumns() {
     for (const std::string& name : ContractColumns()) c.push_back(name);
     for (const char* name :
          {"model", "n_thrusters", "threads", "time_limit_s", "relative_gap", "lp_algorithm",
-          "lp_relaxation_algorithm", "objective_step", "global_rel_err", "observed_order_phi", "observed_order_gamma",
-          "nodes", "time_to_opt_s", "time_within_1pct_of_opt_s", "operational_ok",
-          "max_window_violation_nodes", "window_unit", "terminal_ok", "terminal_error",
-          "published", "published_source", "ratio", "ext_cbc_status", "ext_cbc_objective",
-          "ext_cbc_s", "ext_glpsol_status", "ext_glpsol_objective", "ext_glpsol_s",
-          "published_time_s", "start_objective", "budget_rounds", "keep_out_binaries",
-          "max_risk", "max_risk_unmanoeuvred", "published_risk_unmanoeuvred", "mc_samples",
-          "mc_collisions_linear", "mc_collisions_nonlinear", "mc_min_distance_m", "verify_s",
-          "wall_s", "cpu_s", "load_1min", "exit", "solver_path", "search_steps", "target_1pct_s",
-          "target_opt_s", "target_gap", "target_gap_s", "note",
+          "lp_relaxation_algorithm", "objective_step", "global_rel_err", "observed_order_phi",
+          "observed_order_gamma", "nodes", "time_to_opt_s", "time_within_1pct_of_opt_s",
+          "operational_ok", "max_window_violation_nodes", "window_unit", "terminal_ok",
+          "terminal_error", "published", "published_source", "ratio", "ext_cbc_status",
+          "ext_cbc_objective", "ext_cbc_s", "ext_glpsol_status", "ext_glpsol_objective",
+          "ext_glpsol_s", "published_time_s", "start_objective", "budget_rounds",
+          "keep_out_binaries", "max_risk", "max_risk_unmanoeuvred", "published_risk_unmanoeuvred",
+          "mc_samples", "mc_collisions_linear", "mc_collisions_nonlinear", "mc_min_distance_m",
+          "verify_s", "wall_s", "cpu_s", "load_1min", "exit", "solver_path", "search_steps",
+          "target_1pct_s", "target_opt_s", "target_gap", "target_gap_s", "note",
           // Added after the first published results.csv: appended, so that
           // every earlier column keeps its position.
           "ext_highs_status", "ext_highs_objective", "ext_highs_s", "ext_highs_bound",
@@ -65,9 +85,12 @@ std::string Quote(const std::string& value) {
   if (value.find_first_of(",\"\n\r") == std::string::npos) return value;
   std::string out = "\"";
   for (char ch : value) {
-    if (ch == '"') out += "\"\"";
-    else if (ch == '\n' || ch == '\r') out += ' ';
-    else out += ch;
+    if (ch == '"')
+      out += "\"\"";
+    else if (ch == '\n' || ch == '\r')
+      out += ' ';
+    else
+      out += ch;
   }
   return out + "\"";
 }

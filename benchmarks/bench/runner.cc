@@ -164,8 +164,8 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
 
   // Discretize (timed) and build from that discretisation (timed by the library).
   auto t0 = Clock::now();
-  dynamics::DiscreteModel dm = dynamics::Discretize(model, p.thrusters.AccelerationMatrix(),
-                                                    p.grid, s.build.discretisation);
+  dynamics::DiscreteModel dm =
+      dynamics::Discretize(model, p.thrusters.AccelerationMatrix(), p.grid, s.build.discretisation);
   r.Set("discretise_s", Since(t0));
   std::unique_ptr<transcription::ScheduleMilp> milp;
   {
@@ -347,7 +347,8 @@ std::vector<Row> ReadRowsJson(const std::string& path) {
   std::vector<Row> rows;
   for (const auto& obj : j) {
     Row r;
-    for (auto it = obj.begin(); it != obj.end(); ++it) r.Set(it.key(), it.value().get<std::string>());
+    for (auto it = obj.begin(); it != obj.end(); ++it)
+      r.Set(it.key(), it.value().get<std::string>());
     rows.push_back(r);
   }
   return rows;

@@ -23,9 +23,9 @@
 namespace thrustsched::bench {
 
 struct RunContext {
-  std::string runs_dir;       // must exist
-  bool fork = true;           // false: run in-process (debugging)
-  bool keep_mps = false;      // keep exported MPS files after the cross-check
+  std::string runs_dir;   // must exist
+  bool fork = true;       // false: run in-process (debugging)
+  bool keep_mps = false;  // keep exported MPS files after the cross-check
 };
 
 /// Runs `spec` (repeat number `repeat`, 0-based) in a child process and

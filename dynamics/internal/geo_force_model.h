@@ -68,7 +68,8 @@ class GeoForceModel {
     if (coefficients_.degree >= 2) {
       const double c = std::cos(theta), s = std::sin(theta);
       const Vec3<T> r_ef = {c * r[0] + s * r[1], c * r[1] - s * r[0], r[2]};
-      const Vec3<T> a_ef = GeopotentialAccelerationEcef(r_ef, coefficients_, geo::kEarthMu, geo::kEarthRadius);
+      const Vec3<T> a_ef =
+          GeopotentialAccelerationEcef(r_ef, coefficients_, geo::kEarthMu, geo::kEarthRadius);
       acc[0] += c * a_ef[0] - s * a_ef[1];
       acc[1] += s * a_ef[0] + c * a_ef[1];
       acc[2] += a_ef[2];
@@ -80,7 +81,8 @@ class GeoForceModel {
                               ? ShadowFunction({Value(r[0]), Value(r[1]), Value(r[2])}, bodies.sun,
                                                geo::kEarthRadius) >= 0.0
                               : shadow == Shadow::kSunlit;
-      if (sunlit) Add(acc, SrpAcceleration(r, bodies.sun, srp_coefficient_, geo::kAstronomicalUnit));
+      if (sunlit)
+        Add(acc, SrpAcceleration(r, bodies.sun, srp_coefficient_, geo::kAstronomicalUnit));
     }
     return acc;
   }

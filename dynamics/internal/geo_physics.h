@@ -29,14 +29,14 @@ inline T Dot(const Vec3<T>& a, const Vec3<T>& b) {
 template <typename T>
 struct OrbitGeometry {
   T a, ex, ey, ix, iy;
-  T ecc_anomaly;       // E_Q
-  T n;                 // sqrt(mu / a^3)
-  T b;                 // a sqrt(1 - e^2)
-  T r;                 // |position|
-  T cos_l, sin_l;      // true longitude nu_Q
-  Vec3<T> f, g, w;     // equinoctial basis; w = orbit normal
-  Vec3<T> pos, vel;    // ECI
-  Vec3<T> u_r, u_t;    // RTN radial and along-track unit vectors (u_n = w)
+  T ecc_anomaly;     // E_Q
+  T n;               // sqrt(mu / a^3)
+  T b;               // a sqrt(1 - e^2)
+  T r;               // |position|
+  T cos_l, sin_l;    // true longitude nu_Q
+  Vec3<T> f, g, w;   // equinoctial basis; w = orbit normal
+  Vec3<T> pos, vel;  // ECI
+  Vec3<T> u_r, u_t;  // RTN radial and along-track unit vectors (u_n = w)
 };
 
 /// Solves E + ey cos E - ex sin E = k by Newton from E = k; always at least
@@ -57,8 +57,8 @@ T SolveKepler(const T& k, const T& ex, const T& ey) {
 
 /// Elements (a, ex, ey, ix, iy, mean longitude K = M_Q) -> orbit geometry.
 template <typename T>
-OrbitGeometry<T> Geometry(const T& a, const T& ex, const T& ey, const T& ix, const T& iy, const T& k,
-                          double mu) {
+OrbitGeometry<T> Geometry(const T& a, const T& ex, const T& ey, const T& ix, const T& iy,
+                          const T& k, double mu) {
   using std::cos;
   using std::sin;
   using std::sqrt;
@@ -117,7 +117,8 @@ std::array<Vec3<T>, 6> GaussMatrix(const OrbitGeometry<T>& o) {
   g[2] = {-b * o.cos_l / (n * a * a), r / nab * (o.ey + q * o.sin_l), o.ex * r * p6 / nab};
   g[3] = {zero, zero, r * p5 * o.cos_l / (2.0 * nab)};
   g[4] = {zero, zero, r * p5 * o.sin_l / (2.0 * nab)};
-  g[5] = {-(2.0 * r + a * b / (a + b) * p1) / (n * a * a), r * p2 * q / (n * b * (a + b)), r * p6 / nab};
+  g[5] = {-(2.0 * r + a * b / (a + b) * p1) / (n * a * a), r * p2 * q / (n * b * (a + b)),
+          r * p6 / nab};
   return g;
 }
 
@@ -133,8 +134,8 @@ struct GeopotentialCoefficients {
 /// Non-central geopotential acceleration in the Earth-fixed frame
 /// (Cunningham recursion, Montenbruck & Gill §3.2.4). r in m.
 template <typename T>
-Vec3<T> GeopotentialAccelerationEcef(const Vec3<T>& r, const GeopotentialCoefficients& cs, double mu,
-                                     double radius) {
+Vec3<T> GeopotentialAccelerationEcef(const Vec3<T>& r, const GeopotentialCoefficients& cs,
+                                     double mu, double radius) {
   constexpr int kN = GeopotentialCoefficients::kMaxDegree + 2;  // V, W up to degree + 1
   const int nmax = cs.degree;
   Vec3<T> acc = {T(0.0), T(0.0), T(0.0)};
@@ -157,8 +158,10 @@ Vec3<T> GeopotentialAccelerationEcef(const Vec3<T>& r, const GeopotentialCoeffic
       w[m + 1][m] = (2.0 * m + 1.0) * z0 * w[m][m];
     }
     for (int n = m + 2; n <= top; ++n) {
-      v[n][m] = ((2.0 * n - 1.0) * z0 * v[n - 1][m] - (n + m - 1.0) * rho * v[n - 2][m]) / double(n - m);
-      w[n][m] = ((2.0 * n - 1.0) * z0 * w[n - 1][m] - (n + m - 1.0) * rho * w[n - 2][m]) / double(n - m);
+      v[n][m] =
+          ((2.0 * n - 1.0) * z0 * v[n - 1][m] - (n + m - 1.0) * rho * v[n - 2][m]) / double(n - m);
+      w[n][m] =
+          ((2.0 * n - 1.0) * z0 * w[n - 1][m] - (n + m - 1.0) * rho * w[n - 2][m]) / double(n - m);
     }
   }
   for (int n = 2; n <= nmax; ++n) {
@@ -171,8 +174,10 @@ Vec3<T> GeopotentialAccelerationEcef(const Vec3<T>& r, const GeopotentialCoeffic
         acc[2] -= (n + 1.0) * c * v[n + 1][0];
       } else {
         const double fac = 0.5 * (n - m + 1.0) * (n - m + 2.0);
-        acc[0] += 0.5 * (-c * v[n + 1][m + 1] - s * w[n + 1][m + 1]) + fac * (c * v[n + 1][m - 1] + s * w[n + 1][m - 1]);
-        acc[1] += 0.5 * (-c * w[n + 1][m + 1] + s * v[n + 1][m + 1]) + fac * (-c * w[n + 1][m - 1] + s * v[n + 1][m - 1]);
+        acc[0] += 0.5 * (-c * v[n + 1][m + 1] - s * w[n + 1][m + 1]) +
+                  fac * (c * v[n + 1][m - 1] + s * w[n + 1][m - 1]);
+        acc[1] += 0.5 * (-c * w[n + 1][m + 1] + s * v[n + 1][m + 1]) +
+                  fac * (-c * w[n + 1][m - 1] + s * v[n + 1][m - 1]);
         acc[2] += (n - m + 1.0) * (-c * v[n + 1][m] - s * w[n + 1][m]);
       }
     }

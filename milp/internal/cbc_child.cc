@@ -95,12 +95,18 @@ class ChildListener : public DriverListener {
   }
   bool StopRequested() override { return g_child_stop.load(); }
   void SendOutcome(const DriverOutcome& o) {
-    OutcomeHeader h{o.status,       o.secondary,
-                    o.proven_optimal, o.proven_infeasible,
-                    o.continuous_unbounded, o.root_lp_stopped,
-                    o.stopped,      o.stopped_by_request,
-                    o.bound_min,    o.nodes,
-                    static_cast<long long>(o.x.size()), static_cast<long long>(o.detail.size())};
+    OutcomeHeader h{o.status,
+                    o.secondary,
+                    o.proven_optimal,
+                    o.proven_infeasible,
+                    o.continuous_unbounded,
+                    o.root_lp_stopped,
+                    o.stopped,
+                    o.stopped_by_request,
+                    o.bound_min,
+                    o.nodes,
+                    static_cast<long long>(o.x.size()),
+                    static_cast<long long>(o.detail.size())};
     std::vector<char> buf;
     Append(&buf, h);
     AppendVector(&buf, o.x);
@@ -208,7 +214,8 @@ T Take(const std::vector<char>& buf, size_t* offset) {
 Eigen::VectorXd TakeVector(const std::vector<char>& buf, size_t* offset, long long size) {
   Eigen::VectorXd x(size);
   // memcpy's pointers must not be null, even for zero bytes (an empty x has none).
-  if (size > 0) std::memcpy(x.data(), buf.data() + *offset, sizeof(double) * static_cast<size_t>(size));
+  if (size > 0)
+    std::memcpy(x.data(), buf.data() + *offset, sizeof(double) * static_cast<size_t>(size));
   *offset += sizeof(double) * static_cast<size_t>(size);
   return x;
 }

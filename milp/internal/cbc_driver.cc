@@ -148,9 +148,9 @@ class DriverState {
   SolveClock clock_;
   DriverListener* listener_;
   double sign_ = 1.0, offset_ = 0.0;
-  mutable std::mutex mu_;  // guards what follows and serialises listener calls
-  double last_bound_ = -kInf;     // best CBC (minimisation) bound seen
-  double last_recorded_ = kInf;   // best CBC (minimisation) objective handed over
+  mutable std::mutex mu_;        // guards what follows and serialises listener calls
+  double last_bound_ = -kInf;    // best CBC (minimisation) bound seen
+  double last_recorded_ = kInf;  // best CBC (minimisation) objective handed over
   double last_progress_ = -kInf;
   std::atomic<bool> stopped_by_request_{false};
 };
@@ -213,15 +213,15 @@ std::vector<std::string> DriverArguments(const DriverRequest& request, const Sol
   std::vector<std::string> args = {"thrustsched", "-log",
                                    std::to_string(quiet ? 0 : options.log_level)};
   if (clock.has_deadline()) {
-    args.insert(args.end(), {"-seconds", Num17(std::max(clock.Remaining(), 1e-3)), "-timeMode",
-                             "elapsed"});
+    args.insert(args.end(),
+                {"-seconds", Num17(std::max(clock.Remaining(), 1e-3)), "-timeMode", "elapsed"});
   }
   args.insert(args.end(), {"-ratioGap", Num17(options.relative_gap), "-allowableGap",
                            Num17(options.absolute_gap)});
   if (options.random_seed > 0) {
     // 0 keeps CBC's own default seeds (then results equal the cbc program's).
-    args.insert(args.end(), {"-randomCbcSeed", std::to_string(options.random_seed),
-                             "-randomSeed", std::to_string(options.random_seed)});
+    args.insert(args.end(), {"-randomCbcSeed", std::to_string(options.random_seed), "-randomSeed",
+                             std::to_string(options.random_seed)});
   }
   if (request.start_x.size() > 0) {
     // Everything not better than the start is pruned; a completed search that

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <exception>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -45,8 +45,8 @@ class LpStopHandler : public ClpEventHandler {
   int event(Event which) override {
     if (which != endOfIteration) return -1;
     ++count_;
-    const bool interior = options_ != nullptr &&
-                          options_->lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
+    const bool interior =
+        options_ != nullptr && options_->lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
     if (!interior && (count_ & 15) != 0) return -1;
     Progress();
     // CLP's interior point does not detect infeasibility: it iterates until
@@ -241,15 +241,15 @@ CoinArrays MakeArrays(const LpData& lp, double sign, bool round_integer_bounds) 
 }
 
 void LoadClp(ClpSimplex* clp, const CoinArrays& c) {
-  clp->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()),
-                   c.a.outerIndexPtr(), c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(),
-                   c.col_upper.data(), c.cost.data(), c.row_lower.data(), c.row_upper.data());
+  clp->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()), c.a.outerIndexPtr(),
+                   c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(), c.col_upper.data(),
+                   c.cost.data(), c.row_lower.data(), c.row_upper.data());
 }
 
 void LoadOsi(OsiClpSolverInterface* si, const CoinArrays& c, const LpData& lp) {
-  si->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()),
-                  c.a.outerIndexPtr(), c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(),
-                  c.col_upper.data(), c.cost.data(), c.row_lower.data(), c.row_upper.data());
+  si->loadProblem(static_cast<int>(c.a.cols()), static_cast<int>(c.a.rows()), c.a.outerIndexPtr(),
+                  c.a.innerIndexPtr(), c.a.valuePtr(), c.col_lower.data(), c.col_upper.data(),
+                  c.cost.data(), c.row_lower.data(), c.row_upper.data());
   for (int j = 0; j < lp.num_cols(); ++j) {
     if (IsInteger(lp, j)) si->setInteger(j);
   }

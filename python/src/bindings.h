@@ -20,13 +20,13 @@ namespace thrustsched::python {
 
 namespace py = pybind11;
 
-void BindDynamics(py::module_& m);   // dynamics_bindings.cc
-void BindMilp(py::module_& m);       // milp_bindings.cc
-void BindBuilt(py::module_& m);      // milp_bindings.cc (schedule MILPs users edit)
-void BindOutcomes(py::module_& m);   // scenario_bindings.cc
-void BindScenario(py::module_& m);   // scenario_bindings.cc
-void BindProblem(py::module_& m);    // problem_bindings.cc
-void BindSimulate(py::module_& m);   // simulate_bindings.cc
+void BindDynamics(py::module_& m);  // dynamics_bindings.cc
+void BindMilp(py::module_& m);      // milp_bindings.cc
+void BindBuilt(py::module_& m);     // milp_bindings.cc (schedule MILPs users edit)
+void BindOutcomes(py::module_& m);  // scenario_bindings.cc
+void BindScenario(py::module_& m);  // scenario_bindings.cc
+void BindProblem(py::module_& m);   // problem_bindings.cc
+void BindSimulate(py::module_& m);  // simulate_bindings.cc
 
 /// Solve settings given by keyword in Python; unset ones keep the problem's
 /// (scenario file) values.

@@ -92,7 +92,8 @@ std::vector<Eigen::VectorXd> UnstackVectors(const DoubleArray& a, const std::str
   return out;
 }
 
-Eigen::VectorXd ToVector(const DoubleArray& a, const std::string& name, int size, bool allow_infinite) {
+Eigen::VectorXd ToVector(const DoubleArray& a, const std::string& name, int size,
+                         bool allow_infinite) {
   CheckDims(a, name, {size}, allow_infinite);
   return Eigen::Map<const Eigen::VectorXd>(a.data(), a.shape(0));
 }

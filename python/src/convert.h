@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <Eigen/Core>
 
 #include "app/outputs.h"
 #include "milp/solver.h"

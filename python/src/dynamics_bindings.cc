@@ -29,7 +29,9 @@ namespace {
 using dynamics::LinearModel;
 using ModelPtr = std::shared_ptr<LinearModel>;
 
-py::array_t<double> VectorArray(const Eigen::VectorXd& v) { return py::array_t<double>(v.size(), v.data()); }
+py::array_t<double> VectorArray(const Eigen::VectorXd& v) {
+  return py::array_t<double>(v.size(), v.data());
+}
 
 // Input columns for the discretisation: a ThrusterSet (its 3 x m acceleration
 // matrix), a 3 x k array, or None (the identity: Gamma is the discretised B).
@@ -67,13 +69,17 @@ py::dict Discretize(const LinearModel& model, const std::vector<double>& grid_s,
 void BindDynamics(py::module_& m) {
   m.def("uniform_grid", &dynamics::UniformGrid, py::arg("t0_s"), py::arg("t1_s"),
         py::arg("num_intervals"), "N equal intervals on [t0, t1]: the N + 1 node times (s).");
-  m.def("schemes", [] {
-    std::vector<std::string> out;
-    for (dynamics::Scheme s : dynamics::AllSchemes()) out.emplace_back(dynamics::ToString(s));
-    return out;
-  }, "Names of the discretisation schemes (dynamics/discretisation.h).");
+  m.def(
+      "schemes",
+      [] {
+        std::vector<std::string> out;
+        for (dynamics::Scheme s : dynamics::AllSchemes()) out.emplace_back(dynamics::ToString(s));
+        return out;
+      },
+      "Names of the discretisation schemes (dynamics/discretisation.h).");
 
-  py::class_<LinearModel, ModelPtr>(m, "LinearModel",
+  py::class_<LinearModel, ModelPtr>(
+      m, "LinearModel",
       "A continuous-time linear model x' = A(t) x + B(t) a + d(t), y = C(t) x (SI units).")
       .def_property_readonly("name", [](const LinearModel& x) { return std::string(x.name()); })
       .def_property_readonly("num_states", &LinearModel::num_states)
@@ -82,15 +88,21 @@ void BindDynamics(py::module_& m) {
       .def_property_readonly("is_time_invariant", &LinearModel::is_time_invariant)
       .def_property_readonly("state_names", &LinearModel::state_names)
       .def_property_readonly("output_names", &LinearModel::output_names)
-      .def_property_readonly("state_scale", [](const LinearModel& x) { return VectorArray(x.state_scale()); },
-                             "Characteristic magnitude of each state component (SI).")
+      .def_property_readonly(
+          "state_scale", [](const LinearModel& x) { return VectorArray(x.state_scale()); },
+          "Characteristic magnitude of each state component (SI).")
       .def_property_readonly("time_scale_s", &LinearModel::time_scale)
-      .def("evaluate", [](const LinearModel& x, double t_s) {
-             const dynamics::ModelMatrices mm = x.Evaluate(t_s);
-             return py::make_tuple(mm.a, mm.b, VectorArray(mm.d));
-           }, py::arg("t_s"), "(A, B, d) at t (s since the model epoch).")
-      .def("output_matrix", [](const LinearModel& x, double t_s) { return Eigen::MatrixXd(x.EvaluateOutput(t_s).c); },
-           py::arg("t_s"), "C at t.")
+      .def(
+          "evaluate",
+          [](const LinearModel& x, double t_s) {
+            const dynamics::ModelMatrices mm = x.Evaluate(t_s);
+            return py::make_tuple(mm.a, mm.b, VectorArray(mm.d));
+          },
+          py::arg("t_s"), "(A, B, d) at t (s since the model epoch).")
+      .def(
+          "output_matrix",
+          [](const LinearModel& x, double t_s) { return Eigen::MatrixXd(x.EvaluateOutput(t_s).c); },
+          py::arg("t_s"), "C at t.")
       .def("discretise", &Discretize, py::arg("grid_s"), py::arg("inputs") = py::none(),
            py::arg("scheme") = "exact_zoh", py::arg("rk4_substeps") = 1,
            py::arg("reference_tolerance") = 1e-12,
@@ -103,20 +115,29 @@ void BindDynamics(py::module_& m) {
            py::arg("scheme") = "exact_zoh", py::arg("rk4_substeps") = 1,
            py::arg("reference_tolerance") = 1e-12, "Same as discretise.");
 
-  py::class_<dynamics::DoubleIntegrator1d, LinearModel, std::shared_ptr<dynamics::DoubleIntegrator1d>>(
-      m, "DoubleIntegrator1d", "x' = v, v' = a (state [x_m, v_m_s]).")
-      .def(py::init<double, double>(), py::arg("time_scale_s") = 1.0, py::arg("length_scale_m") = 1.0);
-  py::class_<dynamics::DoubleIntegrator3d, LinearModel, std::shared_ptr<dynamics::DoubleIntegrator3d>>(
+  py::class_<dynamics::DoubleIntegrator1d, LinearModel,
+             std::shared_ptr<dynamics::DoubleIntegrator1d>>(m, "DoubleIntegrator1d",
+                                                            "x' = v, v' = a (state [x_m, v_m_s]).")
+      .def(py::init<double, double>(), py::arg("time_scale_s") = 1.0,
+           py::arg("length_scale_m") = 1.0);
+  py::class_<dynamics::DoubleIntegrator3d, LinearModel,
+             std::shared_ptr<dynamics::DoubleIntegrator3d>>(
       m, "DoubleIntegrator3d", "r' = v, v' = a in R^3 (state [x, y, z, vx, vy, vz], m and m/s).")
-      .def(py::init<double, double>(), py::arg("time_scale_s") = 1.0, py::arg("length_scale_m") = 1.0);
+      .def(py::init<double, double>(), py::arg("time_scale_s") = 1.0,
+           py::arg("length_scale_m") = 1.0);
   py::class_<dynamics::HcwModel, LinearModel, std::shared_ptr<dynamics::HcwModel>>(
-      m, "Hcw", "Hill-Clohessy-Wiltshire relative motion about a circular orbit (x radial, y "
-                "along-track, z normal; m, m/s).")
-      .def(py::init<double, double>(), py::arg("mean_motion_rad_s"), py::arg("length_scale_m") = 1000.0)
+      m, "Hcw",
+      "Hill-Clohessy-Wiltshire relative motion about a circular orbit (x radial, y "
+      "along-track, z normal; m, m/s).")
+      .def(py::init<double, double>(), py::arg("mean_motion_rad_s"),
+           py::arg("length_scale_m") = 1000.0)
       .def_property_readonly("mean_motion_rad_s", &dynamics::HcwModel::mean_motion)
-      .def("transition_matrix", [](const dynamics::HcwModel& h, double tau_s) {
-        return Eigen::MatrixXd(h.TransitionMatrix(tau_s));
-      }, py::arg("tau_s"), "Phi(tau) = exp(A tau).");
+      .def(
+          "transition_matrix",
+          [](const dynamics::HcwModel& h, double tau_s) {
+            return Eigen::MatrixXd(h.TransitionMatrix(tau_s));
+          },
+          py::arg("tau_s"), "Phi(tau) = exp(A tau).");
   py::class_<dynamics::YamanakaAnkersenModel, LinearModel,
              std::shared_ptr<dynamics::YamanakaAnkersenModel>>(
       m, "YamanakaAnkersen", "Linearised relative motion about an elliptic orbit.")
@@ -124,8 +145,9 @@ void BindDynamics(py::module_& m) {
            py::arg("eccentricity"), py::arg("mu_m3_s2") = dynamics::YamanakaAnkersenModel::kEarthMu,
            py::arg("true_anomaly_at_epoch_rad") = 0.0, py::arg("length_scale_m") = 1000.0);
   py::class_<dynamics::GeoLinearModel, LinearModel, std::shared_ptr<dynamics::GeoLinearModel>>(
-      m, "Geo", "Linearised GEO station-keeping model (state [da_m, ex, ey, ix, iy, dl_rad], "
-                "outputs [dr_m, lat_rad, lon_rad]).")
+      m, "Geo",
+      "Linearised GEO station-keeping model (state [da_m, ex, ey, ix, iy, dl_rad], "
+      "outputs [dr_m, lat_rad, lon_rad]).")
       .def(py::init([](const py::kwargs& kwargs) {
              dynamics::GeoModelOptions o;
              for (const auto& item : kwargs) {
@@ -146,12 +168,13 @@ void BindDynamics(py::module_& m) {
            "Keyword arguments: the GeoModelOptions fields (station_longitude_deg, epoch, j2, "
            "tesseral, sun, moon, srp, gravity_degree, area_to_mass_m2_kg, reflectivity_cr).");
 
-  py::class_<dynamics::ThrusterSet>(m, "ThrusterSet",
+  py::class_<dynamics::ThrusterSet>(
+      m, "ThrusterSet",
       "On-off thrusters: names, unit directions in RTN, thrust (N), mass (kg), Isp (s).")
       .def(py::init([](const std::vector<std::string>& names, const DoubleArray& directions_rtn,
                        double thrust_n, double mass_kg, double isp_s) {
-             const Eigen::MatrixXd d = ToMatrix(directions_rtn, "directions_rtn",
-                                                static_cast<int>(names.size()), 3);
+             const Eigen::MatrixXd d =
+                 ToMatrix(directions_rtn, "directions_rtn", static_cast<int>(names.size()), 3);
              std::vector<dynamics::Thruster> t;
              for (size_t i = 0; i < names.size(); ++i) {
                dynamics::Thruster x;
@@ -175,23 +198,29 @@ void BindDynamics(py::module_& m) {
       .def_property_readonly("isp_s", &dynamics::ThrusterSet::isp_s)
       .def_property_readonly("acceleration_m_s2", &dynamics::ThrusterSet::acceleration)
       .def_property_readonly("mass_flow_kg_s", &dynamics::ThrusterSet::MassFlow)
-      .def_property_readonly("directions_rtn", [](const dynamics::ThrusterSet& s) {
-        Eigen::MatrixXd d(s.size(), 3);
-        for (int i = 0; i < s.size(); ++i) d.row(i) = s.thruster(i).direction.transpose();
-        return d;
-      })
-      .def_property_readonly("enabled", [](const dynamics::ThrusterSet& s) {
-        std::vector<bool> e;
-        for (const auto& t : s.thrusters()) e.push_back(t.enabled);
-        return e;
-      })
+      .def_property_readonly("directions_rtn",
+                             [](const dynamics::ThrusterSet& s) {
+                               Eigen::MatrixXd d(s.size(), 3);
+                               for (int i = 0; i < s.size(); ++i)
+                                 d.row(i) = s.thruster(i).direction.transpose();
+                               return d;
+                             })
+      .def_property_readonly("enabled",
+                             [](const dynamics::ThrusterSet& s) {
+                               std::vector<bool> e;
+                               for (const auto& t : s.thrusters()) e.push_back(t.enabled);
+                               return e;
+                             })
       .def_property_readonly("acceleration_matrix", &dynamics::ThrusterSet::AccelerationMatrix,
                              "3 x m: column i = (F/m) d_i, m/s^2 in RTN.")
-      .def_property_readonly("l1_factors", [](const dynamics::ThrusterSet& s) {
-        Eigen::VectorXd v(s.size());
-        for (int i = 0; i < s.size(); ++i) v[i] = s.L1Factor(i);
-        return VectorArray(v);
-      }, "Thesis L1 cost per second on, (F/m) ||d_i||_1 (m/s^2).")
+      .def_property_readonly(
+          "l1_factors",
+          [](const dynamics::ThrusterSet& s) {
+            Eigen::VectorXd v(s.size());
+            for (int i = 0; i < s.size(); ++i) v[i] = s.L1Factor(i);
+            return VectorArray(v);
+          },
+          "Thesis L1 cost per second on, (F/m) ||d_i||_1 (m/s^2).")
       .def("index", &dynamics::ThrusterSet::IndexOf, py::arg("name"))
       .def("subset", &dynamics::ThrusterSet::Subset, py::arg("names"))
       .def("disable", &dynamics::ThrusterSet::Disable, py::arg("names"))
@@ -199,7 +228,8 @@ void BindDynamics(py::module_& m) {
         std::string n;
         for (const auto& x : s.names()) n += (n.empty() ? "" : ", ") + x;
         return "ThrusterSet([" + n + "], thrust_n=" + std::to_string(s.thrust_n()) +
-               ", mass_kg=" + std::to_string(s.mass_kg()) + ", isp_s=" + std::to_string(s.isp_s()) + ")";
+               ", mass_kg=" + std::to_string(s.mass_kg()) + ", isp_s=" + std::to_string(s.isp_s()) +
+               ")";
       });
 }
 

@@ -29,7 +29,8 @@ PYBIND11_MODULE(_core, m) {
   m.def("solver_version", &thrustsched::milp::CbcVersion, "CBC and CLP versions.");
   py::register_exception<thrustsched::app::ScenarioError>(m, "ScenarioError", PyExc_ValueError);
 
-  py::module_ dynamics = m.def_submodule("dynamics", "Linear models, thruster sets, discretisation.");
+  py::module_ dynamics =
+      m.def_submodule("dynamics", "Linear models, thruster sets, discretisation.");
   py::module_ milp = m.def_submodule("milp", "MILP model building, CBC, MPS/LP writers.");
   thrustsched::python::BindDynamics(dynamics);
   thrustsched::python::BindMilp(milp);

@@ -46,11 +46,12 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
                             const std::vector<transcription::Burn>& burns) {
   DiscreteCheck c;
   const int m = p.thrusters.size();
-  c.rule_violations = transcription::CheckOperationalRules(
-      p.rules, p.history, p.forced_off, m, p.grid.front(), p.grid.back(), burns);
+  c.rule_violations = transcription::CheckOperationalRules(p.rules, p.history, p.forced_off, m,
+                                                           p.grid.front(), p.grid.back(), burns);
   c.operational_ok = c.rule_violations.empty();
   for (const transcription::RuleViolation& v : c.rule_violations) {
-    c.findings.push_back("rule " + v.rule + " at t = " + FormatG(v.time_s, 17) + " s: " + v.message);
+    c.findings.push_back("rule " + v.rule + " at t = " + FormatG(v.time_s, 17) +
+                         " s: " + v.message);
   }
   const Eigen::MatrixXi pattern = transcription::PatternFromBurns(burns, m, p.grid);
   Eigen::VectorXd x = p.initial_state;
@@ -63,7 +64,8 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
     c.outputs.push_back(cm * x);
     if (j >= 1 && p.grid[j] >= p.window.enforce_from_s - transcription::kTimeTolerance) {
       for (size_t k = 0; k < p.window.outputs.size(); ++k) {
-        const double excess = std::abs(c.outputs.back()[p.window.outputs[k]]) - p.window.half_widths[k];
+        const double excess =
+            std::abs(c.outputs.back()[p.window.outputs[k]]) - p.window.half_widths[k];
         if (excess > c.max_window_violation_at_nodes) {
           c.max_window_violation_at_nodes = excess;
           c.worst_time_s = p.grid[j];
@@ -75,9 +77,10 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
     x = dm.phi[j] * x + dm.gamma[j] * pattern.col(j).cast<double>() + dm.drift[j];
   }
   if (c.max_window_violation_at_nodes > 0.0) {
-    c.findings.push_back("window violated at grid nodes by " + FormatG(c.max_window_violation_at_nodes, 17) +
-                         " (output " + std::to_string(c.worst_output) + ", t = " +
-                         FormatG(c.worst_time_s, 17) + " s)");
+    c.findings.push_back("window violated at grid nodes by " +
+                         FormatG(c.max_window_violation_at_nodes, 17) + " (output " +
+                         std::to_string(c.worst_output) + ", t = " + FormatG(c.worst_time_s, 17) +
+                         " s)");
   }
   const transcription::TerminalSpec& term = p.terminal;
   if (term.kind == transcription::TerminalKind::kFixedState ||
@@ -95,7 +98,8 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
     c.terminal_error = worst;
     c.terminal_ok = worst <= kTerminalTolerance;
     if (!c.terminal_ok) {
-      c.findings.push_back("terminal constraint violated (scaled error " + FormatG(worst, 17) + ")");
+      c.findings.push_back("terminal constraint violated (scaled error " + FormatG(worst, 17) +
+                           ")");
     }
   }
   return c;
@@ -157,9 +161,10 @@ std::string CheckedSchedule::CheckJson() const {
     j["max_window_violation_nodes"] = d.max_window_violation_at_nodes;
     j["max_window_violation"] = d.max_window_violation_at_nodes;
     j["worst_time_s"] = d.worst_output >= 0 ? app::FiniteOrNull(d.worst_time_s) : nullptr;
-    j["worst_output"] = d.worst_output >= 0 && d.worst_output < static_cast<int>(ctx.output_names.size())
-                            ? nlohmann::json(ctx.output_names[d.worst_output])
-                            : nlohmann::json(nullptr);
+    j["worst_output"] =
+        d.worst_output >= 0 && d.worst_output < static_cast<int>(ctx.output_names.size())
+            ? nlohmann::json(ctx.output_names[d.worst_output])
+            : nlohmann::json(nullptr);
     j["terminal_ok"] = d.terminal_ok;
     j["terminal_error"] = d.terminal_error;
     const Eigen::VectorXd& xf = d.states.back();
@@ -192,8 +197,8 @@ std::string CheckedSchedule::ScheduleCsv() const {
   std::ostringstream os;
   os << "thruster,start_s,end_s,duration_s\n";
   for (const transcription::Burn& b : burns) {
-    os << names.at(b.thruster) << "," << FormatG(b.start_s, 17) << "," << FormatG(b.end_s, 17) << ","
-       << FormatG(b.duration_s(), 17) << "\n";
+    os << names.at(b.thruster) << "," << FormatG(b.start_s, 17) << "," << FormatG(b.end_s, 17)
+       << "," << FormatG(b.duration_s(), 17) << "\n";
   }
   return os.str();
 }
@@ -212,11 +217,14 @@ std::string CheckedSchedule::TrajectoryCsv() const {
   for (const std::string& n : ctx.output_names) os << ",out_" << n;
   for (const std::string& n : ctx.thruster_names()) os << ",on_" << n;
   os << "\n";
-  const Eigen::MatrixXi pattern = transcription::PatternFromBurns(burns, p.thrusters.size(), p.grid);
+  const Eigen::MatrixXi pattern =
+      transcription::PatternFromBurns(burns, p.thrusters.size(), p.grid);
   for (int j = 0; j <= p.num_intervals(); ++j) {
     os << FormatG(p.grid[j], 17);
-    for (int i = 0; i < discrete->states[j].size(); ++i) os << "," << FormatG(discrete->states[j][i], 17);
-    for (int i = 0; i < discrete->outputs[j].size(); ++i) os << "," << FormatG(discrete->outputs[j][i], 17);
+    for (int i = 0; i < discrete->states[j].size(); ++i)
+      os << "," << FormatG(discrete->states[j][i], 17);
+    for (int i = 0; i < discrete->outputs[j].size(); ++i)
+      os << "," << FormatG(discrete->outputs[j][i], 17);
     // As trajectory.csv: on_<thruster> = 1 while a burn covers t (the last node: none).
     for (int i = 0; i < p.thrusters.size(); ++i) {
       os << "," << (j < p.num_intervals() ? pattern(i, j) : 0);
@@ -283,8 +291,8 @@ nlohmann::json ArraySummaryJson(const ProblemContext& ctx, const transcription::
 
 std::shared_ptr<SolveOutcome> SolveAndCheck(
     const ProblemContext& ctx,
-    std::function<std::shared_ptr<const transcription::ScheduleMilp>()> build,
-    SolveRequest request, const std::shared_ptr<Job>& job, py::object callback) {
+    std::function<std::shared_ptr<const transcription::ScheduleMilp>()> build, SolveRequest request,
+    const std::shared_ptr<Job>& job, py::object callback) {
   auto out = std::make_shared<SolveOutcome>();
   out->checked->ctx = ctx;
   Job* j = job.get();
@@ -342,9 +350,9 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
         summary["check"]["nonlinear_error"] = out->checked->nonlinear_error;
       }
       if (ctx.scenario->problem.conjunction) {
-        summary["conjunction"] = app::ConjunctionJson(
-            milp->keep_out(), rounds ? &*rounds : nullptr,
-            out->checked->conjunction ? &*out->checked->conjunction : nullptr);
+        summary["conjunction"] =
+            app::ConjunctionJson(milp->keep_out(), rounds ? &*rounds : nullptr,
+                                 out->checked->conjunction ? &*out->checked->conjunction : nullptr);
       }
     } else {
       summary = ArraySummaryJson(ctx, r, out->interrupted, out->total_seconds);

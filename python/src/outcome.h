@@ -80,9 +80,9 @@ struct CheckedSchedule {
   std::vector<transcription::Burn> burns;        // on-off mode
   std::vector<transcription::Impulse> impulses;  // impulsive mode
   bool checked = false;
-  transcription::CheckReport report;             // scenario, on-off
-  transcription::ImpulsiveCheck impulsive_check; // scenario, impulsive
-  std::optional<DiscreteCheck> discrete;         // array problems
+  transcription::CheckReport report;              // scenario, on-off
+  transcription::ImpulsiveCheck impulsive_check;  // scenario, impulsive
+  std::optional<DiscreteCheck> discrete;          // array problems
   std::optional<transcription::ConjunctionCheckReport> conjunction;
   std::string nonlinear_error;  // the nonlinear replay failed (linear check kept)
   double check_seconds = 0.0;
@@ -100,7 +100,8 @@ void RunCheck(CheckedSchedule* c);
 
 struct SolveOutcome {
   transcription::ScheduleResult result;
-  std::shared_ptr<CheckedSchedule> checked = std::make_shared<CheckedSchedule>();  // burns, impulses, check
+  std::shared_ptr<CheckedSchedule> checked =
+      std::make_shared<CheckedSchedule>();  // burns, impulses, check
   bool interrupted = false;
   double total_seconds = 0.0;
   std::string summary_json;  // summary.json's content (scenario problems) or its subset
@@ -119,8 +120,8 @@ struct SolveRequest {
 /// solves, decodes and checks, with the job's stop flag and progress events.
 std::shared_ptr<SolveOutcome> SolveAndCheck(
     const ProblemContext& ctx,
-    std::function<std::shared_ptr<const transcription::ScheduleMilp>()> build,
-    SolveRequest request, const std::shared_ptr<Job>& job, py::object callback);
+    std::function<std::shared_ptr<const transcription::ScheduleMilp>()> build, SolveRequest request,
+    const std::shared_ptr<Job>& job, py::object callback);
 
 }  // namespace thrustsched::python
 

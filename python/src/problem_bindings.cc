@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
 
 #include "app/json_reader.h"
 #include "bindings.h"
@@ -50,8 +50,12 @@ class ArrayModel final : public dynamics::LinearModel {
   ArrayModel(int num_states, std::vector<Eigen::MatrixXd> c, std::vector<double> grid,
              Eigen::VectorXd scale, std::vector<std::string> state_names,
              std::vector<std::string> output_names)
-      : n_(num_states), c_(std::move(c)), grid_(std::move(grid)), scale_(std::move(scale)),
-        state_names_(std::move(state_names)), output_names_(std::move(output_names)) {}
+      : n_(num_states),
+        c_(std::move(c)),
+        grid_(std::move(grid)),
+        scale_(std::move(scale)),
+        state_names_(std::move(state_names)),
+        output_names_(std::move(output_names)) {}
 
   std::string_view name() const override { return "arrays"; }
   int num_states() const override { return n_; }
@@ -74,8 +78,10 @@ class ArrayModel final : public dynamics::LinearModel {
         return o;
       }
     }
-    throw std::invalid_argument("the output matrix of an array problem is known at the grid nodes "
-                                "only, not at t = " + app::FormatNumber(t) + " s");
+    throw std::invalid_argument(
+        "the output matrix of an array problem is known at the grid nodes "
+        "only, not at t = " +
+        app::FormatNumber(t) + " s");
   }
   std::vector<std::string> state_names() const override { return state_names_; }
   std::vector<std::string> output_names() const override { return output_names_; }
@@ -114,7 +120,8 @@ transcription::OperationalRules ParseRules(const std::string& json_text, const s
 }
 
 std::vector<std::string> DefaultNames(const std::optional<std::vector<std::string>>& given,
-                                      int count, const std::string& prefix, const std::string& what) {
+                                      int count, const std::string& prefix,
+                                      const std::string& what) {
   if (given) {
     if (static_cast<int>(given->size()) != count) {
       throw std::invalid_argument(what + ": expected " + std::to_string(count) + " names, got " +
@@ -138,8 +145,10 @@ std::shared_ptr<ArrayProblem> MakeArrayProblem(
     const std::vector<int>& window_outputs, const std::vector<double>& window_half_widths,
     std::optional<double> window_enforce_from_s, bool window_soft, double window_soft_penalty,
     double window_margin, const std::string& rules_json, const std::string& objective,
-    double burn_start_penalty, const std::string& terminal, const std::optional<DoubleArray>& terminal_target,
-    const std::optional<DoubleArray>& terminal_tolerance, const std::optional<DoubleArray>& state_scale,
+    double burn_start_penalty, const std::string& terminal,
+    const std::optional<DoubleArray>& terminal_target,
+    const std::optional<DoubleArray>& terminal_tolerance,
+    const std::optional<DoubleArray>& state_scale,
     const std::optional<std::vector<std::string>>& state_names,
     const std::optional<std::vector<std::string>>& output_names,
     const std::vector<std::tuple<std::string, double, double>>& forced_off) {
@@ -157,7 +166,8 @@ std::shared_ptr<ArrayProblem> MakeArrayProblem(
   auto dm = std::make_shared<dynamics::DiscreteModel>();
   dm->grid = grid_s;
   dm->phi = UnstackMatrices(phi, "phi", nn, n, n);
-  dm->gamma = UnstackMatrices(gamma, "gamma (columns = thrusters " + std::to_string(m) + ")", nn, n, m);
+  dm->gamma =
+      UnstackMatrices(gamma, "gamma (columns = thrusters " + std::to_string(m) + ")", nn, n, m);
   dm->drift = drift ? UnstackVectors(*drift, "drift", nn, n)
                     : std::vector<Eigen::VectorXd>(nn, Eigen::VectorXd::Zero(n));
   std::vector<Eigen::MatrixXd> c;
@@ -167,15 +177,16 @@ std::shared_ptr<ArrayProblem> MakeArrayProblem(
     c = UnstackMatrices(output_matrix, "output_matrix (per node)", nn + 1, -1, n);
   }
   const int p = static_cast<int>(c[0].rows());
-  Eigen::VectorXd scale = state_scale ? ToVector(*state_scale, "state_scale", n) : Eigen::VectorXd::Ones(n);
+  Eigen::VectorXd scale =
+      state_scale ? ToVector(*state_scale, "state_scale", n) : Eigen::VectorXd::Ones(n);
   if (!(scale.array() > 0.0).all()) throw std::invalid_argument("state_scale: entries must be > 0");
 
   auto prob = std::make_shared<transcription::ScheduleProblem>();
   ArrayProblem out;
   out.ctx.state_names = DefaultNames(state_names, n, "x", "state_names");
   out.ctx.output_names = DefaultNames(output_names, p, "y", "output_names");
-  prob->model = std::make_shared<ArrayModel>(n, c, grid_s, scale, out.ctx.state_names,
-                                             out.ctx.output_names);
+  prob->model =
+      std::make_shared<ArrayModel>(n, c, grid_s, scale, out.ctx.state_names, out.ctx.output_names);
   prob->thrusters = thrusters;
   prob->grid = grid_s;
   prob->initial_state = ToVector(initial_state, "initial_state", n);
@@ -186,22 +197,25 @@ std::shared_ptr<ArrayProblem> MakeArrayProblem(
   prob->window.soft = window_soft;
   prob->window.soft_penalty = window_soft_penalty;
   prob->window.margin = window_margin;
-  prob->objective.kind = app::Wrap("objective", [&] { return transcription::ParseObjectiveKind(objective); });
+  prob->objective.kind =
+      app::Wrap("objective", [&] { return transcription::ParseObjectiveKind(objective); });
   prob->objective.burn_start_penalty = burn_start_penalty;
   if (terminal == "free") {
     prob->terminal.kind = transcription::TerminalKind::kFree;
   } else if (terminal == "fixed" || terminal == "box") {
     prob->terminal.kind = terminal == "fixed" ? transcription::TerminalKind::kFixedState
                                               : transcription::TerminalKind::kStateBox;
-    if (!terminal_target) throw std::invalid_argument("terminal_target: needed with terminal=\"" + terminal + "\"");
+    if (!terminal_target)
+      throw std::invalid_argument("terminal_target: needed with terminal=\"" + terminal + "\"");
     prob->terminal.target = ToVector(*terminal_target, "terminal_target", n);
     if (terminal == "box") {
-      if (!terminal_tolerance) throw std::invalid_argument("terminal_tolerance: needed with terminal=\"box\"");
+      if (!terminal_tolerance)
+        throw std::invalid_argument("terminal_tolerance: needed with terminal=\"box\"");
       prob->terminal.tolerance = ToVector(*terminal_tolerance, "terminal_tolerance", n);
     }
   } else {
-    throw std::invalid_argument("terminal: expected \"free\", \"fixed\" or \"box\", got \"" + terminal +
-                                "\" (station-keeping sets need a continuous model)");
+    throw std::invalid_argument("terminal: expected \"free\", \"fixed\" or \"box\", got \"" +
+                                terminal + "\" (station-keeping sets need a continuous model)");
   }
   for (const auto& [name, from, until] : forced_off) {
     transcription::ForcedOff f;
@@ -221,7 +235,8 @@ std::shared_ptr<ArrayProblem> MakeArrayProblem(
 
 void BindProblem(py::module_& m) {
   py::class_<ArrayProblem, std::shared_ptr<ArrayProblem>>(
-      m, "ArrayProblem", "A scheduling problem from numpy arrays (see thrustsched.ScheduleProblem).")
+      m, "ArrayProblem",
+      "A scheduling problem from numpy arrays (see thrustsched.ScheduleProblem).")
       .def(py::init(&MakeArrayProblem), py::arg("phi"), py::arg("gamma"), py::arg("grid_s"),
            py::arg("initial_state"), py::arg("output_matrix"), py::arg("thrusters"),
            py::arg("drift") = py::none(), py::arg("window_outputs") = std::vector<int>{},
@@ -234,28 +249,39 @@ void BindProblem(py::module_& m) {
            py::arg("state_scale") = py::none(), py::arg("state_names") = py::none(),
            py::arg("output_names") = py::none(),
            py::arg("forced_off") = std::vector<std::tuple<std::string, double, double>>{})
-      .def_property_readonly("num_intervals", [](const ArrayProblem& a) { return a.ctx.problem->num_intervals(); })
-      .def_property_readonly("num_states", [](const ArrayProblem& a) { return a.ctx.problem->model->num_states(); })
-      .def_property_readonly("grid_s", [](const ArrayProblem& a) {
-        const auto& g = a.ctx.problem->grid;
-        return py::array_t<double>(static_cast<py::ssize_t>(g.size()), g.data());
-      })
-      .def_property_readonly("thruster_names", [](const ArrayProblem& a) { return a.ctx.thruster_names(); })
+      .def_property_readonly("num_intervals",
+                             [](const ArrayProblem& a) { return a.ctx.problem->num_intervals(); })
+      .def_property_readonly(
+          "num_states", [](const ArrayProblem& a) { return a.ctx.problem->model->num_states(); })
+      .def_property_readonly("grid_s",
+                             [](const ArrayProblem& a) {
+                               const auto& g = a.ctx.problem->grid;
+                               return py::array_t<double>(static_cast<py::ssize_t>(g.size()),
+                                                          g.data());
+                             })
+      .def_property_readonly("thruster_names",
+                             [](const ArrayProblem& a) { return a.ctx.thruster_names(); })
       .def_property_readonly("state_names", [](const ArrayProblem& a) { return a.ctx.state_names; })
-      .def_property_readonly("output_names", [](const ArrayProblem& a) { return a.ctx.output_names; })
-      .def_property_readonly("window_outputs", [](const ArrayProblem& a) {
-        std::vector<std::string> out;
-        for (int o : a.ctx.problem->window.outputs) out.push_back(a.ctx.output_names.at(o));
-        return out;
-      })
-      .def_property_readonly("window_half_widths", [](const ArrayProblem& a) { return a.ctx.problem->window.half_widths; })
+      .def_property_readonly("output_names",
+                             [](const ArrayProblem& a) { return a.ctx.output_names; })
+      .def_property_readonly("window_outputs",
+                             [](const ArrayProblem& a) {
+                               std::vector<std::string> out;
+                               for (int o : a.ctx.problem->window.outputs)
+                                 out.push_back(a.ctx.output_names.at(o));
+                               return out;
+                             })
+      .def_property_readonly(
+          "window_half_widths",
+          [](const ArrayProblem& a) { return a.ctx.problem->window.half_widths; })
       .def(
           "solve",
-          [](const ArrayProblem& a, std::optional<double> time_limit_s, std::optional<double> relative_gap,
-             std::optional<int> threads, std::optional<long long> max_nodes, std::optional<bool> search,
+          [](const ArrayProblem& a, std::optional<double> time_limit_s,
+             std::optional<double> relative_gap, std::optional<int> threads,
+             std::optional<long long> max_nodes, std::optional<bool> search,
              std::optional<int> log_level, std::optional<int> random_seed,
-             std::optional<std::string> formulation, std::optional<std::string> encoding, bool check,
-             double progress_interval_s, py::object callback) {
+             std::optional<std::string> formulation, std::optional<std::string> encoding,
+             bool check, double progress_interval_s, py::object callback) {
             SolveSettings st;
             st.time_limit_s = time_limit_s;
             st.relative_gap = relative_gap;
@@ -275,7 +301,8 @@ void BindProblem(py::module_& m) {
             const ProblemContext ctx = a.ctx;
             const transcription::BuildOptions build = opt.build;
             auto make = [ctx, build] {
-              return std::make_shared<const transcription::ScheduleMilp>(*ctx.problem, *ctx.discrete, build);
+              return std::make_shared<const transcription::ScheduleMilp>(*ctx.problem,
+                                                                         *ctx.discrete, build);
             };
             return SolveAndCheck(ctx, make, req, std::make_shared<Job>(), std::move(callback));
           },

@@ -68,8 +68,9 @@ std::shared_ptr<CheckedSchedule> CheckScenarioBurns(const ScenarioPtr& s,
   auto c = std::make_shared<CheckedSchedule>();
   c->ctx = ScenarioContext(s);
   if (s->impulsive()) {
-    throw std::invalid_argument("the scenario is impulsive: give impulses (thruster, node, "
-                                "delta_v_m_s), not burns");
+    throw std::invalid_argument(
+        "the scenario is impulsive: give impulses (thruster, node, "
+        "delta_v_m_s), not burns");
   }
   c->burns = BurnsFromColumns(c->ctx, thrusters, start_s, end_s);
   py::gil_scoped_release nogil;
@@ -87,7 +88,8 @@ std::shared_ptr<CheckedSchedule> CheckScenarioImpulses(const ScenarioPtr& s,
     throw std::invalid_argument("the scenario is on-off: give burns (thruster, start_s, end_s)");
   }
   if (nodes.size() != thrusters.size() || delta_v_m_s.size() != thrusters.size()) {
-    throw std::invalid_argument("schedule: thruster, node and delta_v_m_s columns differ in length");
+    throw std::invalid_argument(
+        "schedule: thruster, node and delta_v_m_s columns differ in length");
   }
   const std::vector<std::string> names = s->thruster_names();
   for (size_t k = 0; k < thrusters.size(); ++k) {
@@ -180,13 +182,15 @@ void ApplySettings(const SolveSettings& st, transcription::SolveScheduleOptions*
   }
   if (st.relative_gap) {
     if (!(*st.relative_gap >= 0.0) || !std::isfinite(*st.relative_gap)) {
-      throw std::invalid_argument("relative_gap: must be finite and >= 0, got " + F(*st.relative_gap));
+      throw std::invalid_argument("relative_gap: must be finite and >= 0, got " +
+                                  F(*st.relative_gap));
     }
     o->milp.relative_gap = *st.relative_gap;
   }
   if (st.threads) {
     if (*st.threads < 1 || *st.threads > 64) {
-      throw std::invalid_argument("threads: must be in [1, 64], got " + std::to_string(*st.threads));
+      throw std::invalid_argument("threads: must be in [1, 64], got " +
+                                  std::to_string(*st.threads));
     }
     o->milp.threads = *st.threads;
   }
@@ -220,13 +224,16 @@ void ApplyBuildSettings(const std::optional<std::string>& scheme,
                         const std::optional<std::string>& formulation,
                         const std::optional<std::string>& encoding,
                         transcription::BuildOptions* build) {
-  if (scheme) build->discretisation.scheme = app::Wrap("scheme", [&] { return dynamics::ParseScheme(*scheme); });
+  if (scheme)
+    build->discretisation.scheme =
+        app::Wrap("scheme", [&] { return dynamics::ParseScheme(*scheme); });
   if (formulation) {
     build->formulation =
         app::Wrap("formulation", [&] { return transcription::ParseFormulation(*formulation); });
   }
   if (encoding) {
-    build->encoding = app::Wrap("encoding", [&] { return transcription::ParseEncoding(*encoding); });
+    build->encoding =
+        app::Wrap("encoding", [&] { return transcription::ParseEncoding(*encoding); });
   }
 }
 
@@ -258,8 +265,8 @@ std::vector<transcription::Burn> BurnsFromColumns(const ProblemContext& ctx,
     b.start_s = start_s[k];
     b.end_s = end_s[k];
     if (!std::isfinite(b.start_s) || !std::isfinite(b.end_s)) {
-      throw std::invalid_argument(where + ": start_s and end_s must be finite, got " + F(b.start_s) +
-                                  ", " + F(b.end_s));
+      throw std::invalid_argument(where + ": start_s and end_s must be finite, got " +
+                                  F(b.start_s) + ", " + F(b.end_s));
     }
     if (b.end_s < b.start_s) {
       throw std::invalid_argument(where + ": end_s " + F(b.end_s) + " is before start_s " +
@@ -275,27 +282,32 @@ void BindOutcomes(py::module_& m) {
       m, "CheckedSchedule", "A schedule and the checker's verdict on it.")
       .def("check_json", &CheckedSchedule::CheckJson,
            "The verdict as summary.json's \"check\" object (JSON text; \"null\" if not checked).")
-      .def("schedule_csv", &CheckedSchedule::ScheduleCsv,
-           py::call_guard<py::gil_scoped_release>(), "schedule.csv (impulses.csv) as text.")
+      .def("schedule_csv", &CheckedSchedule::ScheduleCsv, py::call_guard<py::gil_scoped_release>(),
+           "schedule.csv (impulses.csv) as text.")
       .def("trajectory_csv", &CheckedSchedule::TrajectoryCsv,
            py::call_guard<py::gil_scoped_release>(), "trajectory.csv as text.")
       .def_property_readonly("checked", [](const CheckedSchedule& c) { return c.checked; })
-      .def_property_readonly("burn_thrusters", [](const CheckedSchedule& c) {
-        std::vector<std::string> out;
-        const std::vector<std::string> names = c.ctx.thruster_names();
-        for (const auto& b : c.burns) out.push_back(names[b.thruster]);
-        return out;
-      })
-      .def_property_readonly("burn_start_s", [](const CheckedSchedule& c) {
-        std::vector<double> v;
-        for (const auto& b : c.burns) v.push_back(b.start_s);
-        return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
-      })
-      .def_property_readonly("burn_end_s", [](const CheckedSchedule& c) {
-        std::vector<double> v;
-        for (const auto& b : c.burns) v.push_back(b.end_s);
-        return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
-      })
+      .def_property_readonly("burn_thrusters",
+                             [](const CheckedSchedule& c) {
+                               std::vector<std::string> out;
+                               const std::vector<std::string> names = c.ctx.thruster_names();
+                               for (const auto& b : c.burns) out.push_back(names[b.thruster]);
+                               return out;
+                             })
+      .def_property_readonly("burn_start_s",
+                             [](const CheckedSchedule& c) {
+                               std::vector<double> v;
+                               for (const auto& b : c.burns) v.push_back(b.start_s);
+                               return py::array_t<double>(static_cast<py::ssize_t>(v.size()),
+                                                          v.data());
+                             })
+      .def_property_readonly("burn_end_s",
+                             [](const CheckedSchedule& c) {
+                               std::vector<double> v;
+                               for (const auto& b : c.burns) v.push_back(b.end_s);
+                               return py::array_t<double>(static_cast<py::ssize_t>(v.size()),
+                                                          v.data());
+                             })
       .def_property_readonly("discrete_states", [](const CheckedSchedule& c) -> py::object {
         if (!c.discrete) return py::none();
         return StackVectors(c.discrete->states);
@@ -303,82 +315,105 @@ void BindOutcomes(py::module_& m) {
 
   py::class_<SolveOutcome, std::shared_ptr<SolveOutcome>>(m, "SolveOutcome",
                                                           "What a solve returned (C++ side).")
-      .def_property_readonly("status", [](const SolveOutcome& o) { return StatusName(o.result.solve.status); })
-      .def_property_readonly("objective", [](const SolveOutcome& o) { return o.result.solve.objective; })
-      .def_property_readonly("best_bound", [](const SolveOutcome& o) { return o.result.solve.best_bound; })
+      .def_property_readonly(
+          "status", [](const SolveOutcome& o) { return StatusName(o.result.solve.status); })
+      .def_property_readonly("objective",
+                             [](const SolveOutcome& o) { return o.result.solve.objective; })
+      .def_property_readonly("best_bound",
+                             [](const SolveOutcome& o) { return o.result.solve.best_bound; })
       .def_property_readonly("gap", [](const SolveOutcome& o) { return o.result.solve.gap; })
       .def_property_readonly("nodes", [](const SolveOutcome& o) { return o.result.solve.nodes; })
       .def_property_readonly("detail", [](const SolveOutcome& o) { return o.result.solve.detail; })
-      .def_property_readonly("solve_seconds", [](const SolveOutcome& o) { return o.result.solve.wall_seconds; })
+      .def_property_readonly("solve_seconds",
+                             [](const SolveOutcome& o) { return o.result.solve.wall_seconds; })
       .def_property_readonly("interrupted", [](const SolveOutcome& o) { return o.interrupted; })
       .def_property_readonly("total_seconds", [](const SolveOutcome& o) { return o.total_seconds; })
-      .def_property_readonly("has_schedule", [](const SolveOutcome& o) { return o.result.has_schedule(); })
+      .def_property_readonly("has_schedule",
+                             [](const SolveOutcome& o) { return o.result.has_schedule(); })
       .def_property_readonly("summary_json", [](const SolveOutcome& o) { return o.summary_json; })
       .def_readonly("checked", &SolveOutcome::checked)
-      .def_property_readonly("x", [](const SolveOutcome& o) {
-        return py::array_t<double>(o.x.size(), o.x.data());
-      })
-      .def_property_readonly("states", [](const SolveOutcome& o) { return StackVectors(o.result.schedule.states); },
-                             "Discrete-model states at the grid nodes, [N + 1, n].")
-      .def_property_readonly("outputs", [](const SolveOutcome& o) { return StackVectors(o.result.schedule.outputs); },
-                             "Model outputs at the grid nodes, [N + 1, p].")
-      .def_property_readonly("pattern", [](const SolveOutcome& o) {
-        const Eigen::MatrixXi& p = o.result.schedule.pattern;
-        py::array_t<int> a({static_cast<py::ssize_t>(p.rows()), static_cast<py::ssize_t>(p.cols())});
-        auto r = a.mutable_unchecked<2>();
-        for (int i = 0; i < p.rows(); ++i) {
-          for (int j = 0; j < p.cols(); ++j) r(i, j) = p(i, j);
-        }
-        return a;
-      }, "On-off pattern, thrusters x intervals (0/1).");
+      .def_property_readonly(
+          "x", [](const SolveOutcome& o) { return py::array_t<double>(o.x.size(), o.x.data()); })
+      .def_property_readonly(
+          "states", [](const SolveOutcome& o) { return StackVectors(o.result.schedule.states); },
+          "Discrete-model states at the grid nodes, [N + 1, n].")
+      .def_property_readonly(
+          "outputs", [](const SolveOutcome& o) { return StackVectors(o.result.schedule.outputs); },
+          "Model outputs at the grid nodes, [N + 1, p].")
+      .def_property_readonly(
+          "pattern",
+          [](const SolveOutcome& o) {
+            const Eigen::MatrixXi& p = o.result.schedule.pattern;
+            py::array_t<int> a(
+                {static_cast<py::ssize_t>(p.rows()), static_cast<py::ssize_t>(p.cols())});
+            auto r = a.mutable_unchecked<2>();
+            for (int i = 0; i < p.rows(); ++i) {
+              for (int j = 0; j < p.cols(); ++j) r(i, j) = p(i, j);
+            }
+            return a;
+          },
+          "On-off pattern, thrusters x intervals (0/1).");
 }
 
 void BindScenario(py::module_& m) {
   py::class_<app::Scenario, ScenarioPtr>(m, "ParsedScenario",
-                                        "A scenario as the C++ parser understood it (read-only).")
+                                         "A scenario as the C++ parser understood it (read-only).")
       .def_readonly("name", &app::Scenario::name)
       .def_readonly("path", &app::Scenario::path)
-      .def_property_readonly("model_type", [](const app::Scenario& s) { return std::string(app::ToString(s.model_type)); })
+      .def_property_readonly(
+          "model_type",
+          [](const app::Scenario& s) { return std::string(app::ToString(s.model_type)); })
       .def_property_readonly("impulsive", &app::Scenario::impulsive)
       .def_readonly("num_intervals", &app::Scenario::num_intervals)
       .def_readonly("step_s", &app::Scenario::step_s)
-      .def_property_readonly("start_s", [](const app::Scenario& s) { return s.problem.grid.front(); })
+      .def_property_readonly("start_s",
+                             [](const app::Scenario& s) { return s.problem.grid.front(); })
       .def_property_readonly("end_s", [](const app::Scenario& s) { return s.problem.grid.back(); })
       .def_property_readonly("grid_s", [](const app::Scenario& s) { return Grid(s.problem); })
       .def_property_readonly("thruster_names", &app::Scenario::thruster_names)
       .def_readonly("window_unit", &app::Scenario::window_unit)
       .def_readonly("window_half_widths", &app::Scenario::window_half_widths)
       .def_readonly("window_unit_per_output_unit", &app::Scenario::window_unit_per_output_unit)
-      .def_property_readonly("window_outputs", [](const app::Scenario& s) {
-        std::vector<std::string> out;
-        const auto names = s.problem.model->output_names();
-        for (int o : s.problem.window.outputs) out.push_back(names.at(o));
-        return out;
-      })
-      .def_property_readonly("state_names", [](const app::Scenario& s) { return s.problem.model->state_names(); })
-      .def_property_readonly("output_names", [](const app::Scenario& s) { return s.problem.model->output_names(); })
-      .def_property_readonly("epoch", [](const app::Scenario& s) -> py::object {
-        if (!s.geo) return py::none();
-        return py::str(s.geo->epoch);
-      })
-      .def_property_readonly("objective_kind", [](const app::Scenario& s) {
-        return std::string(ToString(s.problem.objective.kind));
-      })
-      .def_property_readonly("mean_motion_rad_s", [](const app::Scenario& s) -> py::object {
-        if (const auto* h = dynamic_cast<const dynamics::HcwModel*>(s.problem.model.get())) {
-          return py::float_(h->mean_motion());
-        }
-        return py::none();
-      })
-      .def_property_readonly("time_limit_s", [](const app::Scenario& s) { return s.solve.time_limit_s; })
+      .def_property_readonly("window_outputs",
+                             [](const app::Scenario& s) {
+                               std::vector<std::string> out;
+                               const auto names = s.problem.model->output_names();
+                               for (int o : s.problem.window.outputs) out.push_back(names.at(o));
+                               return out;
+                             })
+      .def_property_readonly("state_names",
+                             [](const app::Scenario& s) { return s.problem.model->state_names(); })
+      .def_property_readonly("output_names",
+                             [](const app::Scenario& s) { return s.problem.model->output_names(); })
+      .def_property_readonly("epoch",
+                             [](const app::Scenario& s) -> py::object {
+                               if (!s.geo) return py::none();
+                               return py::str(s.geo->epoch);
+                             })
+      .def_property_readonly(
+          "objective_kind",
+          [](const app::Scenario& s) { return std::string(ToString(s.problem.objective.kind)); })
+      .def_property_readonly(
+          "mean_motion_rad_s",
+          [](const app::Scenario& s) -> py::object {
+            if (const auto* h = dynamic_cast<const dynamics::HcwModel*>(s.problem.model.get())) {
+              return py::float_(h->mean_motion());
+            }
+            return py::none();
+          })
+      .def_property_readonly("time_limit_s",
+                             [](const app::Scenario& s) { return s.solve.time_limit_s; })
       .def_property_readonly("threads", [](const app::Scenario& s) { return s.solve.threads; })
-      .def_property_readonly("initial_state", [](const app::Scenario& s) {
-        return py::array_t<double>(s.problem.initial_state.size(), s.problem.initial_state.data());
-      })
-      .def_property_readonly("state_scale", [](const app::Scenario& s) {
-        const Eigen::VectorXd v = s.problem.model->state_scale();
-        return py::array_t<double>(v.size(), v.data());
-      })
+      .def_property_readonly("initial_state",
+                             [](const app::Scenario& s) {
+                               return py::array_t<double>(s.problem.initial_state.size(),
+                                                          s.problem.initial_state.data());
+                             })
+      .def_property_readonly("state_scale",
+                             [](const app::Scenario& s) {
+                               const Eigen::VectorXd v = s.problem.model->state_scale();
+                               return py::array_t<double>(v.size(), v.data());
+                             })
       .def_property_readonly("raw_json", [](const app::Scenario& s) { return s.raw.dump(); });
 
   m.def(
@@ -392,23 +427,26 @@ void BindScenario(py::module_& m) {
         s->path = source;
         return s;
       },
-      py::arg("text"), py::arg("source") = "", py::arg("extra_sections") = std::vector<std::string>{},
+      py::arg("text"), py::arg("source") = "",
+      py::arg("extra_sections") = std::vector<std::string>{},
       py::call_guard<py::gil_scoped_release>(),
       "Parses scenario JSON text with the CLI's parser. `source` (the file path) names the text "
       "in messages and resolves relative paths. @raises ScenarioError (a ValueError) naming the "
       "field path and the value.");
 
-  m.def("parse_json_text",
-        [](const std::string& text, const std::string& source) {
-          return app::ParseJsonText(text, source).dump();
-        },
-        py::arg("text"), py::arg("source"),
-        "Checks JSON text as the CLI does (syntax, duplicate keys); returns it re-serialised.");
+  m.def(
+      "parse_json_text",
+      [](const std::string& text, const std::string& source) {
+        return app::ParseJsonText(text, source).dump();
+      },
+      py::arg("text"), py::arg("source"),
+      "Checks JSON text as the CLI does (syntax, duplicate keys); returns it re-serialised.");
 
   m.def(
       "solve_scenario",
-      [](const ScenarioPtr& s, std::optional<double> time_limit_s, std::optional<double> relative_gap,
-         std::optional<int> threads, std::optional<long long> max_nodes, std::optional<bool> search,
+      [](const ScenarioPtr& s, std::optional<double> time_limit_s,
+         std::optional<double> relative_gap, std::optional<int> threads,
+         std::optional<long long> max_nodes, std::optional<bool> search,
          std::optional<double> diagnosis_time_limit_s, std::optional<int> log_level,
          std::optional<int> random_seed, std::optional<std::string> scheme,
          std::optional<std::string> formulation, std::optional<std::string> encoding, bool check,
@@ -426,13 +464,14 @@ void BindScenario(py::module_& m) {
         st.progress_interval_s = progress_interval_s;
         return SolveScenario(s, scheme, formulation, encoding, st, std::move(callback));
       },
-      py::arg("scenario"), py::arg("time_limit_s") = py::none(), py::arg("relative_gap") = py::none(),
-      py::arg("threads") = py::none(), py::arg("max_nodes") = py::none(),
-      py::arg("search") = py::none(), py::arg("diagnosis_time_limit_s") = py::none(),
-      py::arg("log_level") = py::none(), py::arg("random_seed") = py::none(),
-      py::arg("scheme") = py::none(), py::arg("formulation") = py::none(),
-      py::arg("encoding") = py::none(), py::arg("check") = true,
-      py::arg("progress_interval_s") = 1.0, py::arg("callback") = py::none(),
+      py::arg("scenario"), py::arg("time_limit_s") = py::none(),
+      py::arg("relative_gap") = py::none(), py::arg("threads") = py::none(),
+      py::arg("max_nodes") = py::none(), py::arg("search") = py::none(),
+      py::arg("diagnosis_time_limit_s") = py::none(), py::arg("log_level") = py::none(),
+      py::arg("random_seed") = py::none(), py::arg("scheme") = py::none(),
+      py::arg("formulation") = py::none(), py::arg("encoding") = py::none(),
+      py::arg("check") = true, py::arg("progress_interval_s") = 1.0,
+      py::arg("callback") = py::none(),
       "Builds, solves and checks a parsed scenario as `thrustsched solve` does (GIL released, "
       "Ctrl-C stops and keeps the best schedule).");
 

@@ -41,33 +41,37 @@ py::tuple Simulate(const std::string& text, const std::string& source, const std
   a.quiet = quiet;
   a.print_summary = false;
   a.command_line = "python: thrustsched.simulate";
-  RunInterruptible(job, [a, code, j]() mutable {
-    a.interrupt = &j->stop;
-    a.on_cycle = [j](const planning::CycleRecord& c, int done, int target) {
-      const double consumption = c.consumption_l1_m_s, gap = c.gap, solve = c.solve_seconds;
-      const double lat = c.max_abs_lat_deg, lon = c.max_abs_lon_deg, out = c.time_outside_window_s;
-      const std::string status = StatusName(c.status);
-      const std::string fallback(ToString(c.fallback));
-      const int index = c.index;
-      j->Post([=](const py::handle& cb) {
-        py::dict d;
-        d["phase"] = "cycle";
-        d["cycle"] = index + 1;
-        d["done"] = done;
-        d["target"] = target;
-        d["status"] = status;
-        d["fallback"] = fallback;
-        d["consumption_l1_m_s"] = consumption;
-        d["gap"] = gap;
-        d["solve_seconds"] = solve;
-        d["max_abs_lat_deg"] = lat;
-        d["max_abs_lon_deg"] = lon;
-        d["time_outside_window_s"] = out;
-        cb(d);
-      });
-    };
-    *code = app::RunSimulate(a);
-  }, std::move(callback), "year simulation (the running cycle is not recorded; resume continues)");
+  RunInterruptible(
+      job,
+      [a, code, j]() mutable {
+        a.interrupt = &j->stop;
+        a.on_cycle = [j](const planning::CycleRecord& c, int done, int target) {
+          const double consumption = c.consumption_l1_m_s, gap = c.gap, solve = c.solve_seconds;
+          const double lat = c.max_abs_lat_deg, lon = c.max_abs_lon_deg,
+                       out = c.time_outside_window_s;
+          const std::string status = StatusName(c.status);
+          const std::string fallback(ToString(c.fallback));
+          const int index = c.index;
+          j->Post([=](const py::handle& cb) {
+            py::dict d;
+            d["phase"] = "cycle";
+            d["cycle"] = index + 1;
+            d["done"] = done;
+            d["target"] = target;
+            d["status"] = status;
+            d["fallback"] = fallback;
+            d["consumption_l1_m_s"] = consumption;
+            d["gap"] = gap;
+            d["solve_seconds"] = solve;
+            d["max_abs_lat_deg"] = lat;
+            d["max_abs_lon_deg"] = lon;
+            d["time_outside_window_s"] = out;
+            cb(d);
+          });
+        };
+        *code = app::RunSimulate(a);
+      },
+      std::move(callback), "year simulation (the running cycle is not recorded; resume continues)");
   return py::make_tuple(*code, job->interrupted());
 }
 
@@ -77,7 +81,8 @@ void BindSimulate(py::module_& m) {
   m.def(
       "parse_simulation",
       [](const std::string& text, const std::string& source) {
-        app::SimulationSetup setup = app::ParseSimulationText(text, source.empty() ? "scenario" : source);
+        app::SimulationSetup setup =
+            app::ParseSimulationText(text, source.empty() ? "scenario" : source);
         setup.scenario.path = source;
         return std::make_shared<app::Scenario>(std::move(setup.scenario));
       },

@@ -75,9 +75,12 @@ TEST(ScheduleCsv, RejectsBadFiles) {
   };
   EXPECT_HAS(err("thruster,begin,end_s\n"), "header column \"begin\" is unknown");
   EXPECT_HAS(err("thruster,start_s\n"), "header lacks column \"end_s\"");
-  EXPECT_HAS(err("thruster,start_s,end_s\nNE,0,300\n"), ":2: thruster \"NE\" is not in the scenario");
-  EXPECT_HAS(err("thruster,start_s,end_s\n+R,0,abc\n"), ":2: end_s must be a finite number, got \"abc\"");
-  EXPECT_HAS(err("thruster,start_s,end_s\n+R,0,inf\n"), "end_s must be a finite number, got \"inf\"");
+  EXPECT_HAS(err("thruster,start_s,end_s\nNE,0,300\n"),
+             ":2: thruster \"NE\" is not in the scenario");
+  EXPECT_HAS(err("thruster,start_s,end_s\n+R,0,abc\n"),
+             ":2: end_s must be a finite number, got \"abc\"");
+  EXPECT_HAS(err("thruster,start_s,end_s\n+R,0,inf\n"),
+             "end_s must be a finite number, got \"inf\"");
   EXPECT_HAS(err("thruster,start_s,end_s\n+R,600,300\n"), "end_s 300 is before start_s 600");
   EXPECT_HAS(err("thruster,start_s,end_s,duration_s\n+R,0,300,200\n"),
              "duration_s 200 disagrees with end_s - start_s = 300");
@@ -98,11 +101,14 @@ TEST(ImpulsesCsv, RoundTripAndRejections) {
   EXPECT_DOUBLE_EQ(back[0].time_s, 900);
   EXPECT_DOUBLE_EQ(back[0].delta_v_m_s, 0.125);
   WriteFile(dir + "/b.csv", "thruster,node,time_s,delta_v_m_s\n+N,13,,1\n");
-  EXPECT_HAS(ErrorOf([&] { ReadImpulsesCsv(dir + "/b.csv", s); }), "node must be an integer in [0, 12], got 13");
+  EXPECT_HAS(ErrorOf([&] { ReadImpulsesCsv(dir + "/b.csv", s); }),
+             "node must be an integer in [0, 12], got 13");
   WriteFile(dir + "/b.csv", "thruster,node,time_s,delta_v_m_s\n+N,2,500,1\n");
-  EXPECT_HAS(ErrorOf([&] { ReadImpulsesCsv(dir + "/b.csv", s); }), "time_s 500 is not the time of node 2 (600)");
+  EXPECT_HAS(ErrorOf([&] { ReadImpulsesCsv(dir + "/b.csv", s); }),
+             "time_s 500 is not the time of node 2 (600)");
   WriteFile(dir + "/b.csv", "thruster,node,delta_v_m_s\n+N,2,-1\n");
-  EXPECT_HAS(ErrorOf([&] { ReadImpulsesCsv(dir + "/b.csv", s); }), "delta_v_m_s must be >= 0, got -1");
+  EXPECT_HAS(ErrorOf([&] { ReadImpulsesCsv(dir + "/b.csv", s); }),
+             "delta_v_m_s must be >= 0, got -1");
   std::filesystem::remove_all(dir);
 }
 
@@ -174,13 +180,18 @@ TEST(SolutionImport, CbcAndGlpsolFiles) {
   EXPECT_EQ(ToColumnVector(lp, cols), (Eigen::VectorXd(4) << 0, 3.43775, 1.5, 0).finished());
 
   // GLPK raw files (glpsol -w): columns by index, full precision.
-  WriteFile(dir + "/mip.raw", "c Problem: tiny\nc\ns mip 2 4 o 0.75\ni 1 0\ni 2 1.5\n"
-                              "j 1 0\nj 2 1\nj 3 1.5000000000000002\nj 4 0\ne o f\n");
+  WriteFile(dir + "/mip.raw",
+            "c Problem: tiny\nc\ns mip 2 4 o 0.75\ni 1 0\ni 2 1.5\n"
+            "j 1 0\nj 2 1\nj 3 1.5000000000000002\nj 4 0\ne o f\n");
   const ImportedSolution raw = ReadSolutionFile(dir + "/mip.raw", SolutionFormat::kGlpkRaw);
   EXPECT_TRUE(raw.has_solution);
   EXPECT_DOUBLE_EQ(raw.objective, 0.75);
-  EXPECT_EQ(ToColumnVector(raw, cols), (Eigen::VectorXd(4) << 0, 1, 1.5000000000000002, 0).finished());
-  EXPECT_HAS(ErrorOf([&] { ToColumnVector(raw, {"a", "b"}); }), "solution has 4 columns, the scenario's model has 2");
+  EXPECT_EQ(ToColumnVector(raw, cols),
+            (Eigen::VectorXd(4) << 0, 1, 1.5000000000000002, 0).finished());
+  EXPECT_HAS(ErrorOf([&] {
+               ToColumnVector(raw, {"a", "b"});
+             }),
+             "solution has 4 columns, the scenario's model has 2");
   WriteFile(dir + "/lp.raw", "s bas 1 2 f f 3.5\ni 1 b 3.5 0\nj 1 b 3.25 0\nj 2 l 0 1\n");
   const ImportedSolution lpraw = ReadSolutionFile(dir + "/lp.raw", SolutionFormat::kGlpkRaw);
   EXPECT_TRUE(lpraw.has_solution);
@@ -195,12 +206,16 @@ TEST(SolutionImport, CbcAndGlpsolFiles) {
   EXPECT_FALSE(ReadSolutionFile(dir + "/none.txt", SolutionFormat::kGlpsol).has_solution);
 
   // Wrong model: a column we do not have.
-  EXPECT_HAS(ErrorOf([&] { ToColumnVector(g, {"on_0_0"}); }), "\"on_1_0\", which the scenario's model does not have");
+  EXPECT_HAS(ErrorOf([&] { ToColumnVector(g, {"on_0_0"}); }),
+             "\"on_1_0\", which the scenario's model does not have");
   WriteFile(dir + "/junk.sol", "Optimal - objective value 1\nnot a solution line\n");
-  EXPECT_HAS(ErrorOf([&] { ReadSolutionFile(dir + "/junk.sol", SolutionFormat::kCbc); }), "junk.sol:2");
+  EXPECT_HAS(ErrorOf([&] { ReadSolutionFile(dir + "/junk.sol", SolutionFormat::kCbc); }),
+             "junk.sol:2");
   WriteFile(dir + "/junk.txt", "hello\n");
-  EXPECT_HAS(ErrorOf([&] { ReadSolutionFile(dir + "/junk.txt", SolutionFormat::kGlpsol); }), "no \"Status:\" line");
-  EXPECT_HAS(ErrorOf([&] { ParseSolutionFormat("gurobi"); }), "--format: unknown solution format \"gurobi\"");
+  EXPECT_HAS(ErrorOf([&] { ReadSolutionFile(dir + "/junk.txt", SolutionFormat::kGlpsol); }),
+             "no \"Status:\" line");
+  EXPECT_HAS(ErrorOf([&] { ParseSolutionFormat("gurobi"); }),
+             "--format: unknown solution format \"gurobi\"");
   std::filesystem::remove_all(dir);
 }
 
@@ -226,7 +241,8 @@ TEST(Verdict, JudgesRulesWindowAndTerminal) {
   EXPECT_HAS(Judge(s, r).findings.at(0), "terminal constraint violated (scaled error 0.5)");
   r.terminal_ok = true;
   r.operational_ok = false;
-  r.rule_violations.push_back({"min_burn", 1, 600, "+T burn at 600 s lasts 100 s < min_burn 300 s"});
+  r.rule_violations.push_back(
+      {"min_burn", 1, 600, "+T burn at 600 s lasts 100 s < min_burn 300 s"});
   v = Judge(s, r);
   EXPECT_FALSE(v.passed);
   EXPECT_HAS(v.findings.at(0), "rule min_burn at t = 600 s: +T burn");
@@ -250,10 +266,10 @@ TEST(Outputs, StatusNamesAndDriftTerm) {
   EXPECT_DOUBLE_EQ(HcwDriftTerm(s, (Eigen::VectorXd(6) << 1000, 0, 0, 0, 0, 0).finished()), 2000);
   EXPECT_NEAR(HcwDriftTerm(s, (Eigen::VectorXd(6) << 0, 0, 0, 0, 7.2921159e-2, 0).finished()), 1000,
               1e-9);
-  EXPECT_EQ(TrajectoryColumns(s, false),
-            (std::vector<std::string>{"t_s", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s",
-                                      "drift_m", "on_+R", "on_+T", "on_+N", "on_-R", "on_-T",
-                                      "on_-N"}));
+  EXPECT_EQ(
+      TrajectoryColumns(s, false),
+      (std::vector<std::string>{"t_s", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s", "drift_m",
+                                "on_+R", "on_+T", "on_+N", "on_-R", "on_-T", "on_-N"}));
 }
 
 TEST(Outputs, TrajectoryCsvFollowsTheCheckerSamples) {
@@ -325,7 +341,8 @@ TEST(Plots, ScriptsAlwaysWrittenGnuplotOptional) {
 TEST(Outputs, WritersThrowOnUnwritablePaths) {
   const Scenario s = Hcw();
   EXPECT_THROW(WriteTextFile("/nonexistent/dir/x.txt", "x"), std::runtime_error);
-  EXPECT_THROW(WriteJsonFile("/nonexistent/dir/x.json", nlohmann::json::object()), std::runtime_error);
+  EXPECT_THROW(WriteJsonFile("/nonexistent/dir/x.json", nlohmann::json::object()),
+               std::runtime_error);
   EXPECT_THROW(WriteScheduleCsv("/nonexistent/dir/s.csv", s, {}), std::runtime_error);
   PlotOptions o;
   o.run_gnuplot = false;

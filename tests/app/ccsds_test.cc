@@ -25,8 +25,8 @@ dynamics::Epoch At(const char* text) { return dynamics::Epoch::Parse(text); }
 // Replaces `from` by `to` in the good text and expects `parse` to throw a
 // ScenarioError containing `message`.
 template <typename Parse>
-void ExpectEditFails(Parse parse, const std::string& good, const std::string& from, const std::string& to,
-                     const std::string& message) {
+void ExpectEditFails(Parse parse, const std::string& good, const std::string& from,
+                     const std::string& to, const std::string& message) {
   std::string text = good;
   const size_t at = text.find(from);
   ASSERT_NE(at, std::string::npos) << from;
@@ -110,7 +110,9 @@ TEST(CcsdsOem, WritesWhatItReads) {
   s.stop_time = At("2034-01-01T00:00:20.5Z");
   dynamics::Vector6d rv;
   rv << -32906123.4564, -26357654.3213, 12500.0004, 1921.2345674, -2399.8765436, 0.7000004;
-  s.points = {{s.start_time, rv}, {At("2034-01-01T00:00:10.000002Z"), rv * 1.001}, {s.stop_time, rv * 1.002}};
+  s.points = {{s.start_time, rv},
+              {At("2034-01-01T00:00:10.000002Z"), rv * 1.001},
+              {s.stop_time, rv * 1.002}};
   f.segments = {s, s};
   const std::string text = FormatOem(f);
   EXPECT_THAT(text, HasSubstr("CCSDS_OEM_VERS       = 2.0\n"));
@@ -118,8 +120,11 @@ TEST(CcsdsOem, WritesWhatItReads) {
   EXPECT_THAT(text, HasSubstr("TIME_SYSTEM          = UTC\n"));
   EXPECT_THAT(text, HasSubstr("INTERPOLATION_DEGREE = 5\n"));
   EXPECT_THAT(text, HasSubstr("2034-01-01T00:00:20.500 "));
-  EXPECT_THAT(text, HasSubstr("2034-01-01T00:00:10.000002 "));  // sub-millisecond epochs get 6 decimals
-  EXPECT_THAT(text, HasSubstr(" -32906.123456 -26357.654321 12.500000 1.921234567 -2.399876544 0.000700000\n"));
+  EXPECT_THAT(text,
+              HasSubstr("2034-01-01T00:00:10.000002 "));  // sub-millisecond epochs get 6 decimals
+  EXPECT_THAT(
+      text,
+      HasSubstr(" -32906.123456 -26357.654321 12.500000 1.921234567 -2.399876544 0.000700000\n"));
   const OemFile g = ParseOem(text, "written.oem");
   ASSERT_EQ(g.segments.size(), 2u);
   EXPECT_EQ(g.creation_date, f.creation_date);
@@ -127,8 +132,10 @@ TEST(CcsdsOem, WritesWhatItReads) {
   for (size_t k = 0; k < 3; ++k) {
     const OemPoint& p = g.segments[1].points[k];
     EXPECT_NEAR(p.epoch.SecondsSince(s.points[k].epoch), 0.0, 1e-6);
-    EXPECT_LT((p.rv - s.points[k].rv).head<3>().cwiseAbs().maxCoeff(), 0.5e-3 + 1e-9);   // 1 mm steps
-    EXPECT_LT((p.rv - s.points[k].rv).tail<3>().cwiseAbs().maxCoeff(), 0.5e-6 + 1e-12);  // 1 um/s steps
+    EXPECT_LT((p.rv - s.points[k].rv).head<3>().cwiseAbs().maxCoeff(),
+              0.5e-3 + 1e-9);  // 1 mm steps
+    EXPECT_LT((p.rv - s.points[k].rv).tail<3>().cwiseAbs().maxCoeff(),
+              0.5e-6 + 1e-12);  // 1 um/s steps
   }
 }
 
@@ -138,17 +145,22 @@ TEST(CcsdsOem, RejectsWhatItDoesNotSupportNamingKeywordAndValue) {
   };
   fails("REF_FRAME            = EME2000", "REF_FRAME = ITRF2014",
         "bad.oem:10: REF_FRAME = ITRF2014: unsupported reference frame");
-  fails("REF_FRAME            = EME2000", "REF_FRAME = TOD", "REF_FRAME = TOD: unsupported reference frame");
-  fails("TIME_SYSTEM          = UTC", "TIME_SYSTEM = TDB", "TIME_SYSTEM = TDB: unsupported time system");
+  fails("REF_FRAME            = EME2000", "REF_FRAME = TOD",
+        "REF_FRAME = TOD: unsupported reference frame");
+  fails("TIME_SYSTEM          = UTC", "TIME_SYSTEM = TDB",
+        "TIME_SYSTEM = TDB: unsupported time system");
   fails("CENTER_NAME          = EARTH", "CENTER_NAME = MARS BARYCENTER",
         "CENTER_NAME = MARS BARYCENTER: unsupported centre");
-  fails("CCSDS_OEM_VERS = 2.0", "CCSDS_OEM_VERS = 4.0", "CCSDS_OEM_VERS = 4.0: unsupported version");
-  fails("OBJECT_ID            = 2033-999A\n", "", "META block lacks the mandatory keyword OBJECT_ID");
+  fails("CCSDS_OEM_VERS = 2.0", "CCSDS_OEM_VERS = 4.0",
+        "CCSDS_OEM_VERS = 4.0: unsupported version");
+  fails("OBJECT_ID            = 2033-999A\n", "",
+        "META block lacks the mandatory keyword OBJECT_ID");
   fails("2034-001T00:10:00Z -31697.000001", "2033-12-31T23:59:00 -31697.000001",
         "epoch outside the segment's [START_TIME, STOP_TIME]");
   fails("-26357.654321 12.500000", "-26357.654321 nan", "\"nan\" is not a finite number");
   fails(" 0.000700000\n", "\n", "a data line holds an epoch and 6 numbers");
-  fails("STOP_TIME            = 2034-001T00:10:00", "STOP_TIME = 2034-400T00:10:00", "day of year 400 not in 1..365");
+  fails("STOP_TIME            = 2034-001T00:10:00", "STOP_TIME = 2034-400T00:10:00",
+        "day of year 400 not in 1..365");
   fails("ORIGINATOR = OPS CENTRE\n", "", "the OEM header lacks ORIGINATOR");
   fails("META_STOP\nCOMMENT coast", "COMMENT coast", "META block");
   EXPECT_THAT([] { ParseOem("CCSDS_OPM_VERS = 2.0\n", "x.oem"); },
@@ -251,22 +263,28 @@ TEST(CcsdsOpm, RejectsWhatItDoesNotSupportNamingKeywordAndValue) {
   auto fails = [](const std::string& from, const std::string& to, const std::string& message) {
     ExpectEditFails([](const std::string& t) { ParseOpm(t, "bad.opm"); }, kOpm, from, to, message);
   };
-  fails("REF_FRAME = EME2000", "REF_FRAME = TOD", "bad.opm:10: REF_FRAME = TOD: unsupported reference frame");
-  fails("REF_FRAME = EME2000", "REF_FRAME = ITRF-93", "REF_FRAME = ITRF-93: unsupported reference frame");
+  fails("REF_FRAME = EME2000", "REF_FRAME = TOD",
+        "bad.opm:10: REF_FRAME = TOD: unsupported reference frame");
+  fails("REF_FRAME = EME2000", "REF_FRAME = ITRF-93",
+        "REF_FRAME = ITRF-93: unsupported reference frame");
   fails("TIME_SYSTEM = UTC", "TIME_SYSTEM = UT1",
         "TIME_SYSTEM = UT1: unsupported time system (supported: UTC, TAI, TT, GPS)");
   fails("CENTER_NAME = EARTH", "CENTER_NAME = MOON", "CENTER_NAME = MOON: unsupported centre");
-  fails("X = -32906.123456 [km]", "X = -32906123.456 [m]", "X = -32906123.456: units [m] where [km] are expected");
+  fails("X = -32906.123456 [km]", "X = -32906123.456 [m]",
+        "X = -32906123.456: units [m] where [km] are expected");
   fails("Z_DOT = 0.0007 [km/s]\n", "", "the state vector lacks the mandatory keyword Z_DOT");
-  fails("GM = 398600.4418 [km**3/s**2]\n", "", "the Keplerian elements block lacks the mandatory keyword GM");
+  fails("GM = 398600.4418 [km**3/s**2]\n", "",
+        "the Keplerian elements block lacks the mandatory keyword GM");
   fails("ECCENTRICITY = 0.0002", "ECCENTRICITY = 1.2", "invalid Keplerian elements");
-  fails("MAN_DELTA_MASS = -0.0081", "MAN_DELTA_MASS = 0.0081", "MAN_DELTA_MASS = 0.0081: must be <= 0");
+  fails("MAN_DELTA_MASS = -0.0081", "MAN_DELTA_MASS = 0.0081",
+        "MAN_DELTA_MASS = 0.0081: must be <= 0");
   fails("MAN_DV_3 = 0.0 [km/s]\n", "", "the maneuver block lacks MAN_DV_3");
   fails("EPOCH = 2033-365T22:00:00.000", "EPOCH = 2033-12-31T23:59:60",
         "a leap second (ss = 60) cannot be represented");
   fails("MASS = 4850.0 [kg]", "MASS = 4850.0 [kg]\nX = 1 [km]", "X = 1: out of order");
   fails("OBJECT_ID = 2033-999A", "OBJECT_ID = 2033-999A\nOBJECT_ID = 2", "OBJECT_ID = 2: repeated");
-  fails("MESSAGE_ID = TEST-0001", "MESSAGE_IDENT = TEST-0001", "MESSAGE_IDENT = TEST-0001: unknown OPM keyword");
+  fails("MESSAGE_ID = TEST-0001", "MESSAGE_IDENT = TEST-0001",
+        "MESSAGE_IDENT = TEST-0001: unknown OPM keyword");
 }
 
 TEST(CcsdsKvn, CreationDateFollowsSourceDateEpoch) {

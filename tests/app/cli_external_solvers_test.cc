@@ -67,15 +67,17 @@ void RoundTrip(const std::string& name, const std::string& solver) {
     r = RunProgram("cbc", {dir + "/model.mps", "sec", "120", "solve", "solu", solution}, 200);
   } else if (solver == "glpsol") {
     solution = dir + "/glpsol.txt";
-    r = RunProgram("glpsol", {"--freemps", dir + "/model.mps", "--tmlim", "120", "-o", solution}, 200);
+    r = RunProgram("glpsol", {"--freemps", dir + "/model.mps", "--tmlim", "120", "-o", solution},
+                   200);
   } else {  // glpsol-raw: full-precision values by column index
     solution = dir + "/glpsol.raw";
-    r = RunProgram("glpsol", {"--freemps", dir + "/model.mps", "--tmlim", "120", "-w", solution}, 200);
+    r = RunProgram("glpsol", {"--freemps", dir + "/model.mps", "--tmlim", "120", "-w", solution},
+                   200);
   }
   ASSERT_TRUE(r.exited && r.exit_code == 0) << r.Describe();
 
-  r = RunCli({"import-solution", scenario, solution, "--format", format, "--out",
-              dir + "/schedule.csv"});
+  r = RunCli(
+      {"import-solution", scenario, solution, "--format", format, "--out", dir + "/schedule.csv"});
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
   const double recomputed = RecomputedObjective(r.out);
   const double reported = ReportedObjective(r.out);
@@ -117,29 +119,25 @@ std::string CaseName(const ::testing::TestParamInfo<std::tuple<std::string, std:
 }
 
 // On-off MILPs: the binaries decide the schedule, so glpsol's 6-digit report suffices.
-INSTANTIATE_TEST_SUITE_P(
-    OnOff, ExternalSolvers,
-    ::testing::Combine(::testing::Values("hcw_table41_1d"),  // 1728 binaries
-                       ::testing::Values("cbc", "glpsol", "glpsol-raw")),
-    CaseName);
+INSTANTIATE_TEST_SUITE_P(OnOff, ExternalSolvers,
+                         ::testing::Combine(::testing::Values("hcw_table41_1d"),  // 1728 binaries
+                                            ::testing::Values("cbc", "glpsol", "glpsol-raw")),
+                         CaseName);
 // The same model through the CPLEX LP file.
-INSTANTIATE_TEST_SUITE_P(
-    OnOffLpFile, ExternalSolvers,
-    ::testing::Combine(::testing::Values("hcw_table41_1d"),
-                       ::testing::Values("cbc-lp", "glpsol-lp")),
-    CaseName);
+INSTANTIATE_TEST_SUITE_P(OnOffLpFile, ExternalSolvers,
+                         ::testing::Combine(::testing::Values("hcw_table41_1d"),
+                                            ::testing::Values("cbc-lp", "glpsol-lp")),
+                         CaseName);
 // 200 binaries; glpsol needs ~15 s on it, so one glpsol format only.
-INSTANTIATE_TEST_SUITE_P(
-    DoubleIntegrator, ExternalSolvers,
-    ::testing::Combine(::testing::Values("serra_double_integrator_onoff"),
-                       ::testing::Values("cbc", "glpsol")),
-    CaseName);
+INSTANTIATE_TEST_SUITE_P(DoubleIntegrator, ExternalSolvers,
+                         ::testing::Combine(::testing::Values("serra_double_integrator_onoff"),
+                                            ::testing::Values("cbc", "glpsol")),
+                         CaseName);
 // Impulsive LP: impulse magnitudes need full precision (glpsol -o prints 6 digits).
-INSTANTIATE_TEST_SUITE_P(
-    Impulsive, ExternalSolvers,
-    ::testing::Combine(::testing::Values("serra_leo_circular"),
-                       ::testing::Values("cbc", "glpsol-raw")),
-    CaseName);
+INSTANTIATE_TEST_SUITE_P(Impulsive, ExternalSolvers,
+                         ::testing::Combine(::testing::Values("serra_leo_circular"),
+                                            ::testing::Values("cbc", "glpsol-raw")),
+                         CaseName);
 
 // An infeasible model: both programs say so and import-solution exits 3.
 TEST(ExternalSolversInfeasible, ImportReportsInfeasible) {
@@ -147,10 +145,11 @@ TEST(ExternalSolversInfeasible, ImportReportsInfeasible) {
   const std::string scenario = THRUSTSCHED_APP_TEST_DATA "/hcw_10km_infeasible_1d.json";
   const std::string dir = TempDir("ext_inf");
   ASSERT_EQ(RunCli({"export", scenario, dir + "/m.mps"}).exit_code, 0);
-  const RunResult c = RunProgram("cbc", {dir + "/m.mps", "sec", "60", "solve", "solu", dir + "/s.sol"}, 120);
+  const RunResult c =
+      RunProgram("cbc", {dir + "/m.mps", "sec", "60", "solve", "solu", dir + "/s.sol"}, 120);
   ASSERT_TRUE(c.exited) << c.Describe();
-  const RunResult r = RunCli({"import-solution", scenario, dir + "/s.sol", "--format", "cbc", "--out",
-                              dir + "/x.csv"});
+  const RunResult r = RunCli(
+      {"import-solution", scenario, dir + "/s.sol", "--format", "cbc", "--out", dir + "/x.csv"});
   EXPECT_EQ(r.exit_code, 3) << r.Describe();
   fs::remove_all(dir);
 }

@@ -30,9 +30,9 @@
 namespace thrustsched::testing {
 
 struct RunResult {
-  bool exited = false;     // normal exit (exit_code valid)
+  bool exited = false;  // normal exit (exit_code valid)
   int exit_code = -1;
-  bool signaled = false;   // killed by a signal (a crash, or our timeout)
+  bool signaled = false;  // killed by a signal (a crash, or our timeout)
   int signal = 0;
   bool timed_out = false;
   std::string out, err;
@@ -40,7 +40,9 @@ struct RunResult {
     std::ostringstream os;
     os << (exited ? "exit " + std::to_string(exit_code) : "")
        << (signaled ? "signal " + std::to_string(signal) : "") << (timed_out ? " (timeout)" : "")
-       << "\n--- stdout ---\n" << out << "\n--- stderr ---\n" << err;
+       << "\n--- stdout ---\n"
+       << out << "\n--- stderr ---\n"
+       << err;
     return os.str();
   }
 };
@@ -99,9 +101,9 @@ inline std::string TempDir(const std::string& tag) {
 /// process (exec or _exit). `on_started(pid, err_path)` is called in the
 /// parent after the fork (e.g. to send a signal later). Kills the child with
 /// SIGKILL after `timeout_s`.
-inline RunResult RunForked(const std::function<void()>& child, double timeout_s,
-                           const std::function<void(pid_t, const std::string& err_path)>&
-                               on_started = nullptr) {
+inline RunResult RunForked(
+    const std::function<void()>& child, double timeout_s,
+    const std::function<void(pid_t, const std::string& err_path)>& on_started = nullptr) {
   const std::string dir = TempDir("run");
   const std::string out_path = dir + "/stdout", err_path = dir + "/stderr";
   RunResult r;
@@ -145,10 +147,9 @@ inline RunResult RunForked(const std::function<void()>& child, double timeout_s,
 }
 
 /// Runs `program args...` (see RunForked).
-inline RunResult RunProgram(const std::string& program, const std::vector<std::string>& args,
-                            double timeout_s = 300.0,
-                            const std::function<void(pid_t, const std::string& err_path)>&
-                                on_started = nullptr) {
+inline RunResult RunProgram(
+    const std::string& program, const std::vector<std::string>& args, double timeout_s = 300.0,
+    const std::function<void(pid_t, const std::string& err_path)>& on_started = nullptr) {
   return RunForked(
       [&] {
         std::vector<char*> argv;

@@ -40,8 +40,9 @@ TEST(Cli, HelpAndVersion) {
     EXPECT_HAS(r.out, "scenario");
   }
   r = RunCli({"solve", "--help"});
-  for (const char* opt : {"--out", "--time-limit", "--gap", "--threads", "--scheme",
-                          "--formulation", "--encoding", "--export-mps", "--export-lp", "--quiet"}) {
+  for (const char* opt :
+       {"--out", "--time-limit", "--gap", "--threads", "--scheme", "--formulation", "--encoding",
+        "--export-mps", "--export-lp", "--quiet"}) {
     EXPECT_HAS(r.out, opt);
   }
   r = RunCli({"--version"});
@@ -86,17 +87,18 @@ TEST(Cli, SolveWritesTheReportUnlessNoReport) {
   EXPECT_HAS(r.out, "gap 0 %");  // not 1e-14-level noise
   EXPECT_HAS(r.out, "report.html)");
   const std::string html = ReadFile(dir + "/a/report.html");
-  for (const char* part : {"<!DOCTYPE html>", "<h1>hcw_table41_1d</h1>", "HCW (Hill-Clohessy-Wiltshire)",
-                           "each burn at least 5 min", "optimal", "0.016391753", "PASSED",
-                           "<td>-T</td>", "@media print"}) {
+  for (const char* part : {"<!DOCTYPE html>", "<h1>hcw_table41_1d</h1>",
+                           "HCW (Hill-Clohessy-Wiltshire)", "each burn at least 5 min", "optimal",
+                           "0.016391753", "PASSED", "<td>-T</td>", "@media print"}) {
     EXPECT_HAS(html, part);
   }
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<?xml"), std::string::npos);
   if (HaveProgram("gnuplot")) {
     size_t plots = 0;
-    for (size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1)) ++plots;
-    EXPECT_EQ(plots, 4u);  // window, xy, timeline, outputs
+    for (size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1))
+      ++plots;
+    EXPECT_EQ(plots, 4u);                          // window, xy, timeline, outputs
     EXPECT_HAS(html, "id=\"p2_gnuplot_canvas\"");  // ids made unique per plot
   }
   EXPECT_HAS(ReadFile(dir + "/a/.thrustsched-run.json"), "report.html");
@@ -112,19 +114,39 @@ TEST(Cli, SolveWritesTheReportUnlessNoReport) {
 // (exactly 0.265/4850*300 = 0.016391753 m/s), drift term 1.7752 km at tf.
 TEST(Cli, SolveWritesConsistentResults) {
   const std::string dir = TempDir("solve");
-  const RunResult r = RunCli({"solve", kScenarios + "hcw_table41_1d.json", "--out", dir,
-                              "--time-limit", "120", "--export-mps", dir + "/model.mps",
-                              "--export-lp", dir + "/model.lp"});
+  const RunResult r =
+      RunCli({"solve", kScenarios + "hcw_table41_1d.json", "--out", dir, "--time-limit", "120",
+              "--export-mps", dir + "/model.mps", "--export-lp", dir + "/model.lp"});
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
   EXPECT_HAS(r.out, "status        optimal");
   EXPECT_HAS(r.out, "check         PASSED");
   const json s = ReadJson(dir + "/summary.json");
-  for (const char* key :
-       {"status", "objective", "best_bound", "gap", "consumption_l1_m_s", "delta_v_m_s",
-        "propellant_kg", "n_burns", "burns", "n_binaries", "n_columns", "n_rows", "n_nonzeros",
-        "build_seconds", "solve_seconds", "check", "name", "scheme", "formulation", "encoding",
-        "solver_version", "time_to_first_s", "effective_rules", "discretise_seconds",
-        "check_seconds", "infeasibility_reasons"}) {
+  for (const char* key : {"status",
+                          "objective",
+                          "best_bound",
+                          "gap",
+                          "consumption_l1_m_s",
+                          "delta_v_m_s",
+                          "propellant_kg",
+                          "n_burns",
+                          "burns",
+                          "n_binaries",
+                          "n_columns",
+                          "n_rows",
+                          "n_nonzeros",
+                          "build_seconds",
+                          "solve_seconds",
+                          "check",
+                          "name",
+                          "scheme",
+                          "formulation",
+                          "encoding",
+                          "solver_version",
+                          "time_to_first_s",
+                          "effective_rules",
+                          "discretise_seconds",
+                          "check_seconds",
+                          "infeasibility_reasons"}) {
     EXPECT_TRUE(s.contains(key)) << key;
   }
   for (const char* key : {"operational_ok", "max_window_violation", "max_window_violation_nodes",
@@ -169,7 +191,8 @@ TEST(Cli, SolveWritesConsistentResults) {
       EXPECT_HAS(ReadFile(dir + "/" + f), "<svg");
     }
   }
-  for (const char* f : {"window.gp", "timeline.gp", "outputs.gp"}) EXPECT_TRUE(fs::exists(dir + "/" + f));
+  for (const char* f : {"window.gp", "timeline.gp", "outputs.gp"})
+    EXPECT_TRUE(fs::exists(dir + "/" + f));
 
   // check round trip: our own schedule passes ...
   RunResult c = RunCli({"check", kScenarios + "hcw_table41_1d.json", dir + "/schedule.csv"});
@@ -179,10 +202,11 @@ TEST(Cli, SolveWritesConsistentResults) {
   const auto& b = csv.rows.at(0);
   const double start = std::stod(b[1]);
   std::ostringstream broken;
-  broken << "thruster,start_s,end_s,duration_s\n" << b[0] << "," << start << "," << start + 120
-         << ",120\n";
+  broken << "thruster,start_s,end_s,duration_s\n"
+         << b[0] << "," << start << "," << start + 120 << ",120\n";
   WriteFile(dir + "/broken.csv", broken.str());
-  c = RunCli({"check", kScenarios + "hcw_table41_1d.json", dir + "/broken.csv", "--out", dir + "/chk"});
+  c = RunCli(
+      {"check", kScenarios + "hcw_table41_1d.json", dir + "/broken.csv", "--out", dir + "/chk"});
   EXPECT_EQ(c.exit_code, 5) << c.Describe();
   EXPECT_HAS(c.out, "min_burn");
   const json cj = ReadJson(dir + "/chk/check.json");
@@ -190,7 +214,8 @@ TEST(Cli, SolveWritesConsistentResults) {
   EXPECT_FALSE(cj["operational_ok"].get<bool>());
   // ... an empty schedule is judged on the window alone: the exit code agrees with check.json ...
   WriteFile(dir + "/empty.csv", "thruster,start_s,end_s,duration_s\n");
-  c = RunCli({"check", kScenarios + "hcw_table41_1d.json", dir + "/empty.csv", "--out", dir + "/chk0"});
+  c = RunCli(
+      {"check", kScenarios + "hcw_table41_1d.json", dir + "/empty.csv", "--out", dir + "/chk0"});
   const json ej = ReadJson(dir + "/chk0/check.json");
   EXPECT_EQ(c.exit_code, ej["passed"].get<bool>() ? 0 : 5);
   // ... and an unreadable one is bad input.
@@ -203,7 +228,8 @@ TEST(Cli, SolveWritesConsistentResults) {
 
 TEST(Cli, ExportWritesModelFiles) {
   const std::string dir = TempDir("export");
-  RunResult r = RunCli({"export", kScenarios + "serra_double_integrator_onoff.json", dir + "/m.mps"});
+  RunResult r =
+      RunCli({"export", kScenarios + "serra_double_integrator_onoff.json", dir + "/m.mps"});
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
   const std::string mps = ReadFile(dir + "/m.mps");
   EXPECT_HAS(mps, "'MARKER'");
@@ -215,7 +241,8 @@ TEST(Cli, ExportWritesModelFiles) {
   r = RunCli({"export", kScenarios + "serra_double_integrator_onoff.json", dir + "/m.txt"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_HAS(r.err, "must end in .mps or .lp");
-  r = RunCli({"export", kScenarios + "serra_double_integrator_onoff.json", "/nonexistent/dir/m.mps"});
+  r = RunCli(
+      {"export", kScenarios + "serra_double_integrator_onoff.json", "/nonexistent/dir/m.mps"});
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
   // The solve flags name their format: a mismatched extension is bad input,
   // caught before any work.
@@ -283,8 +310,8 @@ TEST(Cli, InfeasibleExitsThree) {
 
 TEST(Cli, NoSolutionWithinTheTimeLimitExitsFour) {
   const std::string dir = TempDir("timelimit");
-  const RunResult r = RunCli({"solve", kTestData + "geo_2day_5min.json", "--out", dir,
-                              "--time-limit", "0.01"});
+  const RunResult r =
+      RunCli({"solve", kTestData + "geo_2day_5min.json", "--out", dir, "--time-limit", "0.01"});
   EXPECT_EQ(r.exit_code, 4) << r.Describe();
   const json s = ReadJson(dir + "/summary.json");
   EXPECT_EQ(s["status"], "no_solution");
@@ -305,10 +332,10 @@ TEST(Cli, SigintKeepsTheBestSchedule) {
   hooks.on_progress = thrustsched::app::InterruptSelfAtFirstIncumbent;
   const RunResult r = thrustsched::testing::RunInChild(
       [&] {
-        return thrustsched::app::RunCli({"thrustsched", "solve", kTestData + "geo_2day_5min.json",
-                                         "--out", dir, "--gap", "0", "--time-limit", "250",
-                                         "--no-search"},
-                                        hooks);
+        return thrustsched::app::RunCli(
+            {"thrustsched", "solve", kTestData + "geo_2day_5min.json", "--out", dir, "--gap", "0",
+             "--time-limit", "250", "--no-search"},
+            hooks);
       },
       280.0);
   ASSERT_TRUE(r.exited) << r.Describe();
@@ -363,7 +390,8 @@ TEST(Cli, SerraCasesReachThePublishedOptima) {
       scaled << imp.header << "\n";
       for (const auto& row : imp.rows) {
         total += std::stod(row[3]);
-        scaled << row[0] << "," << row[1] << "," << row[2] << "," << 0.9 * std::stod(row[3]) << "\n";
+        scaled << row[0] << "," << row[1] << "," << row[2] << "," << 0.9 * std::stod(row[3])
+               << "\n";
       }
       EXPECT_NEAR(total, s["objective"].get<double>(), 1e-9);
       RunResult ck = RunCli({"check", scenario, dir + "/impulses.csv"});
@@ -392,9 +420,10 @@ TEST(Cli, GeoSolveReportsTheNonlinearReplay) {
   EXPECT_NEAR(s["consumption_l1_m_s"].get<double>() / s["delta_v_m_s"].get<double>(), 1.44296,
               1e-5);
   const CsvRows traj = ReadCsv(dir + "/trajectory.csv");
-  EXPECT_HAS(traj.header, "t_s,utc,da_m,ex,ey,ix,iy,dl_rad,dr_m,lat_rad,lon_rad,lin_lat_deg,"
-                          "lin_dlon_deg,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,r_m,lat_deg,lon_deg,"
-                          "dlon_deg,dr_nl_m,on_NE,on_SE,on_NW,on_SW");
+  EXPECT_HAS(traj.header,
+             "t_s,utc,da_m,ex,ey,ix,iy,dl_rad,dr_m,lat_rad,lon_rad,lin_lat_deg,"
+             "lin_dlon_deg,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,r_m,lat_deg,lon_deg,"
+             "dlon_deg,dr_nl_m,on_NE,on_SE,on_NW,on_SW");
   ASSERT_EQ(traj.rows.size(), 144u * 5 + 1);
   EXPECT_EQ(traj.rows[0][1], "2034-01-01T00:00:00Z");
   // The station point: radius a_mp, longitude 118 E, on the equator.

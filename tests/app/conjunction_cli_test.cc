@@ -71,9 +71,10 @@ TEST(ConjunctionSection, SerraFrameAndGlobalRisk) {
   j["conjunction"]["risk_threshold"] = 1e-4;
   const app::Scenario s = app::ParseScenario(j);
   const auto& c = *s.problem.conjunction;
-  EXPECT_EQ(c.secondary_state.head<3>(), Eigen::Vector3d(-3, 1, -2));  // x = -z_S, y = x_S, z = -y_S
-  EXPECT_DOUBLE_EQ(c.covariance(0, 0), 25.0);                            // var(z_S) -> var(x)
-  EXPECT_DOUBLE_EQ(c.instantaneous_threshold, 1e-4 / 2000.0);            // over the 2000 s window
+  EXPECT_EQ(c.secondary_state.head<3>(),
+            Eigen::Vector3d(-3, 1, -2));                       // x = -z_S, y = x_S, z = -y_S
+  EXPECT_DOUBLE_EQ(c.covariance(0, 0), 25.0);                  // var(z_S) -> var(x)
+  EXPECT_DOUBLE_EQ(c.instantaneous_threshold, 1e-4 / 2000.0);  // over the 2000 s window
 }
 
 TEST(ConjunctionCli, ValidateExportSolveCheck) {
@@ -109,7 +110,8 @@ TEST(ConjunctionCli, ValidateExportSolveCheck) {
   RunResult none = RunCli({"check", kSmall, dir + "/none.csv", "--out", dir + "/none"});
   EXPECT_EQ(none.exit_code, 5) << none.Describe();
   EXPECT_HAS(none.out, "conjunction   FAILED");
-  EXPECT_FALSE(ReadJson(dir + "/none/check.json")["conjunction"]["verification"]["passed"].get<bool>());
+  EXPECT_FALSE(
+      ReadJson(dir + "/none/check.json")["conjunction"]["verification"]["passed"].get<bool>());
   std::filesystem::remove_all(dir);
 }
 

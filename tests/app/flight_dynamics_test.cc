@@ -38,7 +38,8 @@ using thrustsched::testing::WriteFile;
 const std::string kScenarios = THRUSTSCHED_DATA_DIR "/scenarios/";
 const std::string kShipped = kScenarios + "geo_week_from_opm.json";
 const std::string kOpmFile = kScenarios + "geo_week_from_opm.opm";
-constexpr const char* kCreation = "2000000000";  // SOURCE_DATE_EPOCH of the tests: 2033-05-18T03:33:20Z
+constexpr const char* kCreation =
+    "2000000000";  // SOURCE_DATE_EPOCH of the tests: 2033-05-18T03:33:20Z
 
 // The burns of the shipped week, as `solve` found them (proven optimal,
 // 1.86856 m/s L1; README): the CCSDS products are checked on this plan
@@ -60,7 +61,9 @@ nlohmann::json ShippedWith(const nlohmann::json& patch) {
   return j;
 }
 
-Eigen::VectorXd Relative(const nlohmann::json& scenario) { return ParseScenario(scenario).problem.initial_state; }
+Eigen::VectorXd Relative(const nlohmann::json& scenario) {
+  return ParseScenario(scenario).problem.initial_state;
+}
 
 double MaxRelativeError(const Eigen::VectorXd& got, const Eigen::VectorXd& want) {
   const Eigen::VectorXd scale = dynamics::GeoLinearModel(dynamics::GeoModelOptions{}).state_scale();
@@ -120,7 +123,8 @@ TEST(InitialOrbit, TheThreeFormsGiveTheSameModelState) {
 
 TEST(InitialOrbit, UnsupportedInputIsRejectedNamingFieldAndValue) {
   auto fails = [](const nlohmann::json& patch, const std::string& message) {
-    EXPECT_THAT([&] { ParseScenario(ShippedWith(patch)); }, ThrowsMessage<ScenarioError>(HasSubstr(message)))
+    EXPECT_THAT([&] { ParseScenario(ShippedWith(patch)); },
+                ThrowsMessage<ScenarioError>(HasSubstr(message)))
         << patch.dump();
   };
   const nlohmann::json eci = {{"frame", "EME2000"},
@@ -129,17 +133,22 @@ TEST(InitialOrbit, UnsupportedInputIsRejectedNamingFieldAndValue) {
   nlohmann::json bad = eci;
   bad["frame"] = "ITRF2014";
   fails({{"initial_state", {{"opm", nullptr}, {"eci_state", bad}}}},
-        "scenario.initial_state.eci_state.frame: unknown value \"ITRF2014\" (expected one of: EME2000, GCRF)");
+        "scenario.initial_state.eci_state.frame: unknown value \"ITRF2014\" (expected one of: "
+        "EME2000, GCRF)");
   bad = eci;
   bad["epoch"] = "2034-01-01T00:00:01Z";
   fails({{"initial_state", {{"opm", nullptr}, {"eci_state", bad}}}},
-        "scenario.initial_state.eci_state: the state's epoch 2034-01-01T00:00:01Z is after the horizon start");
+        "scenario.initial_state.eci_state: the state's epoch 2034-01-01T00:00:01Z is after the "
+        "horizon start");
   bad = eci;
   bad["position_km"] = {7000, 0, 0};
   bad["velocity_km_s"] = {0, 7.5, 0};
-  fails({{"initial_state", {{"opm", nullptr}, {"eci_state", bad}}}}, "not a near-geostationary orbit");
-  fails({{"initial_state", {{"station_point", true}}}}, "scenario.initial_state: give only one of station_point");
-  fails({{"initial_state", {{"opm", {{"file", "no/such.opm"}}}}}}, "cannot open the OPM file no/such.opm");
+  fails({{"initial_state", {{"opm", nullptr}, {"eci_state", bad}}}},
+        "not a near-geostationary orbit");
+  fails({{"initial_state", {{"station_point", true}}}},
+        "scenario.initial_state: give only one of station_point");
+  fails({{"initial_state", {{"opm", {{"file", "no/such.opm"}}}}}},
+        "cannot open the OPM file no/such.opm");
   // An OPM in an Earth-fixed frame, or with maneuvers.
   const std::string dir = TempDir("opm_bad");
   std::string text = ReadFile(kOpmFile);
@@ -147,9 +156,10 @@ TEST(InitialOrbit, UnsupportedInputIsRejectedNamingFieldAndValue) {
   WriteFile(dir + "/itrf.opm", text);
   fails({{"initial_state", {{"opm", {{"file", dir + "/itrf.opm"}}}}}},
         "REF_FRAME = ITRF2014: unsupported reference frame");
-  WriteFile(dir + "/man.opm", ReadFile(kOpmFile) +
-                                  "MAN_EPOCH_IGNITION = 2034-01-01T01:00:00\nMAN_DURATION = 1 [s]\nMAN_DELTA_MASS = "
-                                  "-0.1 [kg]\nMAN_REF_FRAME = RTN\nMAN_DV_1 = 0\nMAN_DV_2 = 0\nMAN_DV_3 = 0\n");
+  WriteFile(dir + "/man.opm",
+            ReadFile(kOpmFile) +
+                "MAN_EPOCH_IGNITION = 2034-01-01T01:00:00\nMAN_DURATION = 1 [s]\nMAN_DELTA_MASS = "
+                "-0.1 [kg]\nMAN_REF_FRAME = RTN\nMAN_DV_1 = 0\nMAN_DV_2 = 0\nMAN_DV_3 = 0\n");
   fails({{"initial_state", {{"opm", {{"file", dir + "/man.opm"}}}}}}, "holds 1 maneuver block(s)");
   // Orbit forms belong to GEO initial states only.
   nlohmann::json hcw = nlohmann::json::parse(ReadFile(kScenarios + "hcw_table41_1d.json"));
@@ -162,7 +172,8 @@ TEST(InitialOrbit, UnsupportedInputIsRejectedNamingFieldAndValue) {
 
 // Re-propagates the OEM line to line with the nonlinear model (the burns of
 // each segment from the schedule) and returns the largest position error (m).
-double ReplayErrorOfOem(const Scenario& s, const OemFile& oem, const std::vector<transcription::Burn>& burns) {
+double ReplayErrorOfOem(const Scenario& s, const OemFile& oem,
+                        const std::vector<transcription::Burn>& burns) {
   const dynamics::GeoSimulator sim(*s.geo);
   const dynamics::Epoch epoch = dynamics::Epoch::Parse(s.geo->epoch);
   const Eigen::MatrixXd accel = s.problem.thrusters.AccelerationMatrix();
@@ -172,10 +183,12 @@ double ReplayErrorOfOem(const Scenario& s, const OemFile& oem, const std::vector
   for (const OemSegment& seg : oem.segments) {
     EXPECT_EQ(seg.frame, dynamics::InertialFrame::kEme2000);
     for (size_t k = 0; k + 1 < seg.points.size(); ++k) {
-      const double t0 = seg.points[k].epoch.SecondsSince(epoch), t1 = seg.points[k + 1].epoch.SecondsSince(epoch);
+      const double t0 = seg.points[k].epoch.SecondsSince(epoch),
+                   t1 = seg.points[k + 1].epoch.SecondsSince(epoch);
       const dynamics::Vector6d x0 = dynamics::ToModelFrame(seg.points[k].rv, seg.frame, epoch);
       const dynamics::Vector6d x1 = sim.Propagate(x0, t0, accel, pulses, {t1}).front();
-      const dynamics::Vector6d want = dynamics::ToModelFrame(seg.points[k + 1].rv, seg.frame, epoch);
+      const dynamics::Vector6d want =
+          dynamics::ToModelFrame(seg.points[k + 1].rv, seg.frame, epoch);
       worst = std::max(worst, (x1 - want).head<3>().norm());
     }
   }
@@ -191,8 +204,9 @@ TEST(FlightDynamicsCli, ShippedWeekRoundTripsThroughTheCcsdsFiles) {
   std::filesystem::create_directories(dir);
   WriteFile(dir + "/given_schedule.csv", kWeekSchedule);
   setenv("SOURCE_DATE_EPOCH", kCreation, 1);
-  const testing::RunResult r = RunCli({"check", kShipped, dir + "/given_schedule.csv", "--out", dir, "--no-plots",
-                                       "--oem", dir + "/plan.oem", "--opm-maneuvers", dir + "/plan.opm"});
+  const testing::RunResult r =
+      RunCli({"check", kShipped, dir + "/given_schedule.csv", "--out", dir, "--no-plots", "--oem",
+              dir + "/plan.oem", "--opm-maneuvers", dir + "/plan.opm"});
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
   EXPECT_THAT(r.out, HasSubstr("wrote         " + dir + "/plan.oem"));
 
@@ -202,7 +216,8 @@ TEST(FlightDynamicsCli, ShippedWeekRoundTripsThroughTheCcsdsFiles) {
 
   // schedule.csv: the contract columns, then the GEO ones.
   const testing::CsvRows csv = testing::ReadCsv(dir + "/schedule.csv");
-  EXPECT_EQ(csv.header, "thruster,start_s,end_s,duration_s,start_utc,end_utc,dir_r,dir_t,dir_n,delta_v_m_s");
+  EXPECT_EQ(csv.header,
+            "thruster,start_s,end_s,duration_s,start_utc,end_utc,dir_r,dir_t,dir_n,delta_v_m_s");
   ASSERT_EQ(csv.rows.size(), burns.size());
   const double accel = 0.265 / 4850;
   const dynamics::Epoch epoch = dynamics::Epoch::Parse("2034-01-01T00:00:00Z");
@@ -230,15 +245,17 @@ TEST(FlightDynamicsCli, ShippedWeekRoundTripsThroughTheCcsdsFiles) {
 
   // OEM: header and metadata as CCSDS 502.0-B-3 §5.2, segments split at every burn.
   const std::string oem_text = ReadFile(dir + "/plan.oem");
-  for (const char* key : {"CCSDS_OEM_VERS       = 2.0\n", "CREATION_DATE        = 2033-05-18T03:33:20.000\n",
-                          "ORIGINATOR           = THRUSTSCHED\n", "OBJECT_NAME          = GEO-118E\n",
-                          "OBJECT_ID            = 2033-900A\n", "CENTER_NAME          = EARTH\n",
-                          "REF_FRAME            = EME2000\n", "TIME_SYSTEM          = UTC\n",
-                          "START_TIME           = 2034-01-01T00:00:00.000\n", "INTERPOLATION        = HERMITE\n"}) {
+  for (const char* key :
+       {"CCSDS_OEM_VERS       = 2.0\n", "CREATION_DATE        = 2033-05-18T03:33:20.000\n",
+        "ORIGINATOR           = THRUSTSCHED\n", "OBJECT_NAME          = GEO-118E\n",
+        "OBJECT_ID            = 2033-900A\n", "CENTER_NAME          = EARTH\n",
+        "REF_FRAME            = EME2000\n", "TIME_SYSTEM          = UTC\n",
+        "START_TIME           = 2034-01-01T00:00:00.000\n", "INTERPOLATION        = HERMITE\n"}) {
     EXPECT_THAT(oem_text, HasSubstr(key));
   }
   const OemFile oem = ParseOem(oem_text, dir + "/plan.oem");
-  EXPECT_EQ(oem.segments.size(), 2 * burns.size() + 1);  // the burns are apart: coast, burn, coast, ...
+  EXPECT_EQ(oem.segments.size(),
+            2 * burns.size() + 1);  // the burns are apart: coast, burn, coast, ...
   for (size_t k = 0; k < burns.size(); ++k) {
     const OemSegment& arc = oem.segments[2 * k + 1];
     EXPECT_NEAR(arc.start_time.SecondsSince(epoch), burns[k].start_s, 1e-6);
@@ -283,11 +300,13 @@ TEST(FlightDynamicsCli, ShippedWeekRoundTripsThroughTheCcsdsFiles) {
 TEST(FlightDynamicsCli, BadOptionsExitTwoNamingTheValue) {
   const std::string dir = TempDir("fd_bad");
   WriteFile(dir + "/s.csv", "thruster,start_s,end_s\n+T,0,300\n");
-  testing::RunResult r =
-      RunCli({"check", kScenarios + "hcw_table41_1d.json", dir + "/s.csv", "--oem", dir + "/x.oem"});
+  testing::RunResult r = RunCli(
+      {"check", kScenarios + "hcw_table41_1d.json", dir + "/s.csv", "--oem", dir + "/x.oem"});
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
-  EXPECT_THAT(r.err, HasSubstr("--oem " + dir +
-                               "/x.oem: CCSDS files need a GEO scenario (model.type \"geo\"), got \"hcw\""));
+  EXPECT_THAT(
+      r.err,
+      HasSubstr("--oem " + dir +
+                "/x.oem: CCSDS files need a GEO scenario (model.type \"geo\"), got \"hcw\""));
   // A scenario whose OPM is in an unsupported time system.
   std::string opm = ReadFile(kOpmFile);
   opm.replace(opm.find("TIME_SYSTEM          = UTC"), 26, "TIME_SYSTEM = TDB");
@@ -298,10 +317,12 @@ TEST(FlightDynamicsCli, BadOptionsExitTwoNamingTheValue) {
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
   EXPECT_THAT(r.err, HasSubstr("tdb.opm:11: TIME_SYSTEM = TDB: unsupported time system"));
   // A GEO schedule.csv whose UTC column disagrees with its seconds.
-  WriteFile(dir + "/utc.csv", "thruster,start_s,end_s,start_utc\nNE,3600,3900,2034-01-01T02:00:00.000Z\n");
+  WriteFile(dir + "/utc.csv",
+            "thruster,start_s,end_s,start_utc\nNE,3600,3900,2034-01-01T02:00:00.000Z\n");
   r = RunCli({"check", kShipped, dir + "/utc.csv"});
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
-  EXPECT_THAT(r.err, HasSubstr("start_utc \"2034-01-01T02:00:00.000Z\" is not the UTC time of 3600 s"));
+  EXPECT_THAT(r.err,
+              HasSubstr("start_utc \"2034-01-01T02:00:00.000Z\" is not the UTC time of 3600 s"));
   std::filesystem::remove_all(dir);
 }
 
@@ -313,29 +334,35 @@ TEST(FlightDynamicsCli, SolveAndSimulateWriteTheFiles) {
                                    {"terminal", nullptr},
                                    {"solver", {{"time_limit_s", 60}, {"threads", 1}}}});
   WriteFile(dir + "/short.json", sc.dump(2));
-  testing::RunResult r = RunCli({"solve", dir + "/short.json", "--out", dir + "/out", "--no-plots", "--quiet", "--oem",
-                                 dir + "/short.oem", "--opm-maneuvers", dir + "/short.opm"});
+  testing::RunResult r =
+      RunCli({"solve", dir + "/short.json", "--out", dir + "/out", "--no-plots", "--quiet", "--oem",
+              dir + "/short.oem", "--opm-maneuvers", dir + "/short.opm"});
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
   const OemFile oem = ParseOem(ReadFile(dir + "/short.oem"), "short.oem");
-  EXPECT_NEAR(oem.segments.back().stop_time.SecondsSince(oem.segments.front().start_time), 10800.0, 1e-6);
+  EXPECT_NEAR(oem.segments.back().stop_time.SecondsSince(oem.segments.front().start_time), 10800.0,
+              1e-6);
   const Opm opm = ParseOpm(ReadFile(dir + "/short.opm"), "short.opm");
   EXPECT_EQ(opm.object_name, "GEO-118E");
 
   // Two daily cycles of the year-simulation test scenario: one OEM across both.
-  r = RunCli({"simulate", kScenarios + "year/year_test_4cycles.json", "--out", dir + "/sim", "--cycles", "2",
-              "--quiet", "--no-plots", "--oem", dir + "/sim.oem", "--opm-maneuvers", dir + "/sim.opm"});
+  r = RunCli({"simulate", kScenarios + "year/year_test_4cycles.json", "--out", dir + "/sim",
+              "--cycles", "2", "--quiet", "--no-plots", "--oem", dir + "/sim.oem",
+              "--opm-maneuvers", dir + "/sim.opm"});
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
-  const Scenario year = LoadScenario(kScenarios + "year/year_test_4cycles.json",
-                                     ScenarioParseOptions{{"long_horizon"}, "year_test_4cycles.json"});
+  const Scenario year =
+      LoadScenario(kScenarios + "year/year_test_4cycles.json",
+                   ScenarioParseOptions{{"long_horizon"}, "year_test_4cycles.json"});
   std::vector<transcription::Burn> burns;
   for (const char* c : {"/sim/cycles/cycle_001.csv", "/sim/cycles/cycle_002.csv"}) {
     for (const auto& b : ReadScheduleCsv(dir + c, year)) burns.push_back(b);
   }
   const OemFile sim = ParseOem(ReadFile(dir + "/sim.oem"), "sim.oem");
-  EXPECT_NEAR(sim.segments.back().stop_time.SecondsSince(sim.segments.front().start_time), 2 * 86400.0, 1e-6);
+  EXPECT_NEAR(sim.segments.back().stop_time.SecondsSince(sim.segments.front().start_time),
+              2 * 86400.0, 1e-6);
   EXPECT_EQ(ParseOpm(ReadFile(dir + "/sim.opm"), "sim.opm").maneuvers.size(), burns.size());
   const double err = ReplayErrorOfOem(year, sim, burns);
-  std::printf("[ fd ] simulate: %zu burns in 2 cycles, OEM re-propagation error %.3g m\n", burns.size(), err);
+  std::printf("[ fd ] simulate: %zu burns in 2 cycles, OEM re-propagation error %.3g m\n",
+              burns.size(), err);
   EXPECT_LT(err, 1.0);
   std::filesystem::remove_all(dir);
 }

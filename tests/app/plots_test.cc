@@ -5,8 +5,8 @@
 // end and burn markers, disabled thrusters and forced-off windows on the
 // timeline, the rendezvous view with the target.
 #include <algorithm>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -127,7 +127,8 @@ Scenario Hcw(const std::string& extra, double half_width_m = 10000) {
                            extra + R"(},
     "initial_state": {"hcw_position_m": [1000, 0, 0]},
     "horizon": {"duration_s": 7200, "step_s": 300},
-    "window": {"half_width_m": )" + std::to_string(half_width_m) + R"(},
+    "window": {"half_width_m": )" +
+                           std::to_string(half_width_m) + R"(},
     "operations": {"min_burn_s": 300, "min_off_same_s": 1200, "min_gap_other_s": 300}
   })");
 }
@@ -188,7 +189,8 @@ TEST_F(PlotsRendered, GeoLegendsStayClearOfTheBoxAndTheWindowLines) {
   const Rect frame = *std::max_element(wf.begin(), wf.end(), [](const Rect& a, const Rect& b) {
     return (a.right - a.left) * (a.bottom - a.top) < (b.right - b.left) * (b.bottom - b.top);
   });
-  for (const char* title : {"linear model", "nonlinear replay", "start", "end", "burn NE", "window"}) {
+  for (const char* title :
+       {"linear model", "nonlinear replay", "start", "end", "burn NE", "window"}) {
     const std::vector<std::string> c = Curves(window, title);
     ASSERT_FALSE(c.empty()) << title;
     const auto [x, y] = KeyPosition(c[0]);

@@ -97,28 +97,76 @@ std::vector<json> Bases() {
 }
 
 // Fields whose zero or negative value is invalid, and those only negative is invalid.
-const std::set<std::string> kPositive = {
-    "mean_motion_rad_s", "length_scale_m", "time_scale_s", "semi_major_axis_m", "mu_m3_s2",
-    "mass_kg", "isp_s", "thrust_n", "duration_s", "step_s", "num_intervals", "half_width_m",
-    "half_width_deg", "soft_penalty", "time_limit_s", "progress_interval_s", "max_impulse_m_s",
-    "max_burn_s", "rk4_substeps", "reference_tolerance", "propagation_tolerance",
-    "max_simultaneous", "threads", "facets_out_of_plane", "facets_cone_plus", "facets_cone_minus",
-    "on_for_s"};
+const std::set<std::string> kPositive = {"mean_motion_rad_s",
+                                         "length_scale_m",
+                                         "time_scale_s",
+                                         "semi_major_axis_m",
+                                         "mu_m3_s2",
+                                         "mass_kg",
+                                         "isp_s",
+                                         "thrust_n",
+                                         "duration_s",
+                                         "step_s",
+                                         "num_intervals",
+                                         "half_width_m",
+                                         "half_width_deg",
+                                         "soft_penalty",
+                                         "time_limit_s",
+                                         "progress_interval_s",
+                                         "max_impulse_m_s",
+                                         "max_burn_s",
+                                         "rk4_substeps",
+                                         "reference_tolerance",
+                                         "propagation_tolerance",
+                                         "max_simultaneous",
+                                         "threads",
+                                         "facets_out_of_plane",
+                                         "facets_cone_plus",
+                                         "facets_cone_minus",
+                                         "on_for_s"};
 const std::set<std::string> kNonNegative = {
-    "min_burn_s", "min_off_same_s", "min_gap_other_s", "relative_gap", "absolute_gap",
-    "area_to_mass_m2_kg", "reflectivity_cr", "eccentricity", "window_tolerance",
-    "samples_per_interval", "intersample_points", "off_for_s", "margin", "burn_start_penalty",
-    "max_burns_per_thruster", "random_seed", "log_level", "gravity_degree"};
+    "min_burn_s",       "min_off_same_s",       "min_gap_other_s",        "relative_gap",
+    "absolute_gap",     "area_to_mass_m2_kg",   "reflectivity_cr",        "eccentricity",
+    "window_tolerance", "samples_per_interval", "intersample_points",     "off_for_s",
+    "margin",           "burn_start_penalty",   "max_burns_per_thruster", "random_seed",
+    "log_level",        "gravity_degree"};
 // Keys whose deletion must be rejected (required where they appear in the bases).
-const std::set<std::string> kRequired = {
-    "name", "model", "type", "mean_motion_rad_s", "station_longitude_deg", "epoch",
-    "semi_major_axis_m", "eccentricity", "spacecraft", "mass_kg", "isp_s", "thrust_n", "thrusters",
-    "preset", "custom", "initial_state", "hcw_position_m", "relative_equinoctial", "state",
-    "horizon", "duration_s", "step_s", "num_intervals", "end_true_anomaly_rad", "half_width_m",
-    "half_width_deg", "direction_rtn", "thruster", "start_s", "end_s", "tolerance", "kind"};
+const std::set<std::string> kRequired = {"name",
+                                         "model",
+                                         "type",
+                                         "mean_motion_rad_s",
+                                         "station_longitude_deg",
+                                         "epoch",
+                                         "semi_major_axis_m",
+                                         "eccentricity",
+                                         "spacecraft",
+                                         "mass_kg",
+                                         "isp_s",
+                                         "thrust_n",
+                                         "thrusters",
+                                         "preset",
+                                         "custom",
+                                         "initial_state",
+                                         "hcw_position_m",
+                                         "relative_equinoctial",
+                                         "state",
+                                         "horizon",
+                                         "duration_s",
+                                         "step_s",
+                                         "num_intervals",
+                                         "end_true_anomaly_rad",
+                                         "half_width_m",
+                                         "half_width_deg",
+                                         "direction_rtn",
+                                         "thruster",
+                                         "start_s",
+                                         "end_s",
+                                         "tolerance",
+                                         "kind"};
 // Arrays of fixed length: removing an element is invalid.
-const std::set<std::string> kFixedArrays = {"hcw_position_m", "hcw_velocity_m_s", "state",
-                                            "relative_equinoctial", "direction_rtn", "tolerance"};
+const std::set<std::string> kFixedArrays = {"hcw_position_m", "hcw_velocity_m_s",
+                                            "state",          "relative_equinoctial",
+                                            "direction_rtn",  "tolerance"};
 
 struct Mutation {
   std::string description;
@@ -127,7 +175,8 @@ struct Mutation {
 };
 
 // Every (pointer, parent key) in the document.
-void CollectPaths(const json& j, const json::json_pointer& p, std::vector<json::json_pointer>* out) {
+void CollectPaths(const json& j, const json::json_pointer& p,
+                  std::vector<json::json_pointer>* out) {
   if (!p.empty()) out->push_back(p);
   if (j.is_object()) {
     for (auto it = j.begin(); it != j.end(); ++it) CollectPaths(it.value(), p / it.key(), out);
@@ -162,7 +211,9 @@ std::vector<Mutation> MakeMutations(const json& base, std::mt19937* rng, int cou
     if (base.at(p).is_object()) objects.push_back(p);
   }
   objects.push_back(json::json_pointer());
-  auto pick = [rng](const auto& v) { return v[std::uniform_int_distribution<size_t>(0, v.size() - 1)(*rng)]; };
+  auto pick = [rng](const auto& v) {
+    return v[std::uniform_int_distribution<size_t>(0, v.size() - 1)(*rng)];
+  };
   std::vector<Mutation> out;
   const std::string text = base.dump(2);
   for (int k = 0; k < count; ++k) {
@@ -187,8 +238,8 @@ std::vector<Mutation> MakeMutations(const json& base, std::mt19937* rng, int cou
       case 2: {  // wrong type
         const json::json_pointer p = pick(paths);
         const json& v = base.at(p);
-        static const std::vector<json> kinds = {json("text"), json(true), json(nullptr), json::array(),
-                                                json::object(), json(7)};
+        static const std::vector<json> kinds = {json("text"),  json(true),     json(nullptr),
+                                                json::array(), json::object(), json(7)};
         json repl;
         do {
           repl = pick(kinds);
@@ -250,8 +301,8 @@ std::vector<Mutation> MakeMutations(const json& base, std::mt19937* rng, int cou
       }
       case 9: {  // NaN / Infinity / overflowing literal instead of a number
         const json::json_pointer p = pick(numbers);
-        static const std::vector<std::string> lits = {"NaN", "Infinity", "-Infinity", "1e999",
-                                                      "-1e999", "nan"};
+        static const std::vector<std::string> lits = {"NaN",   "Infinity", "-Infinity",
+                                                      "1e999", "-1e999",   "nan"};
         const std::string lit = pick(lits);
         const std::string marker = "\"__number_marker__\"";
         j.at(p) = "__number_marker__";
@@ -322,8 +373,8 @@ TEST(ScenarioFuzz, MutatedScenariosNeverCrashNorPassWhenInvalid) {
       }
       if (r.exit_code == 0 && !m.must_reject) valid_files.push_back(f);
       if (std::getenv("THRUSTSCHED_FUZZ_VERBOSE") != nullptr) {
-        std::cout << "[" << r.exit_code << (m.must_reject ? "!" : "?") << "] " << m.description << ": "
-                  << r.err.substr(0, r.err.find('\n')) << "\n";
+        std::cout << "[" << r.exit_code << (m.must_reject ? "!" : "?") << "] " << m.description
+                  << ": " << r.err.substr(0, r.err.find('\n')) << "\n";
       }
     }
   }

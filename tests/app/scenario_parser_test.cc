@@ -205,8 +205,8 @@ TEST(ScenarioParser, YamanakaAnkersenHorizonByTrueAnomaly) {
   json j = HcwBase();
   j.erase("window");
   j["model"] = {{"type", "yamanaka_ankersen"}, {"semi_major_axis_m", 24616e3},
-                {"eccentricity", 0.73074}, {"true_anomaly_at_epoch_rad", 0.1 * kPi},
-                {"mu_m3_s2", 3.986004418e14}, {"length_scale_m", 1000}};
+                {"eccentricity", 0.73074},     {"true_anomaly_at_epoch_rad", 0.1 * kPi},
+                {"mu_m3_s2", 3.986004418e14},  {"length_scale_m", 1000}};
   j["horizon"] = {{"end_true_anomaly_rad", 5.2}, {"num_intervals", 400}};
   const Scenario s = Parse(j);
   const dynamics::YamanakaAnkersenModel ref(24616e3, 0.73074, 3.986004418e14, 0.1 * kPi);
@@ -224,9 +224,9 @@ TEST(ScenarioParser, ThrusterExtensions) {
   j["spacecraft"]["thrusters"] = {{"preset", "ideal6"}, {"use", {"-N", "+N"}}};
   Scenario s = Parse(j);
   EXPECT_EQ(s.thruster_names(), (std::vector<std::string>{"-N", "+N"}));
-  j["spacecraft"]["thrusters"] = {
-      {"custom", {{{"name", "+X"}, {"direction_rtn", {2, 0, 0}}},
-                  {{"name", "-X"}, {"direction_rtn", {-1, 0, 0}}}}}};
+  j["spacecraft"]["thrusters"] = {{"custom",
+                                   {{{"name", "+X"}, {"direction_rtn", {2, 0, 0}}},
+                                    {{"name", "-X"}, {"direction_rtn", {-1, 0, 0}}}}}};
   s = Parse(j);
   EXPECT_EQ(s.thruster_names(), (std::vector<std::string>{"+X", "-X"}));
   EXPECT_NEAR(s.problem.thrusters.thruster(0).direction.norm(), 1.0, 1e-15);  // normalised
@@ -292,9 +292,9 @@ TEST(ScenarioParser, DiscretisationTranscriptionSolverExtensions) {
   json j = HcwBase();
   j["discretisation"] = {{"scheme", "rk4"}, {"rk4_substeps", 7}, {"reference_tolerance", 1e-10}};
   j["transcription"] = {{"formulation", "condensed"}, {"encoding", "thesis"}, {"scale", false}};
-  j["solver"] = {{"time_limit_s", 5},     {"relative_gap", 0.02}, {"threads", 2},
-                 {"absolute_gap", 1e-6},  {"random_seed", 42},    {"log_level", 2},
-                 {"presolve", false},     {"progress_interval_s", 1.5}};
+  j["solver"] = {{"time_limit_s", 5},    {"relative_gap", 0.02},      {"threads", 2},
+                 {"absolute_gap", 1e-6}, {"random_seed", 42},         {"log_level", 2},
+                 {"presolve", false},    {"progress_interval_s", 1.5}};
   const Scenario s = Parse(j);
   EXPECT_EQ(s.build.discretisation.scheme, dynamics::Scheme::kRk4);
   EXPECT_EQ(s.build.discretisation.rk4_substeps, 7);
@@ -321,11 +321,13 @@ TEST(ScenarioParser, HistoryForcedOffTerminalInputModeCheck) {
   json j = HcwBase();
   j["history"] = {{"-T", {{"on_for_s", 600}}}, {"+R", {{"off_for_s", 900}}}};
   j["forced_off"] = {{{"thruster", "+N"}, {"start_s", 3600}, {"end_s", 7200}}};
-  j["terminal"] = {{"type", "station_keeping"},     {"facets_out_of_plane", 8},
-                   {"facets_cone_plus", 12},        {"facets_cone_minus", 10},
-                   {"lookahead_s", {0, 86400, 172800}}, {"margin", 0.1}};
-  j["check"] = {{"samples_per_interval", 2}, {"propagation_tolerance", 1e-9},
-                {"window_tolerance", 5}, {"include_intersample", true}};
+  j["terminal"] = {
+      {"type", "station_keeping"}, {"facets_out_of_plane", 8},          {"facets_cone_plus", 12},
+      {"facets_cone_minus", 10},   {"lookahead_s", {0, 86400, 172800}}, {"margin", 0.1}};
+  j["check"] = {{"samples_per_interval", 2},
+                {"propagation_tolerance", 1e-9},
+                {"window_tolerance", 5},
+                {"include_intersample", true}};
   Scenario s = Parse(j);
   ASSERT_EQ(s.problem.history.on_for_s.size(), 6u);
   EXPECT_DOUBLE_EQ(s.problem.history.on_for_s[4], 600);  // -T is index 4
@@ -474,11 +476,11 @@ TEST(ScenarioParserRejects, MissingRequiredFields) {
 
 TEST(ScenarioParserRejects, NonPositiveDurationsAndWidths) {
   const std::vector<std::pair<std::vector<std::string>, double>> cases = {
-      {{"horizon", "duration_s"}, -86400}, {{"horizon", "duration_s"}, 0},
-      {{"horizon", "step_s"}, 0},          {{"horizon", "step_s"}, -300},
-      {{"window", "half_width_m"}, 0},     {{"window", "half_width_m"}, -1},
-      {{"spacecraft", "mass_kg"}, 0},      {{"spacecraft", "thrust_n"}, -0.265},
-      {{"spacecraft", "isp_s"}, 0},        {{"model", "mean_motion_rad_s"}, 0},
+      {{"horizon", "duration_s"}, -86400},  {{"horizon", "duration_s"}, 0},
+      {{"horizon", "step_s"}, 0},           {{"horizon", "step_s"}, -300},
+      {{"window", "half_width_m"}, 0},      {{"window", "half_width_m"}, -1},
+      {{"spacecraft", "mass_kg"}, 0},       {{"spacecraft", "thrust_n"}, -0.265},
+      {{"spacecraft", "isp_s"}, 0},         {{"model", "mean_motion_rad_s"}, 0},
       {{"operations", "min_burn_s"}, -300}, {{"solver", "time_limit_s"}, 0},
   };
   for (const auto& [path, value] : cases) {
@@ -546,7 +548,8 @@ TEST(ScenarioParserRejects, EmptyThrusterSets) {
   j["spacecraft"]["thrusters"] = {{"custom", {{{"name", "a b"}, {"direction_rtn", {1, 0, 0}}}}}};
   EXPECT_HAS(ErrorOf(j), "scenario.spacecraft.thrusters.custom[0].name: \"a b\"");
   j["spacecraft"]["thrusters"] = {{"custom", {{{"name", "Z"}, {"direction_rtn", {0, 0, 0}}}}}};
-  EXPECT_HAS(ErrorOf(j), "scenario.spacecraft.thrusters.custom[0].direction_rtn: must not be the zero");
+  EXPECT_HAS(ErrorOf(j),
+             "scenario.spacecraft.thrusters.custom[0].direction_rtn: must not be the zero");
 }
 
 TEST(ScenarioParserRejects, BrokenJsonAndDuplicateKeys) {

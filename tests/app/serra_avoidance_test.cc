@@ -17,8 +17,8 @@
 #include <fstream>
 #include <string>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
 #include "app/scenario.h"
@@ -39,7 +39,8 @@ nlohmann::json Reference(const std::string& example) {
 }
 
 Scenario Load(const std::string& example) {
-  return LoadScenario(std::string(THRUSTSCHED_DATA_DIR) + "/scenarios/serra_avoidance_" + example + ".json");
+  return LoadScenario(std::string(THRUSTSCHED_DATA_DIR) + "/scenarios/serra_avoidance_" + example +
+                      ".json");
 }
 
 Eigen::MatrixXd Printed(const nlohmann::json& c) {
@@ -67,7 +68,7 @@ TEST(SerraAvoidanceTest, PrintedCovarianceDefects) {
   const auto& fix = ex1.at("covariance_correction");
   const int i = fix["entry"][0], j = fix["entry"][1];
   c1(i, j) = c1(j, i) = fix["used"].get<double>();
-  EXPECT_GT(ScaledMinEigenvalue(c1, n), -0.02);    // rounding of 0.05 m^2 entries
+  EXPECT_GT(ScaledMinEigenvalue(c1, n), -0.02);  // rounding of 0.05 m^2 entries
   EXPECT_GT(ScaledMinEigenvalue(Printed(ex2), n), -0.01);
   EXPECT_LT(ScaledMinEigenvalue(Printed(ex2), n), 0.0);
 }
@@ -148,7 +149,8 @@ void ExpectVerified(const Plan& p) {
 // Sum of |impulse| per axis of the local frame (R, T, N).
 Eigen::Vector3d PerAxis(const transcription::Schedule& s, const dynamics::ThrusterSet& thrusters) {
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
-  for (const auto& im : s.impulses) out += im.delta_v_m_s * thrusters.thruster(im.thruster).direction.cwiseAbs();
+  for (const auto& im : s.impulses)
+    out += im.delta_v_m_s * thrusters.thruster(im.thruster).direction.cwiseAbs();
   return out;
 }
 

@@ -31,7 +31,8 @@ using thrustsched::testing::ReadJson;
 using thrustsched::testing::RunCli;
 using thrustsched::testing::TempDir;
 
-const std::string kScenario = std::string(THRUSTSCHED_DATA_DIR) + "/scenarios/year/year_test_4cycles.json";
+const std::string kScenario =
+    std::string(THRUSTSCHED_DATA_DIR) + "/scenarios/year/year_test_4cycles.json";
 
 std::vector<std::vector<std::string>> ReadCsvRows(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
@@ -77,7 +78,8 @@ std::string ScenarioText(const std::string& long_horizon, const std::string& ext
   "window": {"half_width_deg": 0.05},
   "operations": {"min_burn_s": 300, "min_off_same_s": 1200, "min_gap_other_s": 300},)" +
          extra + R"(
-  "long_horizon": )" + long_horizon + "\n}";
+  "long_horizon": )" +
+         long_horizon + "\n}";
 }
 
 std::string ParseError(const std::string& long_horizon, const std::string& extra = "") {
@@ -270,19 +272,19 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   ASSERT_EQ(r.exit_code, 0) << r.Describe();
   EXPECT_NE(r.err.find("cycle 4/4"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ETA"), std::string::npos) << r.err;
-  for (const char* f : {"cycles.csv", "year.json", "trajectory.csv", "checkpoint.json",
-                        "cycles/cycle_001.csv", "cycles/cycle_004.csv",
-                        "cycles/cycle_004_trajectory.csv", "consumption.gp", "vectors.gp",
-                        "latlon.gp", "timeline.gp"}) {
+  for (const char* f :
+       {"cycles.csv", "year.json", "trajectory.csv", "checkpoint.json", "cycles/cycle_001.csv",
+        "cycles/cycle_004.csv", "cycles/cycle_004_trajectory.csv", "consumption.gp", "vectors.gp",
+        "latlon.gp", "timeline.gp"}) {
     EXPECT_TRUE(fs::exists(full + "/" + f)) << f;
   }
   const nlohmann::json year = ReadJson(full + "/year.json");
   EXPECT_TRUE(year["complete"].get<bool>());
   EXPECT_EQ(year["cycles"], 4);
   EXPECT_DOUBLE_EQ(year["simulated_days"].get<double>(), 4.0);
-  for (const char* k : {"consumption_l1_m_s", "delta_v_m_s", "propellant_kg", "normal_delta_v_m_s",
-                        "time_outside_window_s", "wall_seconds", "max_abs_lat_deg",
-                        "max_abs_lon_deg"}) {
+  for (const char* k :
+       {"consumption_l1_m_s", "delta_v_m_s", "propellant_kg", "normal_delta_v_m_s",
+        "time_outside_window_s", "wall_seconds", "max_abs_lat_deg", "max_abs_lon_deg"}) {
     EXPECT_TRUE(year[k].is_number()) << k;
   }
   // Physics of the totals: L1 = 1.44296 x delta-v for the Anzel thrusters;
@@ -291,8 +293,8 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   EXPECT_GT(dv, 0.1);  // the inclined start needs thrust
   EXPECT_NEAR(year["consumption_l1_m_s"].get<double>(), 1.44296 * dv, 1e-4 * dv);
   EXPECT_NEAR(year["propellant_kg"].get<double>(), 4850.0 * dv / (9.80665 * 2005.0), 1e-6);
-  EXPECT_NEAR(year["normal_delta_v_m_s"].get<double>(), std::cos(63.64 * 3.14159265358979323846 / 180.0) * dv,
-              1e-9 + 1e-12 * dv);
+  EXPECT_NEAR(year["normal_delta_v_m_s"].get<double>(),
+              std::cos(63.64 * 3.14159265358979323846 / 180.0) * dv, 1e-9 + 1e-12 * dv);
   // Thrust days: per thruster sums to the total; N + S = E + W = total (Anzel).
   const nlohmann::json& td = year["thrust_days"];
   double sum = 0;
@@ -333,9 +335,8 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
     all.insert(all.end(), b.begin(), b.end());
   }
   EXPECT_EQ(year["burns"], burns);
-  const auto v = transcription::CheckOperationalRules(sc.problem.rules,
-                                                      transcription::BoundaryHistory::AllOff(4), {},
-                                                      4, 0.0, 4 * 86400.0, all);
+  const auto v = transcription::CheckOperationalRules(
+      sc.problem.rules, transcription::BoundaryHistory::AllOff(4), {}, 4, 0.0, 4 * 86400.0, all);
   for (const auto& x : v) ADD_FAILURE() << x.message;
   // trajectory.csv: every 30 min over 4 days, inside the box.
   const auto traj = ReadCsvRows(full + "/trajectory.csv");
@@ -347,7 +348,8 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
 
   // Interrupted after 2 cycles, then resumed.
   const std::string split = TempDir("sim_split");
-  const auto r2 = RunCli({"simulate", kScenario, "--out", split, "--no-plots", "--cycles", "2"}, 300);
+  const auto r2 =
+      RunCli({"simulate", kScenario, "--out", split, "--no-plots", "--cycles", "2"}, 300);
   ASSERT_EQ(r2.exit_code, 0) << r2.Describe();
   const nlohmann::json partial = ReadJson(split + "/year.json");
   EXPECT_FALSE(partial["complete"].get<bool>());
@@ -388,9 +390,8 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   text.insert(pos, "\"soft_penalty\": 500, ");
   thrustsched::testing::WriteFile(other + "/changed.json", text);
   fs::copy_file(split + "/checkpoint.json", other + "/checkpoint.json");
-  const auto r4 = RunCli({"simulate", other + "/changed.json", "--out", other, "--resume",
-                          "--cycles", "1"},
-                         120);
+  const auto r4 = RunCli(
+      {"simulate", other + "/changed.json", "--out", other, "--resume", "--cycles", "1"}, 120);
   EXPECT_EQ(r4.exit_code, 2) << r4.Describe();
   EXPECT_NE(r4.err.find("checkpoint"), std::string::npos) << r4.err;
   fs::remove_all(full);
@@ -429,7 +430,8 @@ TEST(SimulateCli, WritesTheReportAndTheYearPlots) {
     }
     EXPECT_TRUE(zero) << "no 0 on the consumption axis";
     size_t plots = 0;
-    for (size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1)) ++plots;
+    for (size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1))
+      ++plots;
     EXPECT_EQ(plots, 7u);
   }
   r = RunCli({"simulate", kScenario, "--out", dir + "/b", "--cycles", "1", "--quiet", "--no-plots",
@@ -457,9 +459,9 @@ TEST(SimulateCli, RefusesToStartOverAnEarlierRun) {
   EXPECT_EQ(ReadFile(dir + "/checkpoint.json"), checkpoint);
   EXPECT_TRUE(fs::exists(dir + "/cycles/cycle_002.csv"));
 
-  r = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "1", "--resume",
-              "--force"},
-             60);
+  r = RunCli(
+      {"simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "1", "--resume", "--force"},
+      60);
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
 
   thrustsched::testing::WriteFile(dir + "/my_notes.txt", "mine");
@@ -494,7 +496,8 @@ TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
   RunHooks hooks;
   hooks.on_progress = InterruptSelfAtFirstIncumbent;
   const auto r = thrustsched::testing::RunInChild([&] {
-    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots"}, hooks);
+    return thrustsched::app::RunCli(
+        {"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots"}, hooks);
   });
   ASSERT_TRUE(r.exited) << r.Describe();
   ASSERT_EQ(r.exit_code, 4) << r.Describe();
@@ -502,9 +505,8 @@ TEST(SimulateCli, SigintStopsCleanlyAndResumes) {
   const nlohmann::json cp = ReadJson(dir + "/checkpoint.json");
   EXPECT_EQ(cp["next_cycle"], 0);
   EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 1u);  // header only
-  const auto r2 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
-                          "--cycles", "1"},
-                         300);
+  const auto r2 =
+      RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume", "--cycles", "1"}, 300);
   ASSERT_EQ(r2.exit_code, 0) << r2.Describe();
   EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 2u);
   fs::remove_all(dir);
@@ -522,8 +524,9 @@ TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
     if (cycle == 2) std::abort();
   };
   const auto r = thrustsched::testing::RunInChild([&] {
-    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2"},
-                  die_in_cycle_2);
+    return thrustsched::app::RunCli(
+        {"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2"},
+        die_in_cycle_2);
   });
   ASSERT_FALSE(r.exited && r.exit_code == 0) << r.Describe();
   ASSERT_TRUE(fs::exists(dir + "/in_progress.json")) << r.Describe();
@@ -534,17 +537,16 @@ TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
 
   // The same death again, now in the preprocessing-off attempt...
   const auto r2 = thrustsched::testing::RunInChild([&] {
-    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir, "--no-plots", "--cycles", "2",
-                   "--resume"},
-                  die_in_cycle_2);
+    return thrustsched::app::RunCli({"thrustsched", "simulate", kScenario, "--out", dir,
+                                     "--no-plots", "--cycles", "2", "--resume"},
+                                    die_in_cycle_2);
   });
   ASSERT_FALSE(r2.exited && r2.exit_code == 0) << r2.Describe();
   EXPECT_NE(r2.err.find("preprocessing off"), std::string::npos) << r2.err;
   EXPECT_EQ(ReadJson(dir + "/in_progress.json")["solver_preprocessing_off"], true);
   // ...is refused on the next resume, naming the cycle (exit 1, no loop).
-  const auto r3 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
-                          "--cycles", "2"},
-                         300);
+  const auto r3 =
+      RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume", "--cycles", "2"}, 300);
   ASSERT_TRUE(r3.exited) << r3.Describe();
   EXPECT_EQ(r3.exit_code, 1) << r3.Describe();
   EXPECT_NE(r3.err.find("cycle 2 ended the process twice"), std::string::npos) << r3.err;
@@ -554,9 +556,8 @@ TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
   nlohmann::json first = ReadJson(dir + "/in_progress.json");
   first["solver_preprocessing_off"] = false;
   thrustsched::testing::WriteFile(dir + "/in_progress.json", first.dump());
-  const auto r4 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
-                          "--cycles", "2"},
-                         300);
+  const auto r4 =
+      RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume", "--cycles", "2"}, 300);
   ASSERT_EQ(r4.exit_code, 0) << r4.Describe();
   EXPECT_NE(r4.err.find("an earlier run died while solving cycle 2"), std::string::npos) << r4.err;
   EXPECT_FALSE(fs::exists(dir + "/in_progress.json"));
@@ -568,9 +569,8 @@ TEST(SimulateCli, SolverCrashIsRetriedOnResume) {
   EXPECT_NE(rows[2][note].find("solver crash"), std::string::npos) << rows[2][note];
   EXPECT_EQ(rows[2][Column(rows[0], "rules_ok")], "true");
   // A normal cycle leaves no marker behind either.
-  const auto r5 = RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume",
-                          "--cycles", "3"},
-                         300);
+  const auto r5 =
+      RunCli({"simulate", kScenario, "--out", dir, "--no-plots", "--resume", "--cycles", "3"}, 300);
   ASSERT_EQ(r5.exit_code, 0) << r5.Describe();
   EXPECT_FALSE(fs::exists(dir + "/in_progress.json"));
   EXPECT_EQ(ReadCsvRows(dir + "/cycles.csv").size(), 4u);

@@ -38,8 +38,8 @@ double Seconds(Clock::time_point since) {
 bool Ended(pid_t pid) {
   const std::string stat = ReadFile("/proc/" + std::to_string(pid) + "/stat");
   const size_t close = stat.rfind(')');
-  return stat.empty() || (close != std::string::npos && close + 2 < stat.size() &&
-                          stat[close + 2] == 'Z');
+  return stat.empty() ||
+         (close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z');
 }
 
 // Solves `scenario` and sends `signal` once stderr contains `trigger`;
@@ -54,26 +54,25 @@ struct SignalledRun {
 SignalledRun SolveAndSignal(const std::string& scenario, const std::string& dir, int signal,
                             const std::string& trigger, double give_up_s) {
   SignalledRun s;
-  s.run = RunProgram(
-      THRUSTSCHED_CLI, {"solve", scenario, "--out", dir, "--no-plots"}, 600.0,
-      [&](pid_t pid, const std::string& err_path) {
-        const Clock::time_point t0 = Clock::now();
-        while (Seconds(t0) < give_up_s && !Ended(pid)) {
-          if (ReadFile(err_path).find(trigger) != std::string::npos) break;
-          std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-        if (ReadFile(err_path).find(trigger) == std::string::npos) return;
-        const Clock::time_point sent = Clock::now();
-        kill(pid, signal);
-        s.sent = true;
-        while (Seconds(sent) < 60.0) {
-          if (ReadFile(err_path).find("interrupted (SIG") != std::string::npos) {
-            s.seconds_to_stop = Seconds(sent);
-            return;
-          }
-          std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-      });
+  s.run = RunProgram(THRUSTSCHED_CLI, {"solve", scenario, "--out", dir, "--no-plots"}, 600.0,
+                     [&](pid_t pid, const std::string& err_path) {
+                       const Clock::time_point t0 = Clock::now();
+                       while (Seconds(t0) < give_up_s && !Ended(pid)) {
+                         if (ReadFile(err_path).find(trigger) != std::string::npos) break;
+                         std::this_thread::sleep_for(std::chrono::milliseconds(20));
+                       }
+                       if (ReadFile(err_path).find(trigger) == std::string::npos) return;
+                       const Clock::time_point sent = Clock::now();
+                       kill(pid, signal);
+                       s.sent = true;
+                       while (Seconds(sent) < 60.0) {
+                         if (ReadFile(err_path).find("interrupted (SIG") != std::string::npos) {
+                           s.seconds_to_stop = Seconds(sent);
+                           return;
+                         }
+                         std::this_thread::sleep_for(std::chrono::milliseconds(10));
+                       }
+                     });
   return s;
 }
 
@@ -138,8 +137,7 @@ TEST(TimeLimit, DiagnosisIsAnnouncedTimedAndSwitchable) {
   EXPECT_EQ(r.exit_code, 3) << r.Describe();
   EXPECT_HAS(r.err, "looking for a proof of infeasibility");
   EXPECT_HAS(r.err, "--no-diagnose");
-  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(times .*, diagnose [0-9.]+ s,)")))
-      << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(times .*, diagnose [0-9.]+ s,)"))) << r.out;
   r = RunCli({"solve", scenario, "--out", dir + "/b", "--time-limit", "0.05", "--no-diagnose"});
   EXPECT_EQ(r.exit_code, 4) << r.Describe();
   EXPECT_EQ(r.err.find("looking for a proof"), std::string::npos) << r.err;

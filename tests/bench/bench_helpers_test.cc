@@ -45,8 +45,8 @@ dynamics::DiscreteModel HcwDiscrete(dynamics::Scheme scheme, double step, int n)
   const dynamics::HcwModel hcw(kN);
   dynamics::DiscretizationOptions o;
   o.scheme = scheme;
-  return dynamics::Discretize(hcw, dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005)
-                                       .AccelerationMatrix(),
+  return dynamics::Discretize(hcw,
+                              dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005).AccelerationMatrix(),
                               dynamics::UniformGrid(0, step * n, n), o);
 }
 
@@ -68,8 +68,7 @@ TEST(CompareDiscretisations, EulerErrorMatchesItsClosedForm) {
   const double expected = (si * (i6 + a * h - phi) * sd).norm() / (si * phi * sd).norm();
   EXPECT_NEAR(e.max_rel_err_phi, expected, 1e-9 * expected);
   // Euler's Gamma is h B U against the closed-form ZOH integral.
-  const Eigen::MatrixXd u =
-      dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005).AccelerationMatrix();
+  const Eigen::MatrixXd u = dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005).AccelerationMatrix();
   const Eigen::MatrixXd g_exact = hcw.ZohInputMatrix(h) * u;
   const Eigen::MatrixXd g_euler = h * hcw.Evaluate(0).b * u;
   const double expected_g = (si * (g_euler - g_exact)).norm() / (si * g_exact).norm();
@@ -83,10 +82,9 @@ TEST(CompareDiscretisations, EulerErrorMatchesItsClosedForm) {
 TEST(CompareDiscretisations, Rk4OneStepOrderIsFiveForPhiAndFourForGamma) {
   std::vector<double> steps = {300, 600, 1200}, ep, eg;
   for (double h : steps) {
-    const DiscretizationError e =
-        CompareDiscretizations(HcwDiscrete(dynamics::Scheme::kRk4, h, 2),
-                               HcwDiscrete(dynamics::Scheme::kExactZoh, h, 2),
-                               dynamics::HcwModel(kN).state_scale());
+    const DiscretizationError e = CompareDiscretizations(
+        HcwDiscrete(dynamics::Scheme::kRk4, h, 2), HcwDiscrete(dynamics::Scheme::kExactZoh, h, 2),
+        dynamics::HcwModel(kN).state_scale());
     ep.push_back(e.max_rel_err_phi);
     eg.push_back(e.max_rel_err_gamma);
   }
@@ -103,8 +101,9 @@ TEST(CompareDiscretisations, RejectsMismatchedShapesAndScales) {
   Eigen::VectorXd bad = s;
   bad[2] = -1;
   EXPECT_THROW(CompareDiscretizations(a, a, bad), std::invalid_argument);
-  EXPECT_THROW(GlobalPropagationError(a, a, Eigen::VectorXd::Zero(6), Eigen::MatrixXi::Zero(6, 3), s),
-               std::invalid_argument);
+  EXPECT_THROW(
+      GlobalPropagationError(a, a, Eigen::VectorXd::Zero(6), Eigen::MatrixXi::Zero(6, 3), s),
+      std::invalid_argument);
 }
 
 TEST(GlobalPropagationError, FreeDriftOfEulerAgainstClosedForm) {
@@ -114,10 +113,9 @@ TEST(GlobalPropagationError, FreeDriftOfEulerAgainstClosedForm) {
   const dynamics::HcwModel hcw(kN);
   const Eigen::VectorXd x0 = (Eigen::VectorXd(6) << 1000, 0, 0, 0, 0, 0).finished();
   const Eigen::VectorXd s = hcw.state_scale();
-  const double err =
-      GlobalPropagationError(HcwDiscrete(dynamics::Scheme::kEuler, h, n),
-                             HcwDiscrete(dynamics::Scheme::kExactZoh, h, n), x0,
-                             Eigen::MatrixXi::Zero(6, n), s);
+  const double err = GlobalPropagationError(HcwDiscrete(dynamics::Scheme::kEuler, h, n),
+                                            HcwDiscrete(dynamics::Scheme::kExactZoh, h, n), x0,
+                                            Eigen::MatrixXi::Zero(6, n), s);
   const Eigen::MatrixXd step = Eigen::MatrixXd::Identity(6, 6) + hcw.Evaluate(0).a * h;
   double max_diff = 0, max_ref = (x0.cwiseQuotient(s)).lpNorm<Eigen::Infinity>();
   Eigen::VectorXd xe = x0;
@@ -193,8 +191,7 @@ TEST(Results, EveryContractColumnIsAResultColumn) {
 TEST(MergePatch, FollowsRfc7386) {
   const nlohmann::json target = {{"a", "b"}, {"c", {{"d", "e"}, {"f", "g"}}}};
   const nlohmann::json patch = {{"a", "z"}, {"c", {{"f", nullptr}}}};
-  EXPECT_EQ(MergePatch(target, patch),
-            (nlohmann::json{{"a", "z"}, {"c", {{"d", "e"}}}}));
+  EXPECT_EQ(MergePatch(target, patch), (nlohmann::json{{"a", "z"}, {"c", {{"d", "e"}}}}));
   EXPECT_EQ(MergePatch({{"a", {{"b", "c"}}}}, {{"a", {{"b", "d"}, {"c", nullptr}}}}),
             (nlohmann::json{{"a", {{"b", "d"}}}}));
   EXPECT_EQ(MergePatch({{"a", 1}}, nlohmann::json::array({1, 2})), nlohmann::json::array({1, 2}));
@@ -230,9 +227,9 @@ TEST(Matrix, FullMatrixCoversTheIssueAndFindsEveryScenario) {
   }
   EXPECT_EQ(targets, 2);
   EXPECT_EQ(schemes_cost.size(), 7u);
-  for (const char* s : {kSectionTargets, kSectionAccuracy, kSectionCost, kSectionSchemeSolve,
-                        kSectionFormulation, kSectionAblation, kSectionScalingHorizon,
-                        kSectionScalingStep, kSectionOperations}) {
+  for (const char* s :
+       {kSectionTargets, kSectionAccuracy, kSectionCost, kSectionSchemeSolve, kSectionFormulation,
+        kSectionAblation, kSectionScalingHorizon, kSectionScalingStep, kSectionOperations}) {
     EXPECT_TRUE(sections.count(s)) << s;
   }
   // The glob filters by scenario name.

@@ -49,12 +49,12 @@ const Row* Find(const std::vector<Row>& rows, const std::map<std::string, std::s
 }
 
 TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
-  const fs::path dir = fs::temp_directory_path() / ("thrustsched_bench_quick_" +
-                                                    std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("thrustsched_bench_quick_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const std::string log = (dir.string() + ".log");
   ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --quick --out '" + dir.string() +
-                "' > '" + log + "' 2>&1"),
+                       "' > '" + log + "' 2>&1"),
             0)
       << ReadAll(log);
 
@@ -102,8 +102,10 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
   const double slot = 0.265 / 4850 * 300;
   for (const char* f : {"sparse", "condensed"}) {
     for (const char* e : {"tight", "thesis"}) {
-      const Row* r = Find(rows, {{"section", "formulation"}, {"scenario", "hcw_table41_1d"},
-                                 {"formulation", f}, {"encoding", e}});
+      const Row* r = Find(rows, {{"section", "formulation"},
+                                 {"scenario", "hcw_table41_1d"},
+                                 {"formulation", f},
+                                 {"encoding", e}});
       ASSERT_NE(r, nullptr) << f << " " << e;
       EXPECT_EQ(r->Get("status"), "optimal") << f << " " << e;
       EXPECT_NEAR(r->Num("objective"), slot, 1e-9) << f << " " << e;
@@ -117,11 +119,14 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
     }
   }
   // The condensed formulation has more nonzeros than the sparse one (O(N^2)).
-  EXPECT_GT(Find(rows, {{"section", "formulation"}, {"formulation", "condensed"}})->Num("n_nonzeros"),
-            Find(rows, {{"section", "formulation"}, {"formulation", "sparse"}})->Num("n_nonzeros"));
+  EXPECT_GT(
+      Find(rows, {{"section", "formulation"}, {"formulation", "condensed"}})->Num("n_nonzeros"),
+      Find(rows, {{"section", "formulation"}, {"formulation", "sparse"}})->Num("n_nonzeros"));
   // The external cross-check, where the programs are installed, finds the same optimum.
-  const Row* x = Find(rows, {{"section", "formulation"}, {"scenario", "hcw_table41_1d"},
-                             {"formulation", "sparse"}, {"encoding", "tight"}});
+  const Row* x = Find(rows, {{"section", "formulation"},
+                             {"scenario", "hcw_table41_1d"},
+                             {"formulation", "sparse"},
+                             {"encoding", "tight"}});
   ASSERT_NE(x, nullptr);
   // HiGHS (npm highs, installed by scripts/install-highs.sh) is skipped with
   // its reason where node or the package is missing.
@@ -157,12 +162,12 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
 
   // report.md: every section, and the quick-mode banner.
   const std::string report = ReadAll((dir / "report.md").string());
-  for (const char* h : {"# thrustsched-bench report", "## Targets", "## 1. Accuracy",
-                        "## 2. Cost per scheme", "## 3. Formulations and encodings",
-                        "### 3.1 Design choices", "### 3.2 Cross-check with other solvers",
-                        "## 4. Scaling", "## 5. Operational constraints",
-                        "## Method and definitions", "## Not run or skipped",
-                        "## Columns of results.csv", "Quick mode"}) {
+  for (const char* h :
+       {"# thrustsched-bench report", "## Targets", "## 1. Accuracy", "## 2. Cost per scheme",
+        "## 3. Formulations and encodings", "### 3.1 Design choices",
+        "### 3.2 Cross-check with other solvers", "## 4. Scaling", "## 5. Operational constraints",
+        "## Method and definitions", "## Not run or skipped", "## Columns of results.csv",
+        "Quick mode"}) {
     EXPECT_NE(report.find(h), std::string::npos) << "missing: " << h;
   }
   EXPECT_NE(report.find("| hcw_table41_1d | sparse | tight |"), std::string::npos);
@@ -171,7 +176,7 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
   // The report can be regenerated from the CSV alone.
   fs::remove(dir / "report.md");
   ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --report-only --out '" +
-                dir.string() + "' > '" + log + "' 2>&1"),
+                       dir.string() + "' > '" + log + "' 2>&1"),
             0)
       << ReadAll(log);
   EXPECT_EQ(ReadAll((dir / "report.md").string()), report);
@@ -180,27 +185,28 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
   const fs::path years = dir / "years";
   fs::create_directories(years / "year_anzel4_fixed");
   fs::create_directories(years / "year_anzel4_failed_ne");
-  auto write_year = [](const fs::path& file, const std::string& name, bool complete,
-                       double l1, double wall_s) {
+  auto write_year = [](const fs::path& file, const std::string& name, bool complete, double l1,
+                       double wall_s) {
     std::ofstream(file) << R"({"scenario": ")" << name << R"(", "complete": )"
                         << (complete ? "true" : "false") << R"(, "cycles": )"
                         << (complete ? 53 : 18) << R"(, "cycles_total": 53,
-      "consumption_l1_m_s": )" << l1 << R"(, "normal_delta_v_m_s": 40.0,
+      "consumption_l1_m_s": )"
+                        << l1 << R"(, "normal_delta_v_m_s": 40.0,
       "thrust_days": {"total": 19.2, "north": 9.6, "south": 9.6, "east": 11.5, "west": 7.7},
       "time_outside_window_s": 0, "max_window_violation_deg": 0, "max_abs_lat_deg": 0.0497,
       "max_abs_lon_deg": 0.0497, "fallbacks": {"total": 0},
       "solve_seconds": {"median": 20, "p90": 40, "max": 100},
-      "gap": {"median": 0.004, "max": 0.02}, "wall_seconds": )" << wall_s
-                        << R"(, "cpu_seconds": 900})";
+      "gap": {"median": 0.004, "max": 0.02}, "wall_seconds": )"
+                        << wall_s << R"(, "cpu_seconds": 900})";
   };
   write_year(years / "year_anzel4_fixed" / "year.json", "year_anzel4_fixed", true, 129.2 * 1.01,
              1500.0);
   write_year(years / "year_anzel4_failed_ne" / "year.json", "year_anzel4_failed_ne", false, 44.0,
              1400.0);
-  ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --report-only --out '" +
-                dir.string() + "' --year-results '" + years.string() + "' > '" + log +
-                "' 2>&1"),
-            0)
+  ASSERT_EQ(
+      RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --report-only --out '" + dir.string() +
+                 "' --year-results '" + years.string() + "' > '" + log + "' 2>&1"),
+      0)
       << ReadAll(log);
   const std::string with_years = ReadAll((dir / "report.md").string());
   EXPECT_NE(with_years.find("| year_anzel4_fixed | 53/53 | 130.49 | 129.2 (L5127) | 1.01 | 40 | "
@@ -212,11 +218,12 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
             std::string::npos);
   EXPECT_NE(with_years.find("Measured: 25 min, met (83.3 % of the limit)"), std::string::npos);
   // Bad input: exit code 2.
-  EXPECT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --quick --threads 0 > /dev/null 2>&1"),
-            2);
+  EXPECT_EQ(
+      RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --quick --threads 0 > /dev/null 2>&1"),
+      2);
   EXPECT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH +
-                "' --quick --scenarios no_such_scenario --out '" + dir.string() +
-                "/x' > /dev/null 2>&1"),
+                       "' --quick --scenarios no_such_scenario --out '" + dir.string() +
+                       "/x' > /dev/null 2>&1"),
             2);
   fs::remove_all(dir);
   fs::remove(log);

@@ -14,8 +14,8 @@
 #include <limits>
 #include <string>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "benchmarks/bench/external_solvers.h"
 #include "benchmarks/bench/runner.h"
@@ -120,13 +120,15 @@ TEST(HighsOutput, ParsesResultSkipAndError) {
   EXPECT_DOUBLE_EQ(r.gap, 0.0286);
   EXPECT_TRUE(std::isnan(r.seconds));  // the caller times the process
   // No solution: the bound stays, the objective does not.
-  r = ParseHighsOutput("{\"status\":\"timeLimit\",\"has_solution\":false,\"objective\":null,"
-                       "\"bound\":0.08,\"gap\":null}");
+  r = ParseHighsOutput(
+      "{\"status\":\"timeLimit\",\"has_solution\":false,\"objective\":null,"
+      "\"bound\":0.08,\"gap\":null}");
   EXPECT_TRUE(std::isnan(r.objective));
   EXPECT_DOUBLE_EQ(r.bound, 0.08);
   r = ParseHighsOutput("{\"solver\":\"highs\",\"status\":\"skipped\",\"reason\":\"no package\"}");
   EXPECT_EQ(r.status, "skipped: no package");
-  r = ParseHighsOutput("{\"status\":\"error\",\"reason\":\"out of memory\",\"has_solution\":false}");
+  r = ParseHighsOutput(
+      "{\"status\":\"error\",\"reason\":\"out of memory\",\"has_solution\":false}");
   EXPECT_EQ(r.status, "error: out of memory");
   EXPECT_THROW(ParseHighsOutput(""), std::runtime_error);
 }

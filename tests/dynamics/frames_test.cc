@@ -53,7 +53,8 @@ TEST(FramesTest, RoundTripsThroughTheModelFrame) {
     EXPECT_LT((back - rv).tail<3>().norm(), 1e-15 * rv.tail<3>().norm());
   }
   // GCRF and EME2000 differ by the 23 mas frame bias: 4.7 m at the GEO radius.
-  const double d = (ToModelFrame(rv, InertialFrame::kGcrf, epoch) - ToModelFrame(rv, InertialFrame::kEme2000, epoch))
+  const double d = (ToModelFrame(rv, InertialFrame::kGcrf, epoch) -
+                    ToModelFrame(rv, InertialFrame::kEme2000, epoch))
                        .head<3>()
                        .norm();
   EXPECT_GT(d, 1.0);
@@ -78,13 +79,17 @@ TEST(FramesTest, RoundTripsThroughTheModelFrame) {
 TEST(FramesTest, StationPointInEme2000MatchesTheHandComputation) {
   GeoModelOptions opt;  // 118 E, 2034-01-01T00:00:00Z
   const GeoSimulator sim(opt);
-  const OrbitState s = OrbitFromRelativeState(sim, Eigen::VectorXd::Zero(6), 0.0, InertialFrame::kEme2000);
+  const OrbitState s =
+      OrbitFromRelativeState(sim, Eigen::VectorXd::Zero(6), 0.0, InertialFrame::kEme2000);
   const Eigen::Vector3d r = s.rv.head<3>();
   EXPECT_NEAR(r.norm(), geo::kStationRadius, 1e-6);
-  EXPECT_NEAR(s.rv.tail<3>().norm(), std::sqrt(geo::kEarthMu / geo::kStationRadius), 1e-9);  // circular
-  const double t = (Epoch::Parse("2034-01-01T00:00:00Z").JulianDateTt() - kJulianDateJ2000) / 36525.0;
+  EXPECT_NEAR(s.rv.tail<3>().norm(), std::sqrt(geo::kEarthMu / geo::kStationRadius),
+              1e-9);  // circular
+  const double t =
+      (Epoch::Parse("2034-01-01T00:00:00Z").JulianDateTt() - kJulianDateJ2000) / 36525.0;
   const double alpha = 218.7225 * kDeg;
-  const double zeta = 2306.2181 * t * kArcsec, z = 2306.2181 * t * kArcsec, theta = 2004.3109 * t * kArcsec;
+  const double zeta = 2306.2181 * t * kArcsec, z = 2306.2181 * t * kArcsec,
+               theta = 2004.3109 * t * kArcsec;
   double ra = std::atan2(r.y(), r.x());
   if (ra < 0) ra += 2 * 3.14159265358979323846;
   const double dec = std::asin(r.z() / r.norm());

@@ -4,9 +4,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include <Eigen/Geometry>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "dynamics/geo_model.h"
 
@@ -26,11 +26,13 @@ struct Classical {
 // Independent reference: classical elements -> perifocal -> R3(W) R1(i) R3(w).
 Vector6d FromClassical(const Classical& c) {
   double ecc = c.mean_anomaly;
-  for (int k = 0; k < 50; ++k) ecc -= (ecc - c.e * std::sin(ecc) - c.mean_anomaly) / (1.0 - c.e * std::cos(ecc));
+  for (int k = 0; k < 50; ++k)
+    ecc -= (ecc - c.e * std::sin(ecc) - c.mean_anomaly) / (1.0 - c.e * std::cos(ecc));
   const double n = std::sqrt(kMu / (c.a * c.a * c.a));
   const double root = std::sqrt(1.0 - c.e * c.e);
   const Eigen::Vector3d r_pf(c.a * (std::cos(ecc) - c.e), c.a * root * std::sin(ecc), 0.0);
-  const Eigen::Vector3d v_pf = n * c.a / (1.0 - c.e * std::cos(ecc)) * Eigen::Vector3d(-std::sin(ecc), root * std::cos(ecc), 0.0);
+  const Eigen::Vector3d v_pf = n * c.a / (1.0 - c.e * std::cos(ecc)) *
+                               Eigen::Vector3d(-std::sin(ecc), root * std::cos(ecc), 0.0);
   const Eigen::Matrix3d rot = (Eigen::AngleAxisd(c.raan, Eigen::Vector3d::UnitZ()) *
                                Eigen::AngleAxisd(c.i, Eigen::Vector3d::UnitX()) *
                                Eigen::AngleAxisd(c.argp, Eigen::Vector3d::UnitZ()))
@@ -54,9 +56,9 @@ EquinoctialElements ToEquinoctial(const Classical& c) {
 const Classical kCases[] = {
     {42165765.0, 4.5e-4, 0.05 * kPi / 180, 1.2, 0.7, 2.9},  // GEO-like
     {42164000.0, 3.6e-3, 1.0 * kPi / 180, -2.0, 2.5, -0.4},
-    {26560000.0, 0.02, 55.0 * kPi / 180, 0.3, -1.1, 4.0},   // GNSS-like
-    {24500000.0, 0.73, 7.0 * kPi / 180, 3.0, 3.0, 0.2},     // GTO
-    {7000000.0, 0.001, 98.0 * kPi / 180, 5.0, 0.1, 1.0},    // polar, i > 90
+    {26560000.0, 0.02, 55.0 * kPi / 180, 0.3, -1.1, 4.0},  // GNSS-like
+    {24500000.0, 0.73, 7.0 * kPi / 180, 3.0, 3.0, 0.2},    // GTO
+    {7000000.0, 0.001, 98.0 * kPi / 180, 5.0, 0.1, 1.0},   // polar, i > 90
 };
 
 TEST(OrbitalElementsTest, CartesianMatchesClassicalConversion) {
@@ -72,7 +74,8 @@ TEST(OrbitalElementsTest, CartesianMatchesClassicalConversion) {
 TEST(OrbitalElementsTest, RoundTrips) {
   for (const Classical& c : kCases) {
     const EquinoctialElements el = ToEquinoctial(c);
-    const EquinoctialElements back = EquinoctialFromCartesian(CartesianFromEquinoctial(el, kMu), kMu);
+    const EquinoctialElements back =
+        EquinoctialFromCartesian(CartesianFromEquinoctial(el, kMu), kMu);
     EXPECT_NEAR(back.a_m, el.a_m, 1e-8 * el.a_m);
     EXPECT_NEAR(back.ex, el.ex, 1e-12);
     EXPECT_NEAR(back.ey, el.ey, 1e-12);
@@ -94,7 +97,8 @@ TEST(OrbitalElementsTest, RoundTrips) {
 }
 
 TEST(OrbitalElementsTest, InclinationVectorSignsFollowTheThesisDefinition) {
-  // i = 1 deg, node at 90 deg: ix = 0, iy = +tan(0.5 deg) (appendix D (D.30) has both signs flipped).
+  // i = 1 deg, node at 90 deg: ix = 0, iy = +tan(0.5 deg) (appendix D (D.30) has both signs
+  // flipped).
   const Classical c{42165765.0, 0.0, kPi / 180, kPi / 2, 0.0, 0.0};
   const EquinoctialElements el = EquinoctialFromCartesian(FromClassical(c), kMu);
   EXPECT_NEAR(el.ix, 0.0, 1e-14);
@@ -115,8 +119,11 @@ void ExpectGaussMatchesImpulses(const EquinoctialElements& el, double rel_tol) {
     minus.tail<3>() -= dv * rtn.col(j);
     const EquinoctialElements ep = EquinoctialFromCartesian(plus, kMu);
     const EquinoctialElements em = EquinoctialFromCartesian(minus, kMu);
-    const double fd[6] = {(ep.a_m - em.a_m) / (2 * dv),   (ep.ex - em.ex) / (2 * dv), (ep.ey - em.ey) / (2 * dv),
-                          (ep.ix - em.ix) / (2 * dv),     (ep.iy - em.iy) / (2 * dv),
+    const double fd[6] = {(ep.a_m - em.a_m) / (2 * dv),
+                          (ep.ex - em.ex) / (2 * dv),
+                          (ep.ey - em.ey) / (2 * dv),
+                          (ep.ix - em.ix) / (2 * dv),
+                          (ep.iy - em.iy) / (2 * dv),
                           WrapPi(ep.mean_longitude_rad - em.mean_longitude_rad) / (2 * dv)};
     for (int i = 0; i < 6; ++i) {
       const double scale = g.row(i).cwiseAbs().maxCoeff();
@@ -138,8 +145,8 @@ TEST(OrbitalElementsTest, GaussMatrixAtTheStationPointIsTheThesisB) {
   const double a = geo::kStationRadius, k = 2.5, v = std::sqrt(kMu / a);
   const EquinoctialElements el{a, 0.0, 0.0, 0.0, 0.0, k};
   Eigen::Matrix<double, 6, 3> b;
-  b << 0, 2 * a, 0, std::sin(k), 2 * std::cos(k), 0, -std::cos(k), 2 * std::sin(k), 0, 0, 0, std::cos(k) / 2, 0, 0,
-      std::sin(k) / 2, -2, 0, 0;
+  b << 0, 2 * a, 0, std::sin(k), 2 * std::cos(k), 0, -std::cos(k), 2 * std::sin(k), 0, 0, 0,
+      std::cos(k) / 2, 0, 0, std::sin(k) / 2, -2, 0, 0;
   b /= v;
   EXPECT_LT((GaussMatrix(el, kMu) - b).cwiseAbs().maxCoeff(), 1e-12 * b.cwiseAbs().maxCoeff());
   ExpectGaussMatchesImpulses(el, 1e-6);
@@ -164,12 +171,14 @@ TEST(OrbitalElementsTest, BadInputThrows) {
   EXPECT_THAT([&] { CartesianFromEquinoctial(el, kMu); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("ix must be finite")));
   el = {-1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  EXPECT_THAT([&] { GaussMatrix(el, kMu); }, ThrowsMessage<std::invalid_argument>(HasSubstr("a_m must be > 0")));
+  EXPECT_THAT([&] { GaussMatrix(el, kMu); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("a_m must be > 0")));
   el = {42165765.0, 0.8, 0.7, 0.0, 0.0, 0.0};
   EXPECT_THAT([&] { CartesianFromEquinoctial(el, kMu); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("eccentricity")));
   el = {42165765.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  EXPECT_THAT([&] { CartesianFromEquinoctial(el, -1.0); }, ThrowsMessage<std::invalid_argument>(HasSubstr("mu")));
+  EXPECT_THAT([&] { CartesianFromEquinoctial(el, -1.0); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("mu")));
 
   Vector6d rv = Vector6d::Zero();
   rv(0) = 42165765.0;

@@ -5,9 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include <Eigen/Geometry>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "dynamics/time.h"
 
@@ -83,12 +83,16 @@ TEST(EphemeridesTest, MeanOfEpochFrameIsFixedInTime) {
   const double jd = kJd2034 + 365.25;
   const Eigen::Vector3d of_date = SunPositionMeanOfEpoch(jd, jd);
   const Eigen::Vector3d of_epoch = SunPositionMeanOfEpoch(jd, kJd2034);
-  const double angle = std::acos(std::clamp(of_date.normalized().dot(of_epoch.normalized()), -1.0, 1.0));
+  const double angle =
+      std::acos(std::clamp(of_date.normalized().dot(of_epoch.normalized()), -1.0, 1.0));
   EXPECT_NEAR(angle / kArcsec, 50.29, 0.5);
   // And it agrees with the precession matrix between the two dates to < 2".
-  const Eigen::Matrix3d p_epoch_to_date = PrecessionJ2000ToDate(jd) * PrecessionJ2000ToDate(kJd2034).transpose();
+  const Eigen::Matrix3d p_epoch_to_date =
+      PrecessionJ2000ToDate(jd) * PrecessionJ2000ToDate(kJd2034).transpose();
   const Eigen::Vector3d mapped = p_epoch_to_date * of_epoch;
-  EXPECT_LT(std::acos(std::clamp(mapped.normalized().dot(of_date.normalized()), -1.0, 1.0)) / kArcsec, 2.0);
+  EXPECT_LT(
+      std::acos(std::clamp(mapped.normalized().dot(of_date.normalized()), -1.0, 1.0)) / kArcsec,
+      2.0);
 }
 
 TEST(EphemeridesTest, AnnualAndMonthlyMotion) {
@@ -98,7 +102,8 @@ TEST(EphemeridesTest, AnnualAndMonthlyMotion) {
   const Eigen::Vector3d s1 = SunPositionMeanOfEpoch(kJd2034 + 365.2422, kJd2034 + 365.2422);
   EXPECT_LT(std::acos(std::clamp(s0.normalized().dot(s1.normalized()), -1.0, 1.0)) / kDeg, 0.01);
   const Eigen::Vector3d m0 = MoonPositionMeanOfEpoch(kJd2034, kJd2034);
-  const Eigen::Vector3d m1 = MoonPositionMeanOfEpoch(kJd2034 + 27.3216 * 12, kJd2034 + 27.3216 * 12);
+  const Eigen::Vector3d m1 =
+      MoonPositionMeanOfEpoch(kJd2034 + 27.3216 * 12, kJd2034 + 27.3216 * 12);
   EXPECT_LT(std::acos(std::clamp(m0.normalized().dot(m1.normalized()), -1.0, 1.0)) / kDeg, 8.0);
   // Sun distance between perihelion (~Jan 3) and aphelion (~Jul 4).
   EXPECT_NEAR(SunPositionMeanOfEpoch(kJd2034 + 2, kJd2034).norm(), 1.471e11, 0.002e11);
@@ -110,8 +115,10 @@ TEST(EphemeridesTest, NonFiniteDatesThrow) {
   using ::testing::HasSubstr;
   using ::testing::ThrowsMessage;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THAT([&] { SunPositionJ2000(nan); }, ThrowsMessage<std::invalid_argument>(HasSubstr("jd_tt must be finite")));
-  EXPECT_THAT([&] { MoonPositionJ2000(nan); }, ThrowsMessage<std::invalid_argument>(HasSubstr("jd_tt")));
+  EXPECT_THAT([&] { SunPositionJ2000(nan); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("jd_tt must be finite")));
+  EXPECT_THAT([&] { MoonPositionJ2000(nan); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("jd_tt")));
   EXPECT_THAT([&] { SunPositionMeanOfEpoch(kJd2034, nan); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("jd_frame_tt must be finite")));
   EXPECT_THAT([&] { MoonPositionMeanOfEpoch(nan, kJd2034); },

@@ -2,8 +2,8 @@
 // GeoSimulator::PerturbingAcceleration), each against an independent formula.
 #include <cmath>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 
 #include "dynamics/geo_model.h"
 #include "dynamics/geo_simulator.h"
@@ -22,18 +22,30 @@ constexpr double kPi = 3.14159265358979323846;
 double LegendreUnnormalised(int n, int m, double u) {
   const double c = std::sqrt(1.0 - u * u);
   switch (n * 10 + m) {
-    case 20: return 0.5 * (3 * u * u - 1);
-    case 21: return 3 * u * c;
-    case 22: return 3 * c * c;
-    case 30: return 0.5 * (5 * u * u * u - 3 * u);
-    case 31: return 1.5 * (5 * u * u - 1) * c;
-    case 32: return 15 * u * c * c;
-    case 33: return 15 * c * c * c;
-    case 40: return (35 * std::pow(u, 4) - 30 * u * u + 3) / 8;
-    case 41: return 2.5 * (7 * u * u * u - 3 * u) * c;
-    case 42: return 7.5 * (7 * u * u - 1) * c * c;
-    case 43: return 105 * u * c * c * c;
-    case 44: return 105 * std::pow(c, 4);
+    case 20:
+      return 0.5 * (3 * u * u - 1);
+    case 21:
+      return 3 * u * c;
+    case 22:
+      return 3 * c * c;
+    case 30:
+      return 0.5 * (5 * u * u * u - 3 * u);
+    case 31:
+      return 1.5 * (5 * u * u - 1) * c;
+    case 32:
+      return 15 * u * c * c;
+    case 33:
+      return 15 * c * c * c;
+    case 40:
+      return (35 * std::pow(u, 4) - 30 * u * u + 3) / 8;
+    case 41:
+      return 2.5 * (7 * u * u * u - 3 * u) * c;
+    case 42:
+      return 7.5 * (7 * u * u - 1) * c * c;
+    case 43:
+      return 105 * u * c * c * c;
+    case 44:
+      return 105 * std::pow(c, 4);
   }
   return 0.0;
 }
@@ -46,7 +58,8 @@ double DirectPotential(const Eigen::Vector3d& r, int degree, bool zonal, bool te
   double sum = 0.0;
   for (const auto& k : internal::kEgm2008) {
     if (k.n > degree || (k.m == 0 && !zonal) || (k.m > 0 && !tesseral)) continue;
-    const double norm = std::sqrt((k.m == 0 ? 1.0 : 2.0) * (2 * k.n + 1) * Factorial(k.n - k.m) / Factorial(k.n + k.m));
+    const double norm = std::sqrt((k.m == 0 ? 1.0 : 2.0) * (2 * k.n + 1) * Factorial(k.n - k.m) /
+                                  Factorial(k.n + k.m));
     sum += std::pow(geo::kEarthRadius / rn, k.n) * norm * LegendreUnnormalised(k.n, k.m, u) *
            (k.c * std::cos(k.m * lon) + k.s * std::sin(k.m * lon));
   }
@@ -66,21 +79,26 @@ TEST(GeoForcesTest, CunninghamRecursionIsTheGradientOfTheDirectPotential) {
                                     {-3.0e7, 1.2e7, 2.5e7},
                                     {5.0e6, -4.0e6, -3.0e6}};
   for (int degree = 2; degree <= 4; ++degree) {
-    for (const auto& [zonal, tesseral] : {std::pair{true, true}, std::pair{true, false}, std::pair{false, true}}) {
+    for (const auto& [zonal, tesseral] :
+         {std::pair{true, true}, std::pair{true, false}, std::pair{false, true}}) {
       const internal::GeopotentialCoefficients cs = Coefficients(degree, zonal, tesseral);
       for (const Eigen::Vector3d& r : points) {
         const Vec3<double> rv = {r.x(), r.y(), r.z()};
-        const Vec3<double> a = internal::GeopotentialAccelerationEcef(rv, cs, geo::kEarthMu, geo::kEarthRadius);
+        const Vec3<double> a =
+            internal::GeopotentialAccelerationEcef(rv, cs, geo::kEarthMu, geo::kEarthRadius);
         const double h = 10.0;
         Eigen::Vector3d grad;
         for (int i = 0; i < 3; ++i) {
           Eigen::Vector3d p = r, m = r;
           p(i) += h;
           m(i) -= h;
-          grad(i) = (DirectPotential(p, degree, zonal, tesseral) - DirectPotential(m, degree, zonal, tesseral)) / (2 * h);
+          grad(i) = (DirectPotential(p, degree, zonal, tesseral) -
+                     DirectPotential(m, degree, zonal, tesseral)) /
+                    (2 * h);
         }
         const Eigen::Vector3d got(a[0], a[1], a[2]);
-        EXPECT_LT((got - grad).norm(), 1e-7 * grad.norm()) << degree << zonal << tesseral << r.transpose();
+        EXPECT_LT((got - grad).norm(), 1e-7 * grad.norm())
+            << degree << zonal << tesseral << r.transpose();
       }
     }
   }
@@ -97,21 +115,26 @@ TEST(GeoForcesTest, J2ClosedFormAndDerivedCoefficients) {
   const internal::GeopotentialCoefficients only_j2 = Coefficients(2, true, false);
   const Eigen::Vector3d r(1.1e7, -2.0e6, 6.0e6);
   const double rn = r.norm(), z2 = r.z() * r.z() / (rn * rn);
-  const double k = -1.5 * j2 * geo::kEarthMu * geo::kEarthRadius * geo::kEarthRadius / std::pow(rn, 5);
-  const Eigen::Vector3d ref(k * r.x() * (1 - 5 * z2), k * r.y() * (1 - 5 * z2), k * r.z() * (3 - 5 * z2));
-  const Vec3<double> a = internal::GeopotentialAccelerationEcef<double>({r.x(), r.y(), r.z()}, only_j2,
-                                                                        geo::kEarthMu, geo::kEarthRadius);
+  const double k =
+      -1.5 * j2 * geo::kEarthMu * geo::kEarthRadius * geo::kEarthRadius / std::pow(rn, 5);
+  const Eigen::Vector3d ref(k * r.x() * (1 - 5 * z2), k * r.y() * (1 - 5 * z2),
+                            k * r.z() * (3 - 5 * z2));
+  const Vec3<double> a = internal::GeopotentialAccelerationEcef<double>(
+      {r.x(), r.y(), r.z()}, only_j2, geo::kEarthMu, geo::kEarthRadius);
   EXPECT_LT((Eigen::Vector3d(a[0], a[1], a[2]) - ref).norm(), 1e-12 * ref.norm());
 }
 
 TEST(GeoForcesTest, ThirdBodyAndRadiationPressure) {
   // Satellite on the Earth-body line: a = mu (1/(d - r)^2 - 1/d^2) toward the body.
   const double d = 3.84e8, r = 4.2e7;
-  const Vec3<double> acc = internal::ThirdBodyAcceleration<double>({r, 0, 0}, {d, 0, 0}, geo::kMoonMu);
-  EXPECT_NEAR(acc[0], geo::kMoonMu * (1 / ((d - r) * (d - r)) - 1 / (d * d)), 1e-12 * std::abs(acc[0]));
+  const Vec3<double> acc =
+      internal::ThirdBodyAcceleration<double>({r, 0, 0}, {d, 0, 0}, geo::kMoonMu);
+  EXPECT_NEAR(acc[0], geo::kMoonMu * (1 / ((d - r) * (d - r)) - 1 / (d * d)),
+              1e-12 * std::abs(acc[0]));
   EXPECT_EQ(acc[1], 0.0);
   // Perpendicular: a = mu (d_vec - r_vec)/|.|^3 - mu d_vec/d^3, radial part -mu r/|.|^3.
-  const Vec3<double> acc2 = internal::ThirdBodyAcceleration<double>({0, r, 0}, {d, 0, 0}, geo::kMoonMu);
+  const Vec3<double> acc2 =
+      internal::ThirdBodyAcceleration<double>({0, r, 0}, {d, 0, 0}, geo::kMoonMu);
   const double q = std::pow(d * d + r * r, 1.5);
   EXPECT_NEAR(acc2[1], -geo::kMoonMu * r / q, 1e-12 * std::abs(acc2[1]));
 
@@ -124,8 +147,10 @@ TEST(GeoForcesTest, ThirdBodyAndRadiationPressure) {
   EXPECT_NEAR(srp[0], -coef * au * au / dist2 * au / std::sqrt(dist2), 1e-20);
   EXPECT_NEAR(std::hypot(srp[0], srp[1]), 1.0351e-7, 1e-11);
   EXPECT_GT(internal::ShadowFunction(day, sun, geo::kEarthRadius), 0.0);
-  EXPECT_LT(internal::ShadowFunction({-4.2e7, 6.0e6, 0}, sun, geo::kEarthRadius), 0.0);  // behind, |perp| < R_E
-  EXPECT_GT(internal::ShadowFunction({-4.2e7, 6.5e6, 0}, sun, geo::kEarthRadius), 0.0);  // behind, |perp| > R_E
+  EXPECT_LT(internal::ShadowFunction({-4.2e7, 6.0e6, 0}, sun, geo::kEarthRadius),
+            0.0);  // behind, |perp| < R_E
+  EXPECT_GT(internal::ShadowFunction({-4.2e7, 6.5e6, 0}, sun, geo::kEarthRadius),
+            0.0);  // behind, |perp| > R_E
   // Continuous across the terminator plane.
   EXPECT_NEAR(internal::ShadowFunction({-1e-3, 4.2e7, 0}, sun, geo::kEarthRadius),
               internal::ShadowFunction({1e-3, 4.2e7, 0}, sun, geo::kEarthRadius), 1e-3);

@@ -46,9 +46,11 @@ TEST(GeoModelOptionsTest, InvalidFieldsAreNamed) {
   const Case cases[] = {
       {[](GeoModelOptions& o) { o.gravity_degree = 5; }, "gravity_degree must be in 2..4, got 5"},
       {[](GeoModelOptions& o) { o.gravity_degree = 1; }, "gravity_degree must be in 2..4, got 1"},
-      {[](GeoModelOptions& o) { o.area_to_mass_m2_kg = -0.1; }, "area_to_mass_m2_kg must be finite and >= 0, got -0.1"},
+      {[](GeoModelOptions& o) { o.area_to_mass_m2_kg = -0.1; },
+       "area_to_mass_m2_kg must be finite and >= 0, got -0.1"},
       {[](GeoModelOptions& o) { o.area_to_mass_m2_kg = kNan; }, "area_to_mass_m2_kg"},
-      {[](GeoModelOptions& o) { o.reflectivity_cr = 2.5; }, "reflectivity_cr must be finite and in [0, 2], got 2.5"},
+      {[](GeoModelOptions& o) { o.reflectivity_cr = 2.5; },
+       "reflectivity_cr must be finite and in [0, 2], got 2.5"},
       {[](GeoModelOptions& o) { o.station_longitude_deg = kNan; }, "station_longitude_deg"},
       {[](GeoModelOptions& o) { o.station_longitude_deg = 400.0; }, "station_longitude_deg"},
       {[](GeoModelOptions& o) { o.epoch = "2034-13-01"; }, "epoch '2034-13-01' is invalid"},
@@ -60,7 +62,8 @@ TEST(GeoModelOptionsTest, InvalidFieldsAreNamed) {
     std::string error;
     EXPECT_FALSE(o.IsValid(&error));
     EXPECT_THAT(error, HasSubstr(c.field));
-    EXPECT_THAT([&] { GeoLinearModel m(o); }, ThrowsMessage<std::invalid_argument>(HasSubstr(c.field)));
+    EXPECT_THAT([&] { GeoLinearModel m(o); },
+                ThrowsMessage<std::invalid_argument>(HasSubstr(c.field)));
   }
 }
 
@@ -78,15 +81,18 @@ TEST(GeoModelOptionsTest, SetByName) {
   EXPECT_DOUBLE_EQ(o.station_longitude_deg, -30.5);
   EXPECT_TRUE(o.IsValid(nullptr));
   EXPECT_EQ(GeoModelOptions::FieldNames().size(), 10u);
-  for (const std::string& f : GeoModelOptions::FieldNames()) EXPECT_NO_THROW(GeoModelOptions{}.Set(f, "1")) << f;
+  for (const std::string& f : GeoModelOptions::FieldNames())
+    EXPECT_NO_THROW(GeoModelOptions{}.Set(f, "1")) << f;
   EXPECT_THAT([&] { o.Set("drag", "true"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("unknown field 'drag'")));
   EXPECT_THAT([&] { o.Set("gravity_degree", "four"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("'gravity_degree' expects an integer, got 'four'")));
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("'gravity_degree' expects an integer, got 'four'")));
   EXPECT_THAT([&] { o.Set("sun", "maybe"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("'sun' expects a boolean")));
-  EXPECT_THAT([&] { o.Set("reflectivity_cr", "1.2x"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("'reflectivity_cr' expects a number")));
+  EXPECT_THAT(
+      [&] { o.Set("reflectivity_cr", "1.2x"); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("'reflectivity_cr' expects a number")));
 }
 
 TEST(GeoLinearModelTest, Metadata) {
@@ -119,7 +125,8 @@ TEST(GeoLinearModelTest, InputMatrixIsTheCorrectedThesisB) {
     b /= v;
     const Eigen::MatrixXd got = m.Evaluate(t).b;
     EXPECT_LT((got - b).cwiseAbs().maxCoeff(), 1e-9 * b.cwiseAbs().maxCoeff()) << t;
-    EXPECT_LT((m.InputMatrix(Eigen::VectorXd::Zero(6), t) - b).cwiseAbs().maxCoeff(), 1e-9 * b.cwiseAbs().maxCoeff());
+    EXPECT_LT((m.InputMatrix(Eigen::VectorXd::Zero(6), t) - b).cwiseAbs().maxCoeff(),
+              1e-9 * b.cwiseAbs().maxCoeff());
   }
 }
 
@@ -138,11 +145,11 @@ TEST(GeoLinearModelTest, J2OnlyMatchesTheClosedForm) {
   for (double t : {0.0, 7000.0, 30000.0, 2.5 * kDay}) {
     const double kp = Kappa(m, t), s = std::sin(kp), c = std::cos(kp);
     Eigen::MatrixXd ref(6, 6);
-    ref << 0, -3 * a * s, 3 * a * c, 0, 0, 0,                                //
+    ref << 0, -3 * a * s, 3 * a * c, 0, 0, 0,                                      //
         21 * s / (4 * a), -4.5 * std::sin(2 * kp), 3 - 9 * s * s, 0, 0, -1.5 * c,  //
         -21 * c / (4 * a), 6 - 9 * s * s, 4.5 * std::sin(2 * kp), 0, 0, -1.5 * s,  //
-        0, 0, 0, -1.5 * std::sin(2 * kp), 3 * c * c, 0,                      //
-        0, 0, 0, -3 * s * s, 1.5 * std::sin(2 * kp), 0,                      //
+        0, 0, 0, -1.5 * std::sin(2 * kp), 3 * c * c, 0,                            //
+        0, 0, 0, -3 * s * s, 1.5 * std::sin(2 * kp), 0,                            //
         -21 / (2 * a), 39.0 / 4 * c, 39.0 / 4 * s, 0, 0, 0;
     ref *= k;
     ref(5, 0) += -1.5 * n / a;
@@ -155,8 +162,12 @@ TEST(GeoLinearModelTest, J2OnlyMatchesTheClosedForm) {
     const Eigen::MatrixXd s_mat = m.state_scale().asDiagonal();
     const Eigen::MatrixXd s_inv = m.state_scale().cwiseInverse().asDiagonal();
     const Eigen::MatrixXd a_ref = s_inv * ref * s_mat;
-    EXPECT_LT((s_inv * mm.a * s_mat - a_ref).cwiseAbs().maxCoeff(), 1e-7 * a_ref.cwiseAbs().maxCoeff()) << t;
-    EXPECT_LT((s_inv * (mm.d - dref)).cwiseAbs().maxCoeff(), 1e-7 * (s_inv * dref).cwiseAbs().maxCoeff()) << t;
+    EXPECT_LT((s_inv * mm.a * s_mat - a_ref).cwiseAbs().maxCoeff(),
+              1e-7 * a_ref.cwiseAbs().maxCoeff())
+        << t;
+    EXPECT_LT((s_inv * (mm.d - dref)).cwiseAbs().maxCoeff(),
+              1e-7 * (s_inv * dref).cwiseAbs().maxCoeff())
+        << t;
   }
 }
 
@@ -179,8 +190,11 @@ TEST(GeoLinearModelTest, JacobianMatchesFiniteDifferencesOfTheNonlinearRate) {
     const Eigen::MatrixXd s_inv = m.state_scale().cwiseInverse().asDiagonal();
     const Eigen::MatrixXd got = s_inv * mm.a * s_mat, ref = s_inv * fd * s_mat;
     for (int i = 0; i < 6; ++i) {
-      EXPECT_LT((got.row(i) - ref.row(i)).cwiseAbs().maxCoeff(), 1e-5 * ref.row(i).cwiseAbs().maxCoeff())
-          << "row " << i << " t=" << t << "\n" << got << "\n" << ref;
+      EXPECT_LT((got.row(i) - ref.row(i)).cwiseAbs().maxCoeff(),
+                1e-5 * ref.row(i).cwiseAbs().maxCoeff())
+          << "row " << i << " t=" << t << "\n"
+          << got << "\n"
+          << ref;
     }
   }
 }
@@ -230,7 +244,8 @@ TEST(GeoLinearModelTest, ConstMethodsAreThreadSafe) {
   std::vector<ModelMatrices> serial(8), parallel(8);
   for (int i = 0; i < 8; ++i) serial[i] = m.Evaluate(1000.0 * i);
   std::vector<std::thread> threads;
-  for (int i = 0; i < 8; ++i) threads.emplace_back([&, i] { parallel[i] = m.Evaluate(1000.0 * i); });
+  for (int i = 0; i < 8; ++i)
+    threads.emplace_back([&, i] { parallel[i] = m.Evaluate(1000.0 * i); });
   for (std::thread& th : threads) th.join();
   for (int i = 0; i < 8; ++i) {
     EXPECT_EQ(serial[i].a, parallel[i].a);
@@ -240,20 +255,25 @@ TEST(GeoLinearModelTest, ConstMethodsAreThreadSafe) {
 
 TEST(GeoLinearModelTest, BadArgumentsThrow) {
   const GeoLinearModel m{GeoModelOptions{}};
-  EXPECT_THAT([&] { m.Evaluate(kNan); }, ThrowsMessage<std::invalid_argument>(HasSubstr("t must be finite")));
+  EXPECT_THAT([&] { m.Evaluate(kNan); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("t must be finite")));
   EXPECT_THAT([&] { m.EvaluateOutput(std::numeric_limits<double>::infinity()); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("t must be finite")));
-  EXPECT_THAT([&] { m.EarthRotationAngle(kNan); }, ThrowsMessage<std::invalid_argument>(HasSubstr("t must be finite")));
+  EXPECT_THAT([&] { m.EarthRotationAngle(kNan); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("t must be finite")));
   EXPECT_THAT([&] { m.NaturalRate(Eigen::VectorXd::Zero(5), 0.0); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("6 components, got 5")));
   Eigen::VectorXd x = Eigen::VectorXd::Zero(6);
   x(2) = kNan;
-  EXPECT_THAT([&] { m.NaturalRate(x, 0.0); }, ThrowsMessage<std::invalid_argument>(HasSubstr("finite")));
+  EXPECT_THAT([&] { m.NaturalRate(x, 0.0); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("finite")));
   x(2) = 1.5;
-  EXPECT_THAT([&] { m.InputMatrix(x, 0.0); }, ThrowsMessage<std::invalid_argument>(HasSubstr("eccentricity")));
+  EXPECT_THAT([&] { m.InputMatrix(x, 0.0); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("eccentricity")));
   x(2) = 0.0;
   x(0) = -5e7;
-  EXPECT_THAT([&] { m.NaturalRate(x, 0.0); }, ThrowsMessage<std::invalid_argument>(HasSubstr("da_m")));
+  EXPECT_THAT([&] { m.NaturalRate(x, 0.0); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("da_m")));
   EXPECT_THAT([&] { m.NaturalRate(Eigen::VectorXd::Zero(6), kNan); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("t must be finite")));
 }

@@ -16,7 +16,8 @@ using ::testing::ThrowsMessage;
 
 // Relative error with the model's state scale as the floor (dl, ex, ... are
 // small numbers: their relative error is measured against 0.05 deg).
-double RelativeError(const Eigen::VectorXd& got, const Eigen::VectorXd& want, const Eigen::VectorXd& scale) {
+double RelativeError(const Eigen::VectorXd& got, const Eigen::VectorXd& want,
+                     const Eigen::VectorXd& scale) {
   double worst = 0;
   for (int i = 0; i < want.size(); ++i) {
     worst = std::max(worst, std::abs(got(i) - want(i)) / std::max(std::abs(want(i)), scale(i)));
@@ -49,7 +50,8 @@ TEST(GeoOrbitStateTest, EarlierStatesArePropagatedToTheRequestedTime) {
   // The state 2 h before the epoch, in EME2000 ...
   const OrbitState before = OrbitFromRelativeState(sim, x, -7200.0, InertialFrame::kEme2000);
   // ... gives at t = 0 what the simulator itself gives after 2 h of free motion.
-  const Vector6d eci = sim.Propagate(sim.EciFromRelative(x, -7200.0), -7200.0, Eigen::MatrixXd::Zero(3, 1), {}, {0.0})
+  const Vector6d eci = sim.Propagate(sim.EciFromRelative(x, -7200.0), -7200.0,
+                                     Eigen::MatrixXd::Zero(3, 1), {}, {0.0})
                            .front();
   const Eigen::VectorXd want = sim.RelativeFromEci(eci, 0.0);
   const Eigen::VectorXd got = RelativeStateFromOrbit(sim, before, 0.0);

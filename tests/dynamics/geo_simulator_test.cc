@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "dynamics/geo_model.h"
 #include "dynamics/propagation.h"
@@ -109,8 +109,8 @@ TEST(GeoSimulatorTest, SevenDayFreeDriftLinearVersusNonlinear) {
   const GeoLinearModel lin(opt);
   const std::vector<double> ts = Grid(7 * kDay, 300.0);
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<Vector6d> xs =
-      sim.Propagate(sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0), 0.0, Eigen::MatrixXd::Zero(3, 1), {}, ts);
+  const std::vector<Vector6d> xs = sim.Propagate(sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0),
+                                                 0.0, Eigen::MatrixXd::Zero(3, 1), {}, ts);
   const double sim_s = Seconds(start);
   const std::vector<Eigen::VectorXd> xl =
       PropagateLinear(lin, Eigen::MatrixXd::Zero(3, 1), Eigen::VectorXd::Zero(6), 0.0, {}, ts);
@@ -123,9 +123,10 @@ TEST(GeoSimulatorTest, SevenDayFreeDriftLinearVersusNonlinear) {
     max_lat = std::max(max_lat, std::abs(y(1)));
     max_lon = std::max(max_lon, std::abs(y(2)));
   }
-  std::printf("[ geo ] 7-day free drift: max |lat| %.3e rad, max |lon| %.3e rad; linear-vs-nonlinear "
-              "max |dlat| %.3e rad (%.2f m), max |dlon| %.3e rad (%.2f m); simulation %.3f s\n",
-              max_lat, max_lon, dlat, dlat * geo::kStationRadius, dlon, dlon * geo::kStationRadius, sim_s);
+  std::printf(
+      "[ geo ] 7-day free drift: max |lat| %.3e rad, max |lon| %.3e rad; linear-vs-nonlinear "
+      "max |dlat| %.3e rad (%.2f m), max |dlon| %.3e rad (%.2f m); simulation %.3f s\n",
+      max_lat, max_lon, dlat, dlat * geo::kStationRadius, dlon, dlon * geo::kStationRadius, sim_s);
   RecordProperty("max_dlat_rad", std::to_string(dlat));
   RecordProperty("max_dlon_rad", std::to_string(dlon));
   // The drift itself is of the order of the window (delta = 8.7e-4 rad) ...
@@ -140,8 +141,8 @@ TEST(GeoSimulatorTest, LongitudeAccelerationAt118East) {
   // Thesis (5.40): Gamma_l = -3.5288e-5 rad/day^2 = -4.73e-15 rad/s^2 (Soop: -4.68e-15).
   const GeoSimulator sim{GeoModelOptions{}};
   const std::vector<double> ts = Grid(60 * kDay, 3600.0);
-  const std::vector<Vector6d> xs =
-      sim.Propagate(sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0), 0.0, Eigen::MatrixXd::Zero(3, 1), {}, ts);
+  const std::vector<Vector6d> xs = sim.Propagate(sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0),
+                                                 0.0, Eigen::MatrixXd::Zero(3, 1), {}, ts);
   Eigen::MatrixXd basis(ts.size(), 3);
   Eigen::VectorXd lon(ts.size());
   for (std::size_t k = 0; k < ts.size(); ++k) {
@@ -151,7 +152,8 @@ TEST(GeoSimulatorTest, LongitudeAccelerationAt118East) {
   }
   const Eigen::Vector3d c = basis.colPivHouseholderQr().solve(lon);
   const double accel = 2.0 * c(2) / (kDay * kDay);
-  std::printf("[ geo ] 60-day longitude fit: gamma %.4e rad/day^2, acceleration %.4e rad/s^2\n", c(2), accel);
+  std::printf("[ geo ] 60-day longitude fit: gamma %.4e rad/day^2, acceleration %.4e rad/s^2\n",
+              c(2), accel);
   EXPECT_NEAR(accel, -4.7e-15, 0.47e-15);
 }
 
@@ -161,8 +163,8 @@ TEST(GeoSimulatorTest, InclinationDriftOver2034) {
   const GeoSimulator sim{GeoModelOptions{}};
   const std::vector<double> ts = Grid(365.25 * kDay, kDay);
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<Vector6d> xs =
-      sim.Propagate(sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0), 0.0, Eigen::MatrixXd::Zero(3, 1), {}, ts);
+  const std::vector<Vector6d> xs = sim.Propagate(sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0),
+                                                 0.0, Eigen::MatrixXd::Zero(3, 1), {}, ts);
   const double sim_s = Seconds(start);
   const Eigen::VectorXd x_end = sim.RelativeFromEci(xs.back(), ts.back());
   const double incl_deg = 2.0 * std::atan(std::hypot(x_end(3), x_end(4))) / kDeg;
@@ -174,8 +176,11 @@ TEST(GeoSimulatorTest, InclinationDriftOver2034) {
     iv.row(static_cast<Eigen::Index>(k)) << 2 * x(3) / kDeg, 2 * x(4) / kDeg;
   }
   const Eigen::MatrixXd c = basis.colPivHouseholderQr().solve(iv);
-  std::printf("[ geo ] one-year free drift: i = %.4f deg after 365.25 d; i-vector slope (%.4f, %.4f) deg/yr; "
-              "simulation %.3f s\n", incl_deg, c(1, 0), c(1, 1), sim_s);
+  std::printf(
+      "[ geo ] one-year free drift: i = %.4f deg after 365.25 d; i-vector slope (%.4f, %.4f) "
+      "deg/yr; "
+      "simulation %.3f s\n",
+      incl_deg, c(1, 0), c(1, 1), sim_s);
   EXPECT_NEAR(incl_deg, 0.76, 0.076);
   EXPECT_NEAR(std::hypot(c(1, 0), c(1, 1)), 0.76, 0.076);
   EXPECT_GT(c(1, 1), 0.0);  // toward +iy (node near 90 deg), as in the thesis Fig. 5.8a
@@ -198,22 +203,27 @@ TEST(GeoSimulatorTest, TangentialBurnChangesTheSemiMajorAxisByTheGaussValue) {
   const std::vector<InputPulse> burn = {{0, t_on, t_off}};
   const Vector6d with = sim.Propagate(x0, 0.0, u, burn, {t_end})[0];
   const Vector6d without = sim.Propagate(x0, 0.0, u, {}, {t_end})[0];
-  const double da_nonlinear = sim.RelativeFromEci(with, t_end)(0) - sim.RelativeFromEci(without, t_end)(0);
-  const Eigen::VectorXd l_with = PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, burn, {t_end})[0];
-  const Eigen::VectorXd l_without = PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, {}, {t_end})[0];
+  const double da_nonlinear =
+      sim.RelativeFromEci(with, t_end)(0) - sim.RelativeFromEci(without, t_end)(0);
+  const Eigen::VectorXd l_with =
+      PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, burn, {t_end})[0];
+  const Eigen::VectorXd l_without =
+      PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, {}, {t_end})[0];
   const double da_linear = l_with(0) - l_without(0);
-  std::printf("[ geo ] 1-h tangential burn: da nonlinear %.2f m, linear %.2f m, Gauss %.2f m\n", da_nonlinear,
-              da_linear, expected);
+  std::printf("[ geo ] 1-h tangential burn: da nonlinear %.2f m, linear %.2f m, Gauss %.2f m\n",
+              da_nonlinear, da_linear, expected);
   EXPECT_NEAR(da_nonlinear, expected, 0.005 * expected);
   EXPECT_NEAR(da_linear, expected, 0.005 * expected);
   // The drift rate changes accordingly: d(dl)/dt = -3 n da / (2 a).
   const double t_later = t_end + kDay;
   const std::vector<Vector6d> w2 = sim.Propagate(x0, 0.0, u, burn, {t_end, t_later});
   const std::vector<Vector6d> n2 = sim.Propagate(x0, 0.0, u, {}, {t_end, t_later});
-  const double dl_rate = ((sim.RelativeFromEci(w2[1], t_later)(5) - sim.RelativeFromEci(n2[1], t_later)(5)) -
-                          (sim.RelativeFromEci(w2[0], t_end)(5) - sim.RelativeFromEci(n2[0], t_end)(5))) /
-                         kDay;
-  EXPECT_NEAR(dl_rate, -1.5 * n * expected / geo::kStationRadius, 0.01 * 1.5 * n * expected / geo::kStationRadius);
+  const double dl_rate =
+      ((sim.RelativeFromEci(w2[1], t_later)(5) - sim.RelativeFromEci(n2[1], t_later)(5)) -
+       (sim.RelativeFromEci(w2[0], t_end)(5) - sim.RelativeFromEci(n2[0], t_end)(5))) /
+      kDay;
+  EXPECT_NEAR(dl_rate, -1.5 * n * expected / geo::kStationRadius,
+              0.01 * 1.5 * n * expected / geo::kStationRadius);
 }
 
 TEST(GeoSimulatorTest, AnzelScheduleLinearVersusNonlinear) {
@@ -223,22 +233,27 @@ TEST(GeoSimulatorTest, AnzelScheduleLinearVersusNonlinear) {
   const GeoSimulator sim(opt);
   const GeoLinearModel lin(opt);
   const Eigen::MatrixXd u = ThrusterSet::Anzel4(0.265, 4850, 2005).AccelerationMatrix();
-  const std::vector<InputPulse> pulses = {{0, 3600, 5400}, {1, 30000, 31200}, {2, 50000, 52400}, {3, 70000, 70900}};
+  const std::vector<InputPulse> pulses = {
+      {0, 3600, 5400}, {1, 30000, 31200}, {2, 50000, 52400}, {3, 70000, 70900}};
   const std::vector<double> ts = Grid(kDay, 600.0);
   const Vector6d x0 = sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0);
   const std::vector<Vector6d> on = sim.Propagate(x0, 0.0, u, pulses, ts);
   const std::vector<Vector6d> off = sim.Propagate(x0, 0.0, u, {}, ts);
-  const std::vector<Eigen::VectorXd> lon = PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, pulses, ts);
-  const std::vector<Eigen::VectorXd> loff = PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, {}, ts);
+  const std::vector<Eigen::VectorXd> lon =
+      PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, pulses, ts);
+  const std::vector<Eigen::VectorXd> loff =
+      PropagateLinear(lin, u, Eigen::VectorXd::Zero(6), 0.0, {}, ts);
   double effect = 0.0, err = 0.0;
   for (std::size_t k = 0; k < ts.size(); ++k) {
     const Eigen::MatrixXd c = lin.EvaluateOutput(ts[k]).c;
-    const Eigen::Vector3d dy = sim.RelativeOutputs(on[k], ts[k]) - sim.RelativeOutputs(off[k], ts[k]);
+    const Eigen::Vector3d dy =
+        sim.RelativeOutputs(on[k], ts[k]) - sim.RelativeOutputs(off[k], ts[k]);
     const Eigen::Vector3d dyl = c * (lon[k] - loff[k]);
     effect = std::max(effect, dy.tail<2>().cwiseAbs().maxCoeff());
     err = std::max(err, (dy - dyl).tail<2>().cwiseAbs().maxCoeff());
   }
-  std::printf("[ geo ] Anzel day: thrust effect on lat/lon %.3e rad, linear error %.3e rad\n", effect, err);
+  std::printf("[ geo ] Anzel day: thrust effect on lat/lon %.3e rad, linear error %.3e rad\n",
+              effect, err);
   EXPECT_GT(effect, 1e-4);
   EXPECT_LT(err, 1e-3 * effect);
 }
@@ -259,22 +274,24 @@ TEST(GeoSimulatorTest, EclipseCrossingsAreIntegratedAccurately) {
   const auto rhs = [&](const Vector6d& x, double t) {
     const Eigen::Vector3d r = x.head<3>();
     Vector6d dx;
-    dx << x.tail<3>(), -geo::kEarthMu * r / std::pow(r.norm(), 3) + sim.PerturbingAcceleration(r, t);
+    dx << x.tail<3>(),
+        -geo::kEarthMu * r / std::pow(r.norm(), 3) + sim.PerturbingAcceleration(r, t);
     return dx;
   };
   Vector6d x = x0;
   const double h = 1.0;
   int dark_steps = 0;
   for (double t = t0; t < t1 - 1e-9; t += h) {
-    const Vector6d k1 = rhs(x, t), k2 = rhs(x + 0.5 * h * k1, t + 0.5 * h), k3 = rhs(x + 0.5 * h * k2, t + 0.5 * h),
-                   k4 = rhs(x + h * k3, t + h);
+    const Vector6d k1 = rhs(x, t), k2 = rhs(x + 0.5 * h * k1, t + 0.5 * h),
+                   k3 = rhs(x + 0.5 * h * k2, t + 0.5 * h), k4 = rhs(x + h * k3, t + h);
     x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     if (sim.PerturbingAcceleration(x.head<3>(), t + h).norm() == 0.0) ++dark_steps;
   }
   EXPECT_GT(dark_steps, 60 * 60);  // ~70 min of eclipse at the equinox
   EXPECT_LT(dark_steps, 75 * 60);
   const Vector6d got = sim.Propagate(x0, t0, Eigen::MatrixXd::Zero(3, 1), {}, {t1})[0];
-  std::printf("[ geo ] eclipse of %d s: |adaptive - RK4(1 s)| = %.3e m\n", dark_steps, (got - x).head<3>().norm());
+  std::printf("[ geo ] eclipse of %d s: |adaptive - RK4(1 s)| = %.3e m\n", dark_steps,
+              (got - x).head<3>().norm());
   EXPECT_LT((got - x).head<3>().norm(), 2e-4);  // 1.7e-3 m without shadow events
 }
 
@@ -285,8 +302,10 @@ TEST(GeoSimulatorTest, PulsesRestartExactlyAndAdd) {
   const Vector6d x0 = sim.EciFromRelative(Eigen::VectorXd::Zero(6), 0.0);
   const std::vector<double> ts = {0.0, 4000.0, 10000.0, 10000.0};
   const std::vector<Vector6d> one = sim.Propagate(x0, 0.0, u, {{0, 1000.0, 7000.0}}, ts);
-  const std::vector<Vector6d> split = sim.Propagate(x0, 0.0, u, {{0, 1000.0, 2500.0}, {0, 2500.0, 7000.0}}, ts);
-  const std::vector<Vector6d> halves = sim.Propagate(x0, 0.0, u, {{1, 1000.0, 7000.0}, {1, 1000.0, 7000.0}}, ts);
+  const std::vector<Vector6d> split =
+      sim.Propagate(x0, 0.0, u, {{0, 1000.0, 2500.0}, {0, 2500.0, 7000.0}}, ts);
+  const std::vector<Vector6d> halves =
+      sim.Propagate(x0, 0.0, u, {{1, 1000.0, 7000.0}, {1, 1000.0, 7000.0}}, ts);
   ASSERT_EQ(one.size(), 4u);
   EXPECT_EQ(one[0], x0);
   EXPECT_EQ(one[2], one[3]);
@@ -296,7 +315,8 @@ TEST(GeoSimulatorTest, PulsesRestartExactlyAndAdd) {
   }
   // A pulse entirely before t0 does nothing; one straddling t0 is clipped to it.
   const Vector6d x1 = one[1];
-  const std::vector<Vector6d> late = sim.Propagate(x1, 4000.0, u, {{0, 0.0, 3000.0}, {0, 1000.0, 7000.0}}, {10000.0});
+  const std::vector<Vector6d> late =
+      sim.Propagate(x1, 4000.0, u, {{0, 0.0, 3000.0}, {0, 1000.0, 7000.0}}, {10000.0});
   EXPECT_LT((late[0] - one[2]).head<3>().norm(), 1e-3);
 }
 
@@ -311,13 +331,26 @@ TEST(GeoSimulatorTest, BadInputThrows) {
   bad(4) = kNan;
   throws([&] { sim.Propagate(bad, 0.0, u, {}, {1.0}); }, "eci0 must be finite");
   throws([&] { sim.Propagate(x0, kNan, u, {}, {1.0}); }, "t must be finite");
-  throws([&] { sim.Propagate(x0, 0.0, Eigen::MatrixXd::Zero(2, 2), {}, {1.0}); }, "accel_rtn must have 3 rows");
+  throws([&] { sim.Propagate(x0, 0.0, Eigen::MatrixXd::Zero(2, 2), {}, {1.0}); },
+         "accel_rtn must have 3 rows");
   Eigen::MatrixXd u_nan = u;
   u_nan(1, 1) = kNan;
   throws([&] { sim.Propagate(x0, 0.0, u_nan, {}, {1.0}); }, "accel_rtn must be finite");
-  throws([&] { sim.Propagate(x0, 0.0, u, {{2, 0.0, 1.0}}, {1.0}); }, "pulse 0: column 2 outside [0, 2)");
-  throws([&] { sim.Propagate(x0, 0.0, u, {{0, 0.0, 1.0}, {1, 5.0, 4.0}}, {1.0}); }, "pulse 1: end_s 4 < start_s 5");
-  throws([&] { sim.Propagate(x0, 0.0, u, {{0, kNan, 1.0}}, {1.0}); }, "start_s and end_s must be finite");
+  throws(
+      [&] {
+        sim.Propagate(x0, 0.0, u, {{2, 0.0, 1.0}}, {1.0});
+      },
+      "pulse 0: column 2 outside [0, 2)");
+  throws(
+      [&] {
+        sim.Propagate(x0, 0.0, u, {{0, 0.0, 1.0}, {1, 5.0, 4.0}}, {1.0});
+      },
+      "pulse 1: end_s 4 < start_s 5");
+  throws(
+      [&] {
+        sim.Propagate(x0, 0.0, u, {{0, kNan, 1.0}}, {1.0});
+      },
+      "start_s and end_s must be finite");
   throws([&] { sim.Propagate(x0, 0.0, u, {}, {1.0, kNan}); }, "sample_times[1] must be finite");
   throws([&] { sim.Propagate(x0, 0.0, u, {}, {2.0, 1.0}); }, "non-decreasing");
   throws([&] { sim.Propagate(x0, 10.0, u, {}, {5.0}); }, "before t0");

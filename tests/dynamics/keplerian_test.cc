@@ -59,7 +59,8 @@ TEST(KeplerianTest, MeanAnomalyMatchesTheHandComputation) {
 TEST(KeplerianTest, RoundTripsToCartesianAndBack) {
   // A near-GEO orbit (the use case) and an eccentric inclined one, both anomaly kinds.
   const KeplerianElements cases[] = {
-      {42165.765e3, 2.1e-4, 0.031 * kDeg, 83.2 * kDeg, 211.7 * kDeg, 97.4 * kDeg, AnomalyKind::kTrue},
+      {42165.765e3, 2.1e-4, 0.031 * kDeg, 83.2 * kDeg, 211.7 * kDeg, 97.4 * kDeg,
+       AnomalyKind::kTrue},
       {26560e3, 0.72, 63.4 * kDeg, 300.1 * kDeg, 270.0 * kDeg, 355.0 * kDeg, AnomalyKind::kMean},
   };
   for (const KeplerianElements& k : cases) {
@@ -85,7 +86,8 @@ TEST(KeplerianTest, SingularAnglesFollowTheConvention) {
   k.raan_rad = 0.4;
   k.arg_perigee_rad = 0.5;
   k.anomaly_rad = 0.6;
-  const KeplerianElements b = KeplerianFromCartesian(CartesianFromKeplerian(k, kMu), kMu, AnomalyKind::kTrue);
+  const KeplerianElements b =
+      KeplerianFromCartesian(CartesianFromKeplerian(k, kMu), kMu, AnomalyKind::kTrue);
   EXPECT_EQ(b.raan_rad, 0.0);
   EXPECT_EQ(b.arg_perigee_rad, 0.0);
   EXPECT_NEAR(b.anomaly_rad, 1.5, 1e-12);

@@ -48,7 +48,8 @@ TEST(EpochTest, AcceptedSpellings) {
 }
 
 TEST(EpochTest, IsoRoundTripAndArithmetic) {
-  for (const char* text : {"2034-01-01T00:00:00Z", "2024-02-29T23:59:59.5Z", "1999-12-31T12:34:56.123456Z"}) {
+  for (const char* text :
+       {"2034-01-01T00:00:00Z", "2024-02-29T23:59:59.5Z", "1999-12-31T12:34:56.123456Z"}) {
     EXPECT_EQ(Epoch::Parse(text).ToIso8601(), text);
   }
   const Epoch e = Epoch::Parse("2034-01-01T00:00:00Z");
@@ -76,13 +77,17 @@ TEST(EpochTest, OtherTimeScalesConvertToUtc) {
   // 2034: TAI - UTC = 37 s, TT - UTC = 69.184 s, GPS - UTC = 18 s.
   const Epoch utc = Epoch::Parse("2034-01-01T00:00:00Z");
   EXPECT_EQ(UtcFromScale(Epoch::Parse("2034-01-01T00:00:37Z"), TimeScale::kTai), utc);
-  EXPECT_NEAR(UtcFromScale(Epoch::Parse("2034-01-01T00:01:09.184Z"), TimeScale::kTt).SecondsSince(utc), 0.0, 1e-9);
+  EXPECT_NEAR(
+      UtcFromScale(Epoch::Parse("2034-01-01T00:01:09.184Z"), TimeScale::kTt).SecondsSince(utc), 0.0,
+      1e-9);
   EXPECT_EQ(UtcFromScale(Epoch::Parse("2034-01-01T00:00:18Z"), TimeScale::kGps), utc);
   EXPECT_EQ(UtcFromScale(utc, TimeScale::kUtc), utc);
   // Just after the 2016-12-31 leap second: TAI - UTC = 37 s on the UTC side.
-  EXPECT_EQ(UtcFromScale(Epoch::Parse("2017-01-01T00:00:37Z"), TimeScale::kTai), Epoch::Parse("2017-01-01T00:00:00Z"));
+  EXPECT_EQ(UtcFromScale(Epoch::Parse("2017-01-01T00:00:37Z"), TimeScale::kTai),
+            Epoch::Parse("2017-01-01T00:00:00Z"));
   // Just before it: 36 s.
-  EXPECT_EQ(UtcFromScale(Epoch::Parse("2016-12-31T12:00:36Z"), TimeScale::kTai), Epoch::Parse("2016-12-31T12:00:00Z"));
+  EXPECT_EQ(UtcFromScale(Epoch::Parse("2016-12-31T12:00:36Z"), TimeScale::kTai),
+            Epoch::Parse("2016-12-31T12:00:00Z"));
   EXPECT_STREQ(ToString(TimeScale::kTt), "TT");
 }
 
@@ -108,9 +113,10 @@ TEST(GmstTest, PublishedValues) {
 }
 
 TEST(EpochTest, BadTextThrowsNamingIt) {
-  for (const char* bad : {"", "2034", "2034-1-01", "2034-13-01", "2034-02-29", "2034-01-32", "2034-01-01T24:00:00Z",
-                          "2034-01-01T12:60:00Z", "2034-01-01T12:00:60Z", "2034-01-01T12:00:00+01:00",
-                          "2034-01-01T12:00:00.Z", "2034/01/01", "1969-12-31", "2200-01-01", "tomorrow"}) {
+  for (const char* bad :
+       {"", "2034", "2034-1-01", "2034-13-01", "2034-02-29", "2034-01-32", "2034-01-01T24:00:00Z",
+        "2034-01-01T12:60:00Z", "2034-01-01T12:00:60Z", "2034-01-01T12:00:00+01:00",
+        "2034-01-01T12:00:00.Z", "2034/01/01", "1969-12-31", "2200-01-01", "tomorrow"}) {
     EXPECT_THAT([&] { Epoch::Parse(bad); },
                 ThrowsMessage<std::invalid_argument>(HasSubstr(std::string("'") + bad + "'")))
         << bad;

@@ -28,12 +28,12 @@ namespace thrustsched::milp {
 namespace {
 
 using ::testing::AnyOf;
-using ::testing::HasSubstr;
-using ::testing::Not;
-using ::testing::ThrowsMessage;
 using testing::Catalog;
 using testing::CatalogProblem;
+using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::RandomKnapsack;
+using ::testing::ThrowsMessage;
 
 constexpr double kTol = 1e-6;
 
@@ -174,9 +174,7 @@ TEST_P(CatalogTest, EveryLpAlgorithmAgrees) {
 INSTANTIATE_TEST_SUITE_P(Catalog, CatalogTest, ::testing::ValuesIn(CatalogNames()),
                          [](const auto& info) { return info.param; });
 
-TEST(CbcSolverTest, CatalogueHasTheRequiredCases) {
-  EXPECT_GE(Catalog().size(), 12u);
-}
+TEST(CbcSolverTest, CatalogueHasTheRequiredCases) { EXPECT_GE(Catalog().size(), 12u); }
 
 // Duals by hand (see problem_catalog.h) and by finite differences.
 TEST(LpRelaxationTest, RowDualsAreDerivativesOfTheObjective) {
@@ -217,7 +215,8 @@ TEST(CbcSolverTest, TimeLimitIsWallClockAndReportsAGap) {
   o.absolute_gap = 0.0;
   const auto start = std::chrono::steady_clock::now();
   const SolveResult r = MakeCbcSolver()->Solve(HardKnapsack(), o);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_THAT(r.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound)) << r.detail;
   EXPECT_LT(wall, 0.5 + 2.0);  // generous: the test machine is shared
   EXPECT_GE(wall, 0.45);
@@ -242,7 +241,8 @@ TEST(CbcSolverTest, InterruptFlagStopsTheSearch) {
   });
   const auto start = std::chrono::steady_clock::now();
   const SolveResult r = MakeCbcSolver()->Solve(HardKnapsack(), o);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   setter.join();
   EXPECT_THAT(r.status, AnyOf(SolveStatus::kFeasible, SolveStatus::kNoSolutionFound)) << r.detail;
   EXPECT_THAT(r.detail, HasSubstr("interrupted"));
@@ -642,19 +642,21 @@ TEST(CbcSolverTest, InvalidInputThrows) {
   bad.col_upper[0] = 1;
   EXPECT_THAT([&] { solver->Solve(bad); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("Solver::Solve: invalid problem")));
-  EXPECT_THAT([&] { solver->SolveLpRelaxation(bad); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("SolveLpRelaxation: invalid problem")));
+  EXPECT_THAT(
+      [&] { solver->SolveLpRelaxation(bad); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("SolveLpRelaxation: invalid problem")));
   const LpData good = Find("lp_min_duals").build();
   SolveOptions o;
   o.relative_gap = -1;
-  EXPECT_THAT([&] { solver->Solve(good, o); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("invalid options: SolveOptions: relative_gap")));
+  EXPECT_THAT([&] { solver->Solve(good, o); }, ThrowsMessage<std::invalid_argument>(HasSubstr(
+                                                   "invalid options: SolveOptions: relative_gap")));
   EXPECT_THAT([&] { solver->SolveLpRelaxation(good, o); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("relative_gap")));
   o = {};
   o.initial_solution = Eigen::VectorXd::Zero(3);
-  EXPECT_THAT([&] { solver->Solve(good, o); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("initial_solution has size 3, expected 2")));
+  EXPECT_THAT(
+      [&] { solver->Solve(good, o); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("initial_solution has size 3, expected 2")));
 }
 
 TEST(CbcSolverTest, EmptyModelWithRowsOnly) {

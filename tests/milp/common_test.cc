@@ -25,7 +25,8 @@ std::string Stream(double v, int digits) {
 
 TEST(CommonFormat, FormatGIsTheOstreamDefaultFormat) {
   const double inf = std::numeric_limits<double>::infinity();
-  for (double v : {0.0, -0.0, 1.0, -2.5, 0.1, 1.0 / 3.0, 123456789.0, 1e-7, 6.02214076e23, kPi, inf, -inf}) {
+  for (double v :
+       {0.0, -0.0, 1.0, -2.5, 0.1, 1.0 / 3.0, 123456789.0, 1e-7, 6.02214076e23, kPi, inf, -inf}) {
     for (int digits : {4, 6, 10, 12, 15, 17}) {
       EXPECT_EQ(FormatG(v, digits), Stream(v, digits)) << v << " with " << digits << " digits";
     }

@@ -38,7 +38,8 @@ std::string Run(const std::string& command) {
   if (pipe == nullptr) return "popen failed";
   std::array<char, 4096> buffer;
   size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    output.append(buffer.data(), n);
   ::pclose(pipe);
   return output;
 }
@@ -74,7 +75,8 @@ ExternalResult RunCbc(const std::string& model_path, const std::string& dir) {
   } else if (std::regex_search(text, std::regex("^Unbounded"))) {
     r.status = SolveStatus::kUnbounded;
   } else if (text.empty() &&
-             std::regex_search(r.raw, std::regex("Problem is infeasible|Problem proven infeasible|infeasible"))) {
+             std::regex_search(
+                 r.raw, std::regex("Problem is infeasible|Problem proven infeasible|infeasible"))) {
     r.status = SolveStatus::kInfeasible;
   } else if (text.empty() && std::regex_search(r.raw, std::regex("[Uu]nbounded"))) {
     r.status = SolveStatus::kUnbounded;
@@ -99,7 +101,8 @@ ExternalResult RunGlpsol(const std::string& flag, const std::string& model_path,
     r.objective = std::strtod(m[1].str().c_str(), nullptr);
   } else if (std::regex_search(r.raw, std::regex("UNBOUNDED|unbounded"))) {
     r.status = SolveStatus::kUnbounded;
-  } else if (std::regex_search(r.raw, std::regex("NO PRIMAL FEASIBLE|NO INTEGER FEASIBLE|INTEGER EMPTY|INFEASIBLE \\(FINAL\\)|EMPTY"))) {
+  } else if (std::regex_search(r.raw, std::regex("NO PRIMAL FEASIBLE|NO INTEGER FEASIBLE|INTEGER "
+                                                 "EMPTY|INFEASIBLE \\(FINAL\\)|EMPTY"))) {
     r.status = SolveStatus::kInfeasible;
   }
   return r;

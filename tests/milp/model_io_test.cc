@@ -14,8 +14,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <streambuf>
 #include <stdexcept>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -29,11 +29,11 @@
 namespace thrustsched::milp {
 namespace {
 
+using testing::Catalog;
+using testing::CatalogProblem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::ThrowsMessage;
-using testing::Catalog;
-using testing::CatalogProblem;
 
 constexpr double kTol = 1e-6;
 
@@ -133,14 +133,15 @@ LpData AwkwardModel(const std::vector<double>& awkward) {
   Model m("exact");
   std::vector<Variable> v;
   for (size_t k = 0; k < awkward.size(); ++k) {
-    v.push_back(m.AddContinuous(-std::abs(awkward[k]), std::abs(awkward[k]) * 2,
-                                "v" + std::to_string(k)));
+    v.push_back(
+        m.AddContinuous(-std::abs(awkward[k]), std::abs(awkward[k]) * 2, "v" + std::to_string(k)));
   }
   Variable k = m.AddInteger(-7, 9, "k");
   LinearExpr objective;
   for (size_t i = 0; i < awkward.size(); ++i) {
     LinearExpr row;
-    for (size_t j = 0; j < awkward.size(); ++j) row.AddTerm(v[j], awkward[(i + j) % awkward.size()]);
+    for (size_t j = 0; j < awkward.size(); ++j)
+      row.AddTerm(v[j], awkward[(i + j) % awkward.size()]);
     row.AddTerm(k, awkward[i]);
     const double lo = awkward[i];
     const double up = awkward[i] + std::abs(awkward[(i + 1) % awkward.size()]) * 3;  // ranged
@@ -251,8 +252,8 @@ LpData ParseWithStrtod(const std::string& text, const LpData& shape) {
 
 TEST(MpsWriterTest, FreeMpsRoundTripsDoublesExactly) {
   const double pi = 3.14159265358979323846;
-  const std::vector<double> awkward = {0.1, 1.0 / 3.0, 1e-300, 123456789.123456789, pi * 1e-7,
-                                       -2.0 / 3.0};
+  const std::vector<double> awkward = {0.1,       1.0 / 3.0, 1e-300, 123456789.123456789,
+                                       pi * 1e-7, -2.0 / 3.0};
   const LpData lp = AwkwardModel(awkward);
   const std::string text = ToMpsString(lp);
   EXPECT_THAT(text, HasSubstr("0.10000000000000001"));  // %.17g
@@ -335,8 +336,8 @@ TEST(MpsPitfallsTest, NamesWithSpacesAreSanitisedAndKeptUnique) {
   m.AddConstraint(LinearExpr(m.variable(1)) <= 1, "OBJ");
   const LpData lp = m.ToLpData();
   const std::vector<std::string> cols = ExportedColumnNames(lp, false);
-  const std::vector<std::string> expected = {"my_var", "a_b", "a_b_1", "_3x", "_e1",
-                                             "_free", "x(2)", "OBJ_CONST_1", "tab_here"};
+  const std::vector<std::string> expected = {"my_var", "a_b",  "a_b_1",       "_3x",     "_e1",
+                                             "_free",  "x(2)", "OBJ_CONST_1", "tab_here"};
   EXPECT_EQ(cols, expected);
   EXPECT_EQ(ExportedRowNames(lp, false), (std::vector<std::string>{"row_1", "OBJ_1"}));
   EXPECT_EQ(ExportedColumnNames(lp, true)[8], "C000009");
@@ -361,8 +362,7 @@ TEST(MpsPitfallsTest, NamesWithSpacesAreSanitisedAndKeptUnique) {
 TEST(MpsPitfallsTest, RangesOnlyForRangedRows) {
   const std::string text = ToMpsString(Find("equality_and_ranged").build());
   EXPECT_EQ(Squashed(Section(text, "RANGES")), (std::vector<std::string>{"RNG rng 1"}));
-  EXPECT_THAT(Squashed(Section(text, "ROWS")),
-              ::testing::ElementsAre("N OBJ", "E eq", "G rng"));
+  EXPECT_THAT(Squashed(Section(text, "ROWS")), ::testing::ElementsAre("N OBJ", "E eq", "G rng"));
   EXPECT_THAT(ToMpsString(Find("lp_min_duals").build()), Not(HasSubstr("RANGES")));
 }
 
@@ -501,11 +501,13 @@ TEST(ModelIoErrorsTest, IoFailuresNameThePath) {
               ThrowsMessage<std::runtime_error>(HasSubstr("/nonexistent_dir_xyz/a.mps")));
   EXPECT_THAT([&] { WriteLpFile("/nonexistent_dir_xyz/a.lp", lp); },
               ThrowsMessage<std::runtime_error>(HasSubstr("/nonexistent_dir_xyz/a.lp")));
-  EXPECT_THAT([&] { ReadMpsFile("/nonexistent_dir_xyz/a.mps"); },
-              ThrowsMessage<std::runtime_error>(HasSubstr("cannot open '/nonexistent_dir_xyz/a.mps'")));
+  EXPECT_THAT(
+      [&] { ReadMpsFile("/nonexistent_dir_xyz/a.mps"); },
+      ThrowsMessage<std::runtime_error>(HasSubstr("cannot open '/nonexistent_dir_xyz/a.mps'")));
   const std::string path = TempPath("broken.mps");
   std::ofstream(path) << "NAME broken\nROWS\n N OBJ\n L r1\nCOLUMNS\n x r2 1\nRHS\nENDATA\n";
-  EXPECT_THAT([&] { ReadMpsFile(path); }, ThrowsMessage<std::runtime_error>(HasSubstr("read error")));
+  EXPECT_THAT([&] { ReadMpsFile(path); },
+              ThrowsMessage<std::runtime_error>(HasSubstr("read error")));
   std::remove(path.c_str());
 }
 
@@ -513,7 +515,8 @@ TEST(ModelIoErrorsTest, InvalidProblemIsRejected) {
   LpData lp = Find("lp_min_duals").build();
   lp.col_lower[0] = 3;
   lp.col_upper[0] = 1;
-  EXPECT_THAT([&] { ToMpsString(lp); }, ThrowsMessage<std::invalid_argument>(HasSubstr("WriteMps")));
+  EXPECT_THAT([&] { ToMpsString(lp); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("WriteMps")));
   EXPECT_THAT([&] { ToLpString(lp); }, ThrowsMessage<std::invalid_argument>(HasSubstr("WriteLp")));
   EXPECT_THAT([&] { WriteMpsFile(TempPath("bad.mps"), lp); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("WriteMpsFile")));
@@ -531,8 +534,8 @@ TEST(ModelIoErrorsTest, IntegerColumnWithoutIntegerValueIsRejectedByName) {
   m.Minimize(LinearExpr(x));
   const LpData lp = m.ToLpData();
   EXPECT_THAT([&] { ToMpsString(lp); },
-              ThrowsMessage<std::invalid_argument>(
-                  HasSubstr("integer column 'x_frac' has no integer value within its bounds [0.2")));
+              ThrowsMessage<std::invalid_argument>(HasSubstr(
+                  "integer column 'x_frac' has no integer value within its bounds [0.2")));
   EXPECT_THAT([&] { ToLpString(lp); }, ThrowsMessage<std::invalid_argument>(HasSubstr("x_frac")));
   LpData ok = lp;
   ok.col_upper[0] = 1.0;

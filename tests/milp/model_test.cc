@@ -135,8 +135,8 @@ TEST(ModelTest, BuildsColumnMajorStandardForm) {
   EXPECT_EQ(lp.col_cost, Eigen::Vector3d(1, -1, 0));
   EXPECT_EQ(lp.sense, ObjectiveSense::kMaximize);
   EXPECT_DOUBLE_EQ(lp.objective_offset, 0.5);
-  EXPECT_EQ(lp.col_type, (std::vector<VarType>{VarType::kContinuous, VarType::kInteger,
-                                               VarType::kBinary}));
+  EXPECT_EQ(lp.col_type,
+            (std::vector<VarType>{VarType::kContinuous, VarType::kInteger, VarType::kBinary}));
   EXPECT_EQ(lp.col_names, (std::vector<std::string>{"x", "y", "z"}));
   EXPECT_EQ(lp.row_names, (std::vector<std::string>{"a", "b", "c"}));
   EXPECT_EQ(lp.num_integer_cols(), 2);
@@ -147,7 +147,7 @@ TEST(ModelTest, BuildsColumnMajorStandardForm) {
 
 TEST(ModelTest, GeneratedAndBlockNames) {
   Model m;
-  Variable a = m.AddContinuous(0, 1);        // c0
+  Variable a = m.AddContinuous(0, 1);  // c0
   VarBlock u = m.AddVariables(2, 0, 1, VarType::kBinary, "u");
   Variable b = m.AddContinuous(0, 1, "c4");  // explicit name equal to a generated one
   Variable d = m.AddContinuous(0, 1);        // index 4 -> "c4" taken -> "c4_1"
@@ -156,8 +156,8 @@ TEST(ModelTest, GeneratedAndBlockNames) {
   EXPECT_EQ(m.variable_name(b), "c4");
   EXPECT_EQ(m.variable_name(d), "c4_1");
   Constraint r0 = m.AddConstraint(LinearExpr(a) <= 1);
-  ConstraintBlock rows = m.AddRows({{0, 0, 1.0}, {1, 1, 1.0}}, Eigen::Vector2d(0, 0),
-                                   Eigen::Vector2d(1, 1), "dyn");
+  ConstraintBlock rows =
+      m.AddRows({{0, 0, 1.0}, {1, 1, 1.0}}, Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1), "dyn");
   EXPECT_EQ(m.constraint_name(r0), "r0");
   EXPECT_EQ(m.constraint_name(Constraint{rows.start + 1}), "dyn[1]");
   const LpData lp = m.ToLpData();
@@ -231,14 +231,16 @@ TEST(ModelTest, SetBoundsTypeAndObjectiveTerms) {
 
 TEST(ModelErrorsTest, AddVariableRejectsBadBounds) {
   Model m("M");
-  EXPECT_THAT([&] { m.AddContinuous(kNaN, 1, "x"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("variable 'x': bounds must not be NaN")));
+  EXPECT_THAT(
+      [&] { m.AddContinuous(kNaN, 1, "x"); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("variable 'x': bounds must not be NaN")));
   EXPECT_THAT([&] { m.AddContinuous(2, 1, "x"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("lower bound 2 > upper bound 1")));
   EXPECT_THAT([&] { m.AddContinuous(kInfinity, kInfinity, "x"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("leave no finite value")));
-  EXPECT_THAT([&] { m.AddVariable(0, 2, VarType::kBinary, "b"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("binary bounds [0, 2] outside [0, 1]")));
+  EXPECT_THAT(
+      [&] { m.AddVariable(0, 2, VarType::kBinary, "b"); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("binary bounds [0, 2] outside [0, 1]")));
   EXPECT_THAT([&] { m.AddInteger(1, 0); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("variable 'c0'")));
   EXPECT_EQ(m.num_variables(), 0);
@@ -273,7 +275,8 @@ TEST(ModelErrorsTest, ForeignAndInvalidVariables) {
   EXPECT_THAT([&] { m.AddConstraint(mine + theirs <= 1, "r"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("row 'r': expression mixes")));
   EXPECT_THAT([&] { m.AddConstraint(LinearExpr(theirs) <= 1, "r"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("row 'r': expression uses variables of model")));
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("row 'r': expression uses variables of model")));
   EXPECT_THAT([&] { m.AddConstraint(LinearExpr(Variable()) <= 1, "r"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("invalid variable handle")));
   EXPECT_THAT([&] { m.Minimize(LinearExpr(theirs)); },
@@ -299,8 +302,8 @@ TEST(ModelErrorsTest, ForeignAndInvalidVariables) {
 TEST(ModelErrorsTest, SetBoundsAndSetType) {
   Model m("M");
   Variable x = m.AddContinuous(0, 3, "x");
-  EXPECT_THAT([&] { m.SetBounds(x, 2, 1); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("variable 'x': lower bound 2 > upper bound 1")));
+  EXPECT_THAT([&] { m.SetBounds(x, 2, 1); }, ThrowsMessage<std::invalid_argument>(HasSubstr(
+                                                 "variable 'x': lower bound 2 > upper bound 1")));
   EXPECT_THAT([&] { m.SetType(x, VarType::kBinary); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("binary bounds [0, 3]")));
   Variable b = m.AddBinary("b");
@@ -313,7 +316,8 @@ TEST(ModelErrorsTest, AddConstraintRejectsBadData) {
   Variable x = m.AddContinuous(0, 1, "x");
   const double inf = kInfinity;
   EXPECT_THAT([&] { m.AddConstraint(kNaN * x <= 1, "r"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("row 'r': coefficient of variable 'x' must be finite, got nan")));
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("row 'r': coefficient of variable 'x' must be finite, got nan")));
   EXPECT_THAT([&] { m.AddConstraint(inf * x <= 1, "r"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("must be finite, got inf")));
   EXPECT_THAT([&] { m.AddConstraint(LinearExpr(x), kNaN, 1, "r"); },
@@ -322,8 +326,9 @@ TEST(ModelErrorsTest, AddConstraintRejectsBadData) {
               ThrowsMessage<std::invalid_argument>(HasSubstr("lower bound 2 > upper bound 1")));
   EXPECT_THAT([&] { m.AddConstraint(LinearExpr(x), inf, inf, "r"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("can never hold")));
-  EXPECT_THAT([&] { m.AddConstraint(x + kNaN, 0, 1, "r"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("expression constant must be finite")));
+  EXPECT_THAT(
+      [&] { m.AddConstraint(x + kNaN, 0, 1, "r"); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("expression constant must be finite")));
   EXPECT_THAT([&] { m.AddConstraint(x + kNaN <= 1, "r"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("row 'r'")));
   m.AddConstraint(LinearExpr(x) <= 1, "r");
@@ -336,22 +341,40 @@ TEST(ModelErrorsTest, AddRowsRejectsBadDataAndAddsNothing) {
   Model m("M");
   VarBlock x = m.AddVariables(2, 0, 1, VarType::kContinuous, "x");
   const Eigen::Vector2d lo(0, 0), up(1, 1);
-  EXPECT_THAT([&] { m.AddRows({}, lo, Eigen::Vector3d(1, 1, 1)); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("lower has size 2 but upper has size 3")));
+  EXPECT_THAT(
+      [&] { m.AddRows({}, lo, Eigen::Vector3d(1, 1, 1)); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("lower has size 2 but upper has size 3")));
   EXPECT_THAT([&] { m.AddRows({}, lo, up, "", {"a"}); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("1 names for 2 rows")));
-  EXPECT_THAT([&] { m.AddRows({{2, 0, 1.0}}, lo, up); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("triplet row 2 outside [0, 2)")));
-  EXPECT_THAT([&] { m.AddRows({{0, 5, 1.0}}, lo, up, "d"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("row 'd[0]': column 5 outside")));
-  EXPECT_THAT([&] { m.AddRows({{1, 1, kNaN}}, lo, up, "d"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("row 'd[1]': coefficient of variable 'x[1]' must be finite")));
-  EXPECT_THAT([&] { m.AddRows({{0, 0, 1e308}, {0, 0, 1e308}}, lo, up, "d"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("overflows")));
-  EXPECT_THAT([&] { m.AddRows({}, Eigen::Vector2d(2, 0), up, "d"); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("row 'd[0]': lower bound 2 > upper bound 1")));
-  EXPECT_THAT([&] { m.AddRows({}, lo, up, "", {"a", "a"}); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("duplicate row name 'a'")));
+  EXPECT_THAT(
+      [&] {
+        m.AddRows({{2, 0, 1.0}}, lo, up);
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("triplet row 2 outside [0, 2)")));
+  EXPECT_THAT(
+      [&] {
+        m.AddRows({{0, 5, 1.0}}, lo, up, "d");
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("row 'd[0]': column 5 outside")));
+  EXPECT_THAT(
+      [&] {
+        m.AddRows({{1, 1, kNaN}}, lo, up, "d");
+      },
+      ThrowsMessage<std::invalid_argument>(
+          HasSubstr("row 'd[1]': coefficient of variable 'x[1]' must be finite")));
+  EXPECT_THAT(
+      [&] {
+        m.AddRows({{0, 0, 1e308}, {0, 0, 1e308}}, lo, up, "d");
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("overflows")));
+  EXPECT_THAT(
+      [&] { m.AddRows({}, Eigen::Vector2d(2, 0), up, "d"); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("row 'd[0]': lower bound 2 > upper bound 1")));
+  EXPECT_THAT(
+      [&] {
+        m.AddRows({}, lo, up, "", {"a", "a"});
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("duplicate row name 'a'")));
   m.AddRows({}, lo, up, "d");
   EXPECT_THAT([&] { m.AddRows({}, lo, up, "d"); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("block prefix 'd'")));
@@ -363,12 +386,17 @@ TEST(ModelErrorsTest, AddRowsRejectsBadDataAndAddsNothing) {
   a.insert(0, 0) = 1.0;
   Model other;
   Variable theirs = other.AddContinuous(0, 1);
-  EXPECT_THAT([&] { m.AddRows(a, std::vector<Variable>{x[0]}, lo, up); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("matrix has 2 columns but 1 variables")));
-  EXPECT_THAT([&] { m.AddRows(a, std::vector<Variable>{x[0], theirs}, lo, up); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("vars[1]")));
-  EXPECT_THAT([&] { m.AddRows(a, x.ToVector(), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1)); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("matrix has 2 rows but lower has size 3")));
+  EXPECT_THAT(
+      [&] { m.AddRows(a, std::vector<Variable>{x[0]}, lo, up); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("matrix has 2 columns but 1 variables")));
+  EXPECT_THAT(
+      [&] {
+        m.AddRows(a, std::vector<Variable>{x[0], theirs}, lo, up);
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("vars[1]")));
+  EXPECT_THAT(
+      [&] { m.AddRows(a, x.ToVector(), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1)); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("matrix has 2 rows but lower has size 3")));
   EXPECT_THAT([&] { m.AddRows(a, x.segment(0, 1), lo, up); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("block has 1 variables")));
   EXPECT_THAT([&] { m.AddRows(a, other.AddVariables(2, 0, 1, VarType::kBinary, "z"), lo, up); },
@@ -380,11 +408,13 @@ TEST(ModelErrorsTest, ObjectiveRejectsNonFinite) {
   Model m("M");
   Variable x = m.AddContinuous(0, 1, "x");
   EXPECT_THAT([&] { m.Minimize(kInfinity * x); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("coefficient of variable 'x' must be finite")));
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("coefficient of variable 'x' must be finite")));
   EXPECT_THAT([&] { m.Maximize(x + kNaN); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("constant must be finite")));
-  EXPECT_THAT([&] { m.AddObjectiveTerm(x, kNaN); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("objective coefficient of variable 'x'")));
+  EXPECT_THAT(
+      [&] { m.AddObjectiveTerm(x, kNaN); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("objective coefficient of variable 'x'")));
 }
 
 // ---- LpData
@@ -398,8 +428,8 @@ TEST(LpDataTest, MaxViolationAndObjective) {
   const LpData lp = m.ToLpData();
   EXPECT_DOUBLE_EQ(lp.MaxViolation(Eigen::Vector2d(1, 0.5)), 0.0);
   EXPECT_DOUBLE_EQ(lp.MaxViolation(Eigen::Vector2d(1.25, 0.5)), 0.25);  // integrality
-  EXPECT_DOUBLE_EQ(lp.MaxViolation(Eigen::Vector2d(2, 1.0)), 1.0);     // row: 3 > 2
-  EXPECT_DOUBLE_EQ(lp.MaxViolation(Eigen::Vector2d(1, -1.5)), 1.5);    // bound and row
+  EXPECT_DOUBLE_EQ(lp.MaxViolation(Eigen::Vector2d(2, 1.0)), 1.0);      // row: 3 > 2
+  EXPECT_DOUBLE_EQ(lp.MaxViolation(Eigen::Vector2d(1, -1.5)), 1.5);     // bound and row
   EXPECT_TRUE(std::isinf(lp.MaxViolation(Eigen::Vector2d(kNaN, 0))));
   EXPECT_DOUBLE_EQ(lp.Objective(Eigen::Vector2d(1, 0.5)), 2.5);
   EXPECT_THAT([&] { lp.Objective(Eigen::Vector3d(1, 2, 3)); },
@@ -495,9 +525,9 @@ TEST(SolveResultTest, TimeToGapUsesTheFinalBound) {
   r.status = SolveStatus::kFeasible;
   r.best_bound = 100.0;  // minimisation: bound below the incumbents
   r.incumbents = {{0.5, 120.0, 90.0}, {1.5, 105.0, 95.0}, {3.0, 100.5, 99.0}};
-  EXPECT_DOUBLE_EQ(r.TimeToGap(0.25), 0.5);   // 20/120 = 0.167
-  EXPECT_DOUBLE_EQ(r.TimeToGap(0.05), 1.5);   // 5/105 = 0.048
-  EXPECT_DOUBLE_EQ(r.TimeToGap(0.01), 3.0);   // 0.5/100.5 = 0.005
+  EXPECT_DOUBLE_EQ(r.TimeToGap(0.25), 0.5);  // 20/120 = 0.167
+  EXPECT_DOUBLE_EQ(r.TimeToGap(0.05), 1.5);  // 5/105 = 0.048
+  EXPECT_DOUBLE_EQ(r.TimeToGap(0.01), 3.0);  // 0.5/100.5 = 0.005
   EXPECT_TRUE(std::isnan(r.TimeToGap(0.001)));
   r.best_bound = kNaN;
   EXPECT_TRUE(std::isnan(r.TimeToGap(1.0)));

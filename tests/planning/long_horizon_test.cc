@@ -120,8 +120,8 @@ TEST(LongHorizonGeometry, OppositeThrustersAreThesisPairs) {
   EXPECT_EQ(OppositeThruster(ideal, ideal.IndexOf("+T")), ideal.IndexOf("-T"));
   EXPECT_EQ(OppositeThruster(ideal, ideal.IndexOf("-N")), ideal.IndexOf("+N"));
   EXPECT_THROW(OppositeThruster(anzel, 4), std::invalid_argument);
-  const dynamics::ThrusterSet lonely({{"A", Eigen::Vector3d(0, 1, 0)}, {"B", Eigen::Vector3d(0, 0, 1)}},
-                                     0.1, 1000, 300);
+  const dynamics::ThrusterSet lonely(
+      {{"A", Eigen::Vector3d(0, 1, 0)}, {"B", Eigen::Vector3d(0, 0, 1)}}, 0.1, 1000, 300);
   EXPECT_THROW(OppositeThruster(lonely, 0), std::invalid_argument);
 }
 
@@ -201,10 +201,10 @@ TEST(LongHorizonStats, SummaryThrustDaysSplitAndNormalDeltaV) {
   EXPECT_DOUBLE_EQ(s.consumption_l1_m_s, 3.0);
   ASSERT_EQ(s.thrust_days.size(), 4u);
   EXPECT_DOUBLE_EQ(s.thrust_days[2], 4.0);
-  EXPECT_DOUBLE_EQ(s.north_days, 1 + 4);   // NE + NW
-  EXPECT_DOUBLE_EQ(s.south_days, 2 + 8);   // SE + SW
-  EXPECT_DOUBLE_EQ(s.east_days, 1 + 2);    // NE + SE
-  EXPECT_DOUBLE_EQ(s.west_days, 4 + 8);    // NW + SW
+  EXPECT_DOUBLE_EQ(s.north_days, 1 + 4);  // NE + NW
+  EXPECT_DOUBLE_EQ(s.south_days, 2 + 8);  // SE + SW
+  EXPECT_DOUBLE_EQ(s.east_days, 1 + 2);   // NE + SE
+  EXPECT_DOUBLE_EQ(s.west_days, 4 + 8);   // NW + SW
   EXPECT_EQ(s.fallback_soft_window, 1);
   EXPECT_EQ(s.time_limited_cycles, 1);
   EXPECT_DOUBLE_EQ(s.time_outside_window_s, 60);
@@ -361,7 +361,8 @@ TEST(LongHorizonRun, HandOverInvariants) {
         c.eci_start, c.start_s, base.thrusters.AccelerationMatrix(), pulses, {c.applied_end_s})[0];
     EXPECT_LT((end.head<3>() - c.eci_end.head<3>()).norm(), 1e-3);
     // The initial state of the MILP is the true state's relative state.
-    EXPECT_LT((c.initial_state - Simulator()->RelativeFromEci(c.eci_start, c.start_s)).norm(), 1e-15);
+    EXPECT_LT((c.initial_state - Simulator()->RelativeFromEci(c.eci_start, c.start_s)).norm(),
+              1e-15);
     // Nonlinear replay inside the box (the linear plan holds it, the model
     // error over a day is tiny).
     EXPECT_EQ(c.max_window_violation_deg, 0.0);
@@ -374,8 +375,8 @@ TEST(LongHorizonRun, HandOverInvariants) {
     EXPECT_NEAR(c.delta_v_m_s, base.thrusters.acceleration() * on, 1e-12);
     EXPECT_NEAR(c.consumption_l1_m_s, base.thrusters.L1Factor(0) * on, 1e-12);
     // Anzel: every burn has the normal component cos(theta) of the acceleration.
-    EXPECT_NEAR(c.normal_delta_v_m_s,
-                base.thrusters.acceleration() * std::cos(63.64 * kDeg) * on, 1e-12);
+    EXPECT_NEAR(c.normal_delta_v_m_s, base.thrusters.acceleration() * std::cos(63.64 * kDeg) * on,
+                1e-12);
     for (const Burn& b : c.burns) {
       EXPECT_GE(b.start_s, c.start_s - 1e-9);
       EXPECT_LE(b.end_s, c.applied_end_s + 1e-9);  // fixed mode: every burn ends in its cycle
@@ -402,10 +403,10 @@ TEST(LongHorizonRun, HandOverInvariants) {
   }
   // Summary = sum of the cycles.
   const LongHorizonSummary s = Summarize(cycles, base.thrusters);
-  EXPECT_NEAR(s.consumption_l1_m_s,
-              cycles[0].consumption_l1_m_s + cycles[1].consumption_l1_m_s +
-                  cycles[2].consumption_l1_m_s,
-              1e-12);
+  EXPECT_NEAR(
+      s.consumption_l1_m_s,
+      cycles[0].consumption_l1_m_s + cycles[1].consumption_l1_m_s + cycles[2].consumption_l1_m_s,
+      1e-12);
   EXPECT_EQ(s.burns, static_cast<int>(AllBurns(cycles).size()));
   EXPECT_TRUE(s.rules_ok);
 }
@@ -419,8 +420,8 @@ TEST(LongHorizonRun, ImprovementPassAfterAPoorIncumbent) {
   const ScheduleProblem base = Base();
   LongHorizonOptions o = DailyCycles(1);
   o.solve.milp.relative_gap = 0.0;
-  o.solve.milp.max_nodes = 0;       // the root's incumbent only ...
-  o.improve_above_gap = 1e-9;        // ... and any gap triggers the pass
+  o.solve.milp.max_nodes = 0;  // the root's incumbent only ...
+  o.improve_above_gap = 1e-9;  // ... and any gap triggers the pass
   // The passes act on CBC's gap; the problem-aware search proves this cycle
   // optimal at once, so it is off here.
   o.solve.search.enabled = false;
@@ -563,9 +564,9 @@ TEST(LongHorizonRun, RetryWithoutPreprocessingIsTheThirdImprovementPass) {
   const CycleRecord c3 = FirstCycle(base, o, spy);
   ASSERT_EQ(c3.attempts.size(), 4u);
   EXPECT_EQ(spy->presolve_calls, (std::vector<bool>{true, true, true, false}));
-  EXPECT_EQ(c3.attempts[3].detail.rfind("improvement pass (CBC preprocessing and presolve off, cold",
-                                        0),
-            0u)
+  EXPECT_EQ(
+      c3.attempts[3].detail.rfind("improvement pass (CBC preprocessing and presolve off, cold", 0),
+      0u)
       << c3.attempts[3].detail;
   EXPECT_LE(c3.objective, c2.objective + 1e-9);
   EXPECT_GE(c3.best_bound, c2.best_bound - 1e-9);
@@ -650,12 +651,14 @@ TEST(LongHorizonRun, FailureForcedOffFromItsDate) {
 TEST(LongHorizonRun, UncontrollableCombinationIsReportedAndPropagated) {
   const ScheduleProblem base = Base();
   LongHorizonOptions o = DailyCycles(1);
-  o.outages = {{base.thrusters.IndexOf("NE"), 0.0, kInf}, {base.thrusters.IndexOf("NW"), 0.0, kInf}};
+  o.outages = {{base.thrusters.IndexOf("NE"), 0.0, kInf},
+               {base.thrusters.IndexOf("NW"), 0.0, kInf}};
   const LongHorizonSimulation run(base, o, Simulator(), Solver());
   LongHorizonState state = run.InitialState();
   const CycleRecord c = run.RunCycle(&state);
   EXPECT_FALSE(c.controllable);
-  EXPECT_EQ(c.note.rfind("uncontrollable: no available thruster pushes south (-N)", 0), 0u) << c.note;
+  EXPECT_EQ(c.note.rfind("uncontrollable: no available thruster pushes south (-N)", 0), 0u)
+      << c.note;
   // Best effort only (no nominal attempt), not a solver error; the year goes on.
   ASSERT_FALSE(c.attempts.empty());
   EXPECT_EQ(c.attempts.front().level, Fallback::kSoftWindowFreeTerminal);
@@ -851,8 +854,8 @@ TEST(LongHorizonRun, RecedingAppliesOnlyTheControlHorizon) {
   }
   EXPECT_EQ(c[1].eci_start, c[0].eci_end);
   EXPECT_DOUBLE_EQ(s.time_s, kDay);
-  const std::vector<RuleViolation> v = CheckOperationalRules(
-      base.rules, BoundaryHistory::AllOff(4), {}, 4, 0.0, kDay, AllBurns(c));
+  const std::vector<RuleViolation> v =
+      CheckOperationalRules(base.rules, BoundaryHistory::AllOff(4), {}, 4, 0.0, kDay, AllBurns(c));
   for (const RuleViolation& r : v) ADD_FAILURE() << r.message;
 }
 

@@ -71,9 +71,9 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 // the double integrator): B pushes -x (L1 factor a), C pushes -x-y at 45 deg
 // (L1 factor sqrt(2) a): the L1 and Euclidean objectives weigh them differently.
 dynamics::ThrusterSet Thrusters(double thrust_n) {
-  return dynamics::ThrusterSet({{"B", Eigen::Vector3d(-1, 0, 0), true},
-                                {"C", Eigen::Vector3d(-1, -1, 0), true}},
-                               thrust_n, 100.0, 300.0);
+  return dynamics::ThrusterSet(
+      {{"B", Eigen::Vector3d(-1, 0, 0), true}, {"C", Eigen::Vector3d(-1, -1, 0), true}}, thrust_n,
+      100.0, 300.0);
 }
 
 const std::vector<double> kGrid = {0, 60, 150, 210, 300, 360, 480, 540, 600};  // 8 intervals
@@ -86,10 +86,10 @@ ScheduleProblem MakeProblem(const Case& c) {
   p.initial_state = Eigen::VectorXd::Zero(6);
   p.initial_state.segment<3>(3) = c.v0;
   p.rules.max_simultaneous = 1;
-  p.rules.min_burn_s = 100;       // 2 intervals of 60 s, or one of 120 s
+  p.rules.min_burn_s = 100;  // 2 intervals of 60 s, or one of 120 s
   p.rules.min_off_same_s = 150;
   p.rules.min_gap_other_s = 60;
-  p.window.outputs = {0, 1};      // x, y (m)
+  p.window.outputs = {0, 1};  // x, y (m)
   p.window.half_widths = {c.half_width_m, c.half_width_m};
   p.window.enforce_from_s = c.enforce_from_s;  // nodes (and interior points) from then on
   p.window.intersample_points = c.intersample_points;
@@ -146,9 +146,15 @@ Reference Enumerate(const Case& c) {
     const Eigen::Vector3d d = p.thrusters.thruster(i).direction.normalized();
     accel[i] = a * d;
     switch (c.objective) {
-      case ObjectiveKind::kL1: rate[i] = accel[i].lpNorm<1>(); break;
-      case ObjectiveKind::kDeltaV: rate[i] = a; break;
-      case ObjectiveKind::kPropellant: rate[i] = c.thrust_n / (kG0 * 300.0); break;  // F/(g0 Isp)
+      case ObjectiveKind::kL1:
+        rate[i] = accel[i].lpNorm<1>();
+        break;
+      case ObjectiveKind::kDeltaV:
+        rate[i] = a;
+        break;
+      case ObjectiveKind::kPropellant:
+        rate[i] = c.thrust_n / (kG0 * 300.0);
+        break;  // F/(g0 Isp)
     }
   }
   // The rules, grid and thruster count are the same in every case: the
@@ -157,8 +163,8 @@ Reference Enumerate(const Case& c) {
     std::vector<std::pair<unsigned, int>> ok;  // pattern, number of burns
     for (unsigned pattern = 0; pattern < (1u << (m * n)); ++pattern) {
       const std::vector<Burn> burns = BurnsOfPattern(pattern, m, p.grid);
-      if (CheckOperationalRules(p.rules, p.history, p.forced_off, m, p.grid.front(),
-                                p.grid.back(), burns)
+      if (CheckOperationalRules(p.rules, p.history, p.forced_off, m, p.grid.front(), p.grid.back(),
+                                burns)
               .empty()) {
         ok.emplace_back(pattern, static_cast<int>(burns.size()));
       }
@@ -283,7 +289,7 @@ TEST(BruteForceReference, CasesAreDiscriminating) {
   EXPECT_FALSE(Enumerate(tight).feasible);  // hard: infeasible ...
   tight.soft = true;
   tight.soft_penalty = 0.5;
-  EXPECT_TRUE(Enumerate(tight).feasible);   // ... soft: the least-violating schedule
+  EXPECT_TRUE(Enumerate(tight).feasible);  // ... soft: the least-violating schedule
 }
 
 std::vector<Case> Cases() {
@@ -371,12 +377,15 @@ TEST(BruteForceReference, InteriorPointAbortIsContained) {
   ASSERT_TRUE(o.cbc.separate_process);
   const milp::LpRelaxationResult interior = solver->SolveLpRelaxation(milp.lp(), o);
   ASSERT_EQ(interior.status, milp::SolveStatus::kOptimal) << interior.detail;
-  EXPECT_NEAR(interior.objective, simplex.objective, 1e-6 * std::max(1.0, std::abs(simplex.objective)));
+  EXPECT_NEAR(interior.objective, simplex.objective,
+              1e-6 * std::max(1.0, std::abs(simplex.objective)));
   std::cerr << "interior point on this case: " << interior.detail << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(AllCases, BruteForceTest, ::testing::ValuesIn(Cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.name;
+                         });
 
 }  // namespace
 }  // namespace thrustsched::transcription

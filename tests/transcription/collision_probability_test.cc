@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
 #include "transcription/collision_probability.h"
@@ -29,15 +29,17 @@ double IsotropicOffset(double s, double radius, double d) {
   }
   const double r2 = std::sqrt(2.0) * s;
   // erfc for d > R: erf(R-d) + erf(R+d) would cancel to 1e-16 in the far tail.
-  const double shell = d > radius ? 0.5 * (std::erfc((d - radius) / r2) - std::erfc((d + radius) / r2))
-                                  : 0.5 * (std::erf((radius - d) / r2) + std::erf((radius + d) / r2));
-  return shell -
-         s / (d * std::sqrt(2.0 * kPi)) *
-             (std::exp(-(radius - d) * (radius - d) / (2 * s * s)) -
-              std::exp(-(radius + d) * (radius + d) / (2 * s * s)));
+  const double shell = d > radius
+                           ? 0.5 * (std::erfc((d - radius) / r2) - std::erfc((d + radius) / r2))
+                           : 0.5 * (std::erf((radius - d) / r2) + std::erf((radius + d) / r2));
+  return shell - s / (d * std::sqrt(2.0 * kPi)) *
+                     (std::exp(-(radius - d) * (radius - d) / (2 * s * s)) -
+                      std::exp(-(radius + d) * (radius + d) / (2 * s * s)));
 }
 
-Eigen::Matrix3d Diag(double a, double b, double c) { return Eigen::Vector3d(a * a, b * b, c * c).asDiagonal(); }
+Eigen::Matrix3d Diag(double a, double b, double c) {
+  return Eigen::Vector3d(a * a, b * b, c * c).asDiagonal();
+}
 
 TEST(BallProbabilityTest, IsotropicClosedForms) {
   for (double radius : {0.1, 1.0, 3.0, 15.0}) {
@@ -95,8 +97,10 @@ TEST(BallProbabilityTest, RejectsBadInput) {
   Eigen::Matrix3d asym = Diag(1, 1, 1);
   asym(0, 1) = 0.5;
   EXPECT_THROW(BallProbability(Eigen::Vector3d::Zero(), asym, 1.0), std::invalid_argument);
-  EXPECT_THROW(BallProbability(Eigen::Vector3d::Zero(), -Diag(1, 1, 1), 1.0), std::invalid_argument);
-  EXPECT_THROW(BallProbability(Eigen::Vector3d(NAN, 0, 0), Diag(1, 1, 1), 1.0), std::invalid_argument);
+  EXPECT_THROW(BallProbability(Eigen::Vector3d::Zero(), -Diag(1, 1, 1), 1.0),
+               std::invalid_argument);
+  EXPECT_THROW(BallProbability(Eigen::Vector3d(NAN, 0, 0), Diag(1, 1, 1), 1.0),
+               std::invalid_argument);
 }
 
 TEST(NormalQuantileTest, TextbookValuesAndRoundTrip) {

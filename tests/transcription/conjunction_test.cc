@@ -17,10 +17,11 @@
 #include <memory>
 #include <string>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "milp/cbc_solver.h"
+#include "tests/transcription/conjunction_test_util.h"
 #include "transcription/collision_probability.h"
 #include "transcription/conjunction.h"
 #include "transcription/conjunction_check.h"
@@ -28,7 +29,6 @@
 #include "transcription/conjunction_solve.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
-#include "tests/transcription/conjunction_test_util.h"
 
 namespace thrustsched::transcription {
 namespace {
@@ -55,13 +55,17 @@ TEST(ConjunctionTest, ValidationNamesTheField) {
     EXPECT_FALSE(c.IsValid(&err));
     return err;
   };
-  EXPECT_NE(error_of([](ConjunctionSpec& c) { c.radius_m = -1; }).find("conjunction.radius_m"), std::string::npos);
-  EXPECT_NE(error_of([](ConjunctionSpec& c) { c.covariance(0, 1) = 3.0; }).find("not symmetric"), std::string::npos);
-  EXPECT_NE(error_of([](ConjunctionSpec& c) { c.instantaneous_threshold = 0.7; })
-                .find("conjunction.instantaneous_threshold"),
+  EXPECT_NE(error_of([](ConjunctionSpec& c) { c.radius_m = -1; }).find("conjunction.radius_m"),
             std::string::npos);
-  EXPECT_NE(error_of([](ConjunctionSpec& c) { c.covariance(0, 1) = c.covariance(1, 0) = 1e3; })
-                .find("covariance_repair"),
+  EXPECT_NE(error_of([](ConjunctionSpec& c) { c.covariance(0, 1) = 3.0; }).find("not symmetric"),
+            std::string::npos);
+  EXPECT_NE(error_of([](ConjunctionSpec& c) {
+              c.instantaneous_threshold = 0.7;
+            }).find("conjunction.instantaneous_threshold"),
+            std::string::npos);
+  EXPECT_NE(error_of([](ConjunctionSpec& c) {
+              c.covariance(0, 1) = c.covariance(1, 0) = 1e3;
+            }).find("covariance_repair"),
             std::string::npos);
   EXPECT_NE(error_of([](ConjunctionSpec& c) {
               c.polytope = KeepOutPolytope::Cube(10.0);  // does not contain the 15 m ball
@@ -112,7 +116,8 @@ TEST(ConjunctionTest, GeometryMatchesClosedFormPropagation) {
   for (const CheckGeometry& k : g.checks) {
     const Eigen::MatrixXd phi = ya.TransitionMatrix(k.t(), 0.0);
     const Eigen::Vector3d mean = (phi * p.conjunction->secondary_state).head<3>();
-    const Eigen::Matrix3d cov = (phi * p.conjunction->covariance * phi.transpose()).topLeftCorner<3, 3>();
+    const Eigen::Matrix3d cov =
+        (phi * p.conjunction->covariance * phi.transpose()).topLeftCorner<3, 3>();
     EXPECT_LT((k.secondary - mean).norm(), 1e-6 * (1.0 + mean.norm())) << k.t();
     EXPECT_LT((k.covariance - cov).norm(), 1e-7 * cov.norm()) << k.t();
     // Margins of the cube faces: Phi^-1(1 - eps') sigma along each axis.
@@ -219,7 +224,8 @@ TEST(ConjunctionSolveTest, OnOffStartRepairsThePlanWithoutTheConjunction) {
   EXPECT_TRUE(cs.result.check.operational_ok);
   ConjunctionCheckOptions o;
   o.monte_carlo_samples = 2000;
-  const ConjunctionCheckReport r = CheckConjunction(milp.problem(), cs.result.schedule.burns, {}, o);
+  const ConjunctionCheckReport r =
+      CheckConjunction(milp.problem(), cs.result.schedule.burns, {}, o);
   EXPECT_TRUE(r.risk_ok) << r.max_risk;
   EXPECT_EQ(r.collisions_linear, 0);
   EXPECT_GT(r.collisions_unmanoeuvred_linear, 0);  // the manoeuvre matters

@@ -19,8 +19,8 @@ namespace thrustsched::transcription::testing {
 inline std::shared_ptr<const dynamics::YamanakaAnkersenModel> SerraOrbit() {
   const double n = 7.4996e-5;
   const double a = std::cbrt(dynamics::YamanakaAnkersenModel::kEarthMu / (n * n));
-  return std::make_shared<const dynamics::YamanakaAnkersenModel>(a, 0.0119, dynamics::YamanakaAnkersenModel::kEarthMu,
-                                                                 -0.6258);
+  return std::make_shared<const dynamics::YamanakaAnkersenModel>(
+      a, 0.0119, dynamics::YamanakaAnkersenModel::kEarthMu, -0.6258);
 }
 
 inline ScheduleProblem SmallAvoidance(int num_checks = 3, double budget = 0.05) {

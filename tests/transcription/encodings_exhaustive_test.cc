@@ -125,8 +125,7 @@ std::vector<Config> Configs() {
   // Forced-off windows and disabled thrusters.
   add("forced_off_2x8", 2, u8, Rules(1, 600, 1200, 300), {}, {{1, 600, 1200}, {0, 2000, 2100}});
   add("disabled_3x5", 3, Uniform(5, 300), Rules(1, 300, 1200, 300), {}, {}, {true, false, true});
-  add("conflict_2x8", 2, u8, Rules(1, 900, 1200, 300), History(2, {{0, 100}}, {}),
-      {{0, 300, 600}});
+  add("conflict_2x8", 2, u8, Rules(1, 900, 1200, 300), History(2, {{0, 100}}, {}), {{0, 300, 600}});
   c.back().infeasible = true;
   // Non-uniform grid.
   add("nonuniform_2x7", 2, nonuniform, Rules(1, 400, 700, 250));
@@ -157,8 +156,11 @@ std::vector<Burn> BurnsOf(const Eigen::MatrixXi& p, const std::vector<double>& g
 // (the same semantics as LpData::MaxViolation <= tol, checked below on a sample).
 struct FastLp {
   explicit FastLp(const milp::LpData& lp)
-      : a(lp.a_matrix), row_lower(lp.row_lower), row_upper(lp.row_upper),
-        col_lower(lp.col_lower), col_upper(lp.col_upper) {}
+      : a(lp.a_matrix),
+        row_lower(lp.row_lower),
+        row_upper(lp.row_upper),
+        col_lower(lp.col_lower),
+        col_upper(lp.col_upper) {}
   bool Feasible(const Eigen::VectorXd& x, double tol) const {
     for (int j = 0; j < x.size(); ++j) {
       if (x[j] < col_lower[j] - tol || x[j] > col_upper[j] + tol) return false;
@@ -221,8 +223,8 @@ TEST_P(EncodingsExhaustiveTest, SameAcceptedPatternsAsChecker) {
       for (int j = 0; j < n; ++j) pattern(i, j) = (bits >> (i * n + j)) & 1;
     }
     const std::vector<Burn> burns = BurnsOf(pattern, c.grid);
-    const bool ref_ok = CheckOperationalRules(c.rules, c.history, checker_forced, m,
-                                              c.grid.front(), c.grid.back(), burns)
+    const bool ref_ok = CheckOperationalRules(c.rules, c.history, checker_forced, m, c.grid.front(),
+                                              c.grid.back(), burns)
                             .empty();
     accepted += ref_ok;
     for (Built& b : built) {
@@ -243,7 +245,8 @@ TEST_P(EncodingsExhaustiveTest, SameAcceptedPatternsAsChecker) {
         return;
       }
     }
-    if (!ref_ok && rejected_sample.size() < 40 && std::uniform_int_distribution<int>(0, 200)(rng) == 0) {
+    if (!ref_ok && rejected_sample.size() < 40 &&
+        std::uniform_int_distribution<int>(0, 200)(rng) == 0) {
       rejected_sample.push_back(pattern);
     }
   }

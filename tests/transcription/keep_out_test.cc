@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 
 #include "milp/cbc_solver.h"
+#include "tests/transcription/conjunction_test_util.h"
 #include "transcription/keep_out.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
-#include "tests/transcription/conjunction_test_util.h"
 
 namespace thrustsched::transcription {
 namespace {
@@ -72,7 +72,8 @@ TEST(KeepOutTest, MilpOptimumEqualsEnumerationOfFaceChoices) {
   enumerate(0);
   EXPECT_GT(lps, 8);
   EXPECT_NEAR(mip.objective, best, 1e-9 + 1e-7 * best);
-  EXPECT_LT(mip.objective, ko.cost_budget) << "an optimum below the budget is the optimum without it";
+  EXPECT_LT(mip.objective, ko.cost_budget)
+      << "an optimum below the budget is the optimum without it";
 }
 
 TEST(KeepOutTest, BigMIsNeverTooSmall) {
@@ -95,7 +96,8 @@ TEST(KeepOutTest, BigMIsNeverTooSmall) {
       milp::LpData lp = free;
       lp.col_cost.setZero();
       double m_coef = 0.0;
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, g.rows[q]); it; ++it) {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, g.rows[q]); it;
+           ++it) {
         if (it.col() == g.binaries[q]) {
           m_coef = it.value();
         } else {
@@ -106,8 +108,8 @@ TEST(KeepOutTest, BigMIsNeverTooSmall) {
       const milp::LpRelaxationResult r = solver->SolveLpRelaxation(lp, Exact());
       ASSERT_EQ(r.status, milp::SolveStatus::kOptimal);
       // Lowest activity of the row without its binary + M >= the row's bound.
-      EXPECT_GE(r.objective + m_coef, milp.lp().row_lower[g.rows[q]] - 1e-9) << "t " << g.t << " face "
-                                                                              << g.faces[q];
+      EXPECT_GE(r.objective + m_coef, milp.lp().row_lower[g.rows[q]] - 1e-9)
+          << "t " << g.t << " face " << g.faces[q];
       ++checked;
     }
   }

@@ -17,9 +17,9 @@
 #include <gtest/gtest.h>
 
 #include "milp/cbc_solver.h"
+#include "tests/transcription/thesis_cases.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
-#include "tests/transcription/thesis_cases.h"
 
 namespace thrustsched::transcription {
 namespace {

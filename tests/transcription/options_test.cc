@@ -10,11 +10,11 @@
 
 #include "dynamics/discretisation.h"
 #include "milp/cbc_solver.h"
+#include "tests/transcription/thesis_cases.h"
 #include "transcription/checker.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
 #include "transcription/terminal_sets.h"
-#include "tests/transcription/thesis_cases.h"
 
 namespace thrustsched::transcription {
 namespace {
@@ -81,7 +81,8 @@ TEST(OptionsIsValid, SolveScheduleOptionsNamesTheSubStruct) {
   EXPECT_THAT(e, HasSubstr("relative_gap must be finite and >= 0, got -0.5"));
   auto solver = milp::MakeCbcSolver();
   EXPECT_THAT([&] { SolveSchedule(ThesisTable41(1), *solver, o); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("relative_gap must be finite and >= 0, got -0.5")));
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("relative_gap must be finite and >= 0, got -0.5")));
 
   o = {};
   o.build.discretisation.reference_tolerance = 1.0;
@@ -113,8 +114,9 @@ TEST(OptionsIsValid, SkSetOptions) {
   bad.mean_motion = -1.0;
   EXPECT_FALSE(bad.IsValid(&e));
   EXPECT_THAT(e, HasSubstr("mean_motion must be finite and > 0, got -1"));
-  EXPECT_THAT([&] { StationKeepingSet(bad); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("terminal set: mean_motion must be finite")));
+  EXPECT_THAT(
+      [&] { StationKeepingSet(bad); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("terminal set: mean_motion must be finite")));
   bad = o;
   bad.facets_cone_plus = 2;
   EXPECT_FALSE(bad.IsValid(&e));

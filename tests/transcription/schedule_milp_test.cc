@@ -13,9 +13,9 @@
 #include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
+#include "tests/transcription/thesis_cases.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
-#include "tests/transcription/thesis_cases.h"
 
 namespace thrustsched::dynamics {
 // gtest prints a failing case's scheme by its scenario-file name, not as an
@@ -44,7 +44,6 @@ ScheduleProblem DoubleIntegratorRestToRest(int intervals, InputMode mode) {
   return p;
 }
 
-
 milp::SolveOptions Exact(double time_limit = 120) {
   milp::SolveOptions o;
   o.time_limit_s = time_limit;
@@ -70,13 +69,13 @@ TEST_P(DoubleIntegratorSchemeTest, ZohGridLpOptimumIsTwoNOverNMinusOne) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(ExactForDoubleIntegrator, DoubleIntegratorSchemeTest,
-                         ::testing::Values(dynamics::Scheme::kExactZoh, dynamics::Scheme::kFrozenStart,
-                                           dynamics::Scheme::kFrozenMid,
-                                           dynamics::Scheme::kHermiteSimpson, dynamics::Scheme::kRk4,
-                                           dynamics::Scheme::kTrapezoid,
-                                           dynamics::Scheme::kReference),
-                         [](const auto& info) { return std::string(dynamics::ToString(info.param)); });
+INSTANTIATE_TEST_SUITE_P(
+    ExactForDoubleIntegrator, DoubleIntegratorSchemeTest,
+    ::testing::Values(dynamics::Scheme::kExactZoh, dynamics::Scheme::kFrozenStart,
+                      dynamics::Scheme::kFrozenMid, dynamics::Scheme::kHermiteSimpson,
+                      dynamics::Scheme::kRk4, dynamics::Scheme::kTrapezoid,
+                      dynamics::Scheme::kReference),
+    [](const auto& info) { return std::string(dynamics::ToString(info.param)); });
 
 // Impulses at the nodes including both ends: the continuous optimum 2 is
 // attained for every N >= 1 (impulse +1 at t = 0, -1 at t = 1).

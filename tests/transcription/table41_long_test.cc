@@ -12,12 +12,11 @@
 
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
-#include "transcription/solve.h"
 #include "tests/transcription/thesis_cases.h"
+#include "transcription/solve.h"
 
 namespace thrustsched::transcription {
 namespace {
-
 
 class Table41LongTest : public ::testing::TestWithParam<double> {};
 
@@ -39,10 +38,9 @@ TEST_P(Table41LongTest, ProvenOptimumIsEightSlots) {
   EXPECT_LE(r.check.max_window_violation_at_nodes, 1e-3) << r.check.Summary();  // m
 }
 
-INSTANTIATE_TEST_SUITE_P(Days, Table41LongTest, ::testing::Values(5.0, 8.0),
-                         [](const auto& info) {
-                           return std::to_string(static_cast<int>(info.param)) + "d";
-                         });
+INSTANTIATE_TEST_SUITE_P(Days, Table41LongTest, ::testing::Values(5.0, 8.0), [](const auto& info) {
+  return std::to_string(static_cast<int>(info.param)) + "d";
+});
 
 }  // namespace
 }  // namespace thrustsched::transcription

@@ -50,9 +50,9 @@ TEST(TerminalSetsTest, DiskPolygonGeometry) {
       z(2) = o.eps_z * std::cos(th);
       z(5) = o.eps_z * std::sin(th) * kN;
       const Eigen::VectorXd slack = h.b.head(k) - h.a.topRows(k) * z;
-      EXPECT_GE(slack.minCoeff(), -1e-6);                         // inside
-      EXPECT_EQ((slack.array().abs() < 1e-6).count(), 2) << k;    // on two facets
-      EXPECT_TRUE(InExactStationKeepingSet(o, z, 1e-6));          // on the circle
+      EXPECT_GE(slack.minCoeff(), -1e-6);                       // inside
+      EXPECT_EQ((slack.array().abs() < 1e-6).count(), 2) << k;  // on two facets
+      EXPECT_TRUE(InExactStationKeepingSet(o, z, 1e-6));        // on the circle
     }
     // Points at radius r in every direction: inside iff r <= eps cos(pi/K) along normals.
     for (int d = 0; d < 360; ++d) {
@@ -128,17 +128,18 @@ TEST(TerminalSetsTest, MatchesThesisFacetForms) {
       const double a0 = 2 * kPi * f / k, a1 = 2 * kPi * (f + 1) / k;
       // (K.3): (sin a0 - sin a1) z + (cos a1 - cos a0) zdot/n + eps sin(2 pi/K) >= 0
       const bool disk = (std::sin(a0) - std::sin(a1)) * z(2) +
-                            (std::cos(a1) - std::cos(a0)) * z(5) / kN + o.eps_z * s >= 0;
+                            (std::cos(a1) - std::cos(a0)) * z(5) / kN + o.eps_z * s >=
+                        0;
       // (K.8): (sin a0 - sin a1) xi1 + (cos a1 - cos a0) xi2 + sin(2 pi/K) xi+ >= 0
-      const bool plus = (std::sin(a0) - std::sin(a1)) * xi1 + (std::cos(a1) - std::cos(a0)) * xi2 +
-                            s * xip >= 0;
+      const bool plus =
+          (std::sin(a0) - std::sin(a1)) * xi1 + (std::cos(a1) - std::cos(a0)) * xi2 + s * xip >= 0;
       // (K.14) as printed: (sin a0 - sin a1) xi1 + (cos a1 - cos a0) xi2 + sin(2 pi/K) xi- <= 0;
       // its xi1/xi2 signs are flipped relative to the cross product (a rotation
       // by pi of the same polygon: derived here), so compare with the
       // facet of the opposite index.
       const int g = (f + k / 2) % k;
-      const bool minus = (std::sin(a0) - std::sin(a1)) * xi1 +
-                             (std::cos(a1) - std::cos(a0)) * xi2 + s * xim <= 0;
+      const bool minus =
+          (std::sin(a0) - std::sin(a1)) * xi1 + (std::cos(a1) - std::cos(a0)) * xi2 + s * xim <= 0;
       EXPECT_EQ(disk, (h.a.row(f) * z)(0) <= h.b(f)) << "disk facet " << f;
       EXPECT_EQ(plus, (h.a.row(k + f) * z)(0) <= h.b(k + f)) << "cone+ facet " << f;
       EXPECT_EQ(minus, (h.a.row(2 * k + g) * z)(0) <= h.b(2 * k + g)) << "cone- facet " << f;
@@ -158,8 +159,8 @@ TEST(TerminalSetsTest, FreeMotionFromThePolytopeStaysInTheWindow) {
   double worst = 0;
   for (int trial = 0; trial < 200000 && inside < 300; ++trial) {
     Vec6 z;
-    z << u(rng) * 6000, u(rng) * 36800, u(rng) * 36800, u(rng) * 6000 * kN,
-        u(rng) * 12000 * kN, u(rng) * 36800 * kN;
+    z << u(rng) * 6000, u(rng) * 36800, u(rng) * 36800, u(rng) * 6000 * kN, u(rng) * 12000 * kN,
+        u(rng) * 36800 * kN;
     if (!InPolytope(h, z)) continue;
     ++inside;
     EXPECT_TRUE(InExactStationKeepingSet(o, z, 1e-6));  // inner approximation

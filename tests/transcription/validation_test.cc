@@ -115,7 +115,8 @@ SerraSolution SolveSerra(const std::string& example, int intervals) {
 double NuSpacingAround(const SerraSolution& s, int node) {
   const std::vector<double>& g = s.problem.grid;
   double h = 0.0;
-  if (node > 0) h = std::max(h, s.model->TrueAnomalyAt(g[node]) - s.model->TrueAnomalyAt(g[node - 1]));
+  if (node > 0)
+    h = std::max(h, s.model->TrueAnomalyAt(g[node]) - s.model->TrueAnomalyAt(g[node - 1]));
   if (node + 1 < static_cast<int>(g.size())) {
     h = std::max(h, s.model->TrueAnomalyAt(g[node + 1]) - s.model->TrueAnomalyAt(g[node]));
   }
@@ -161,7 +162,8 @@ void ExpectSerraImpulses(const SerraSolution& s, const std::vector<SerraImpulse>
       const Impulse& im = r.schedule.impulses[k];
       const double nu = s.model->TrueAnomalyAt(im.time_s);
       // Published anomalies have 4 decimals.
-      if (im.thruster == thruster && std::abs(nu - pub.nu_rad) <= NuSpacingAround(s, im.node) + 1e-4) {
+      if (im.thruster == thruster &&
+          std::abs(nu - pub.nu_rad) <= NuSpacingAround(s, im.node) + 1e-4) {
         total += im.delta_v_m_s;
         matched[k] = true;
       }
@@ -217,7 +219,7 @@ TEST(SerraOutOfPlaneTest, GtoNuf52TwoImpulsesAtNuPlusMinus) {
   const SerraSolution s = SolveSerra("ch. 6 ex. 2, GTO, nu_f = 5.2", 2000);
   ExpectSerraOptimum(s);
   const double e = s.model->eccentricity();
-  EXPECT_NEAR(std::acos(-e), 2.3902, 1e-4);               // nu+
+  EXPECT_NEAR(std::acos(-e), 2.3902, 1e-4);              // nu+
   EXPECT_NEAR(2.0 * kPi - std::acos(-e), 3.8930, 1e-4);  // nu-
   ExpectSerraImpulses(s, {{2.3902, +3.1060}, {3.8930, -3.1668}});
 }
@@ -229,7 +231,8 @@ TEST(SerraOutOfPlaneTest, GtoNuf3InteriorAndFinalImpulse) {
   ExpectSerraOptimum(s);
   ExpectSerraImpulses(s, {{1.8924, +7.8311}, {3.0, -0.9261}});
   // About 40 % more than with nu_f = 5.2 (Serra's remark).
-  const double longer = SerraReference("ch. 6 ex. 2, GTO, nu_f = 5.2").at("optimum_m_s").get<double>();
+  const double longer =
+      SerraReference("ch. 6 ex. 2, GTO, nu_f = 5.2").at("optimum_m_s").get<double>();
   EXPECT_NEAR(s.result.solve.objective / longer, 1.40, 0.01);
 }
 

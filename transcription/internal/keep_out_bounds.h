@@ -52,20 +52,23 @@ ThrustBounds ReadBounds(const KeepOutColumns& cols, const milp::Model& model);
 /// (map: rows x n). `kick[j]` = B(t_j) D (impulsive mode, n x m per node).
 std::vector<Effect> Effects(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
                             const std::vector<Eigen::MatrixXd>& kick, const PartialMap& at,
-                            const Eigen::MatrixXd& map, const KeepOutColumns& cols, const ThrustBounds& b);
+                            const Eigen::MatrixXd& map, const KeepOutColumns& cols,
+                            const ThrustBounds& b);
 
 /// Lowest and highest a^T sum_c e_c v_c over the budget and bounds (exact).
-std::pair<double, double> KnapsackRange(const std::vector<Effect>& effects, const Eigen::VectorXd& a,
-                                        double budget);
+std::pair<double, double> KnapsackRange(const std::vector<Effect>& effects,
+                                        const Eigen::VectorXd& a, double budget);
 
 /// The same with the terminal constraint of a fixed-state or state-box
 /// problem added (other terminal kinds: none, a valid relaxation), by LP.
 class ReachLp {
  public:
-  ReachLp(const ScheduleProblem& p, const dynamics::DiscreteModel& d, const std::vector<Eigen::MatrixXd>& kick,
-          const KeepOutColumns& cols, const ThrustBounds& b, double budget, const milp::Solver& solver);
+  ReachLp(const ScheduleProblem& p, const dynamics::DiscreteModel& d,
+          const std::vector<Eigen::MatrixXd>& kick, const KeepOutColumns& cols,
+          const ThrustBounds& b, double budget, const milp::Solver& solver);
   /// {low, high}; {-inf, inf} where an LP does not end optimal (no tightening).
-  std::pair<double, double> Range(const std::vector<Effect>& effects, const Eigen::VectorXd& a) const;
+  std::pair<double, double> Range(const std::vector<Effect>& effects,
+                                  const Eigen::VectorXd& a) const;
 
  private:
   const milp::Solver& solver_;
