@@ -460,6 +460,7 @@ void ParseSolver(JsonObject o, Scenario* s) {
   so.random_seed = o.OptionalInteger("random_seed", 0, 2147483647).value_or(so.random_seed);
   so.log_level = o.OptionalInteger("log_level", 0, 3).value_or(so.log_level);
   so.presolve = o.OptionalBool("presolve").value_or(so.presolve);
+  if (auto n = o.OptionalInteger("max_nodes", 0, 2147483647)) so.max_nodes = *n;
   if (auto p = o.OptionalNumber("progress_interval_s", Bound::kPositive))
     so.progress_interval_s = *p;
   if (auto d = o.OptionalNumber("diagnosis_time_limit_s", Bound::kNonNegative)) {

@@ -14,6 +14,8 @@ PACKAGES=(
   coinor-cbc glpk-utils python3-scipy gnuplot-nox
   # the Python package (python/) and its tests
   pybind11-dev python3-dev python3-numpy python3-pandas python3-matplotlib python3-pytest
+  # campaigns (thrustsched-sweep) on Dask
+  python3-distributed
   # the test that opens report.html in a real browser (headless)
   chromium
   # the format check of CI (scripts/check_format.sh)

@@ -39,4 +39,5 @@ PYBIND11_MODULE(_core, m) {
   thrustsched::python::BindProblem(m);
   thrustsched::python::BindBuilt(m);
   thrustsched::python::BindSimulate(m);
+  thrustsched::python::BindCli(m);
 }

@@ -12,12 +12,13 @@
 Also: ts.ScheduleProblem (your own Phi, Gamma, drift as numpy arrays),
 ts.dynamics (the shipped models and their discretisation), ts.milp (build,
 solve and write MILPs; extend a schedule MILP from ts.build), ts.simulate
-(the year loop). Every object is the C++ library's (thrustsched._core); the
+(the year loop), ts.sweep (campaigns: sweeps and Monte Carlo runs on
+Dask; data/campaigns/README.md). Every object is the C++ library's (thrustsched._core); the
 CLI's documentation (data/scenarios/README.md) describes the scenario fields
 and the output columns.
 """
 from . import _core
-from . import dynamics, milp
+from . import dynamics, milp, sweep
 from ._api import build, check, export, solve
 from ._problem import BuiltSchedule, ScheduleProblem
 from ._results import CheckResult, Report, SolveResult
@@ -31,5 +32,5 @@ solver_version = _core.solver_version
 __all__ = [
     "Scenario", "ScenarioError", "solve", "check", "export", "build", "simulate",
     "SolveResult", "CheckResult", "Report", "SimulationResult", "ScheduleProblem", "BuiltSchedule",
-    "ThrusterSet", "dynamics", "milp", "solver_version", "__version__",
+    "ThrusterSet", "dynamics", "milp", "sweep", "solver_version", "__version__",
 ]

@@ -292,9 +292,9 @@ TEST(ScenarioParser, DiscretisationTranscriptionSolverExtensions) {
   json j = HcwBase();
   j["discretisation"] = {{"scheme", "rk4"}, {"rk4_substeps", 7}, {"reference_tolerance", 1e-10}};
   j["transcription"] = {{"formulation", "condensed"}, {"encoding", "thesis"}, {"scale", false}};
-  j["solver"] = {{"time_limit_s", 5},    {"relative_gap", 0.02},      {"threads", 2},
-                 {"absolute_gap", 1e-6}, {"random_seed", 42},         {"log_level", 2},
-                 {"presolve", false},    {"progress_interval_s", 1.5}};
+  j["solver"] = {{"time_limit_s", 5},    {"relative_gap", 0.02},       {"threads", 2},
+                 {"absolute_gap", 1e-6}, {"random_seed", 42},          {"log_level", 2},
+                 {"presolve", false},    {"progress_interval_s", 1.5}, {"max_nodes", 2000}};
   const Scenario s = Parse(j);
   EXPECT_EQ(s.build.discretisation.scheme, dynamics::Scheme::kRk4);
   EXPECT_EQ(s.build.discretisation.rk4_substeps, 7);
@@ -310,6 +310,8 @@ TEST(ScenarioParser, DiscretisationTranscriptionSolverExtensions) {
   EXPECT_EQ(s.solve.log_level, 2);
   EXPECT_FALSE(s.solve.presolve);
   EXPECT_DOUBLE_EQ(s.solve.progress_interval_s, 1.5);
+  EXPECT_EQ(s.solve.max_nodes, 2000);
+  EXPECT_EQ(Parse(HcwBase()).solve.max_nodes, -1);  // unlimited unless given
   for (const char* scheme : {"exact_zoh", "frozen_start", "frozen_mid", "hermite_simpson", "rk4",
                              "trapezoid", "euler", "reference"}) {
     j["discretisation"] = {{"scheme", scheme}};
@@ -435,6 +437,10 @@ TEST(ScenarioParserRejects, WrongTypes) {
   j = HcwBase();
   j["solver"]["threads"] = 1.5;
   EXPECT_HAS(ErrorOf(j), "scenario.solver.threads: expected an integer, got 1.5");
+  j = HcwBase();
+  j["solver"]["max_nodes"] = -1;
+  EXPECT_HAS(ErrorOf(j), "scenario.solver.max_nodes");
+  EXPECT_HAS(ErrorOf(j), "-1");
   j = HcwBase();
   j["initial_state"]["hcw_position_m"] = {1000, "0", 0};
   EXPECT_HAS(ErrorOf(j), "scenario.initial_state.hcw_position_m[1]: expected a number");
