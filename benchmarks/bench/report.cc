@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "app/plots.h"
+#include "benchmarks/bench/report_campaigns.h"
 #include "benchmarks/bench/report_conjunction.h"
 #include "benchmarks/bench/report_sections.h"
 #include "benchmarks/bench/report_solver.h"
@@ -51,6 +52,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteYear(md, meta, ref);
   WriteCollisionAvoidance(md, rows);
   WriteSolverSpeed(md, rows);
+  WriteCampaigns(md, dir);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);
   WriteColumns(md);

@@ -27,13 +27,20 @@ VARYING_COLUMNS = ["solve_s", "wall_s", "worker", "attempts", "error"]
 def write_json_atomic(path: str, data: Any) -> None:
     """Writes through a temporary file and a rename: a reader (or a crash)
     sees the old file or the new one, never half of one."""
+    _write_atomic(path, json.dumps(data, indent=1, sort_keys=True, allow_nan=True) + "\n")
+
+
+def _write_atomic(path: str, text: str) -> None:
     tmp = f"{path}.tmp{os.getpid()}"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(data, f, indent=1, sort_keys=True, allow_nan=True)
-        f.write("\n")
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, path)
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    finally:  # an interrupt (Ctrl-C) before the rename leaves no half file behind
+        if os.path.exists(tmp):
+            os.remove(tmp)
 
 
 def _read(path: str) -> Dict[str, Any]:
@@ -113,7 +120,4 @@ def results_csv_text(parameters: List[str], rows: List[Dict[str, Any]]) -> str:
 
 
 def write_results_csv(path: str, parameters: List[str], rows: List[Dict[str, Any]]) -> None:
-    tmp = f"{path}.tmp{os.getpid()}"
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(results_csv_text(parameters, rows))
-    os.replace(tmp, path)
+    _write_atomic(path, results_csv_text(parameters, rows))

@@ -18,6 +18,7 @@ import json
 import os
 import shutil
 import sys
+import tempfile
 import time
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional
@@ -218,8 +219,9 @@ def _run_local_cluster(outcome: CampaignOutcome, pending: List[Task], progress: 
     with dask.config.set({"distributed.scheduler.allowed-failures": 1,
                           "distributed.worker.daemon": False,
                           "distributed.logging.distributed": "error"}):
-        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                          dashboard_address=":0", silence_logs=40) as cluster, Client(cluster) as client:
+        with tempfile.TemporaryDirectory(prefix="thrustsched-dask-") as scratch, \
+                LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
+                             silence_logs=40, local_directory=scratch) as cluster, Client(cluster) as client:
             _announce(client, verbose)
             _run_dask(outcome, pending, progress, client, faults)
 

@@ -171,6 +171,10 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
     EXPECT_NE(report.find(h), std::string::npos) << "missing: " << h;
   }
   EXPECT_NE(report.find("| hcw_table41_1d | sparse | tight |"), std::string::npos);
+  // Section 9 comes from campaigns.md (benchmarks/campaign_scaling.py): absent here.
+  EXPECT_NE(report.find("## 9. Campaigns (`thrustsched-sweep` on Dask)\n\nNot measured in this "
+                        "folder: `PYTHONPATH=build/python"),
+            std::string::npos);
   EXPECT_NE(report.find("| scenario | ours | cbc program | glpsol | HiGHS | agreement |"),
             std::string::npos);
   // The report can be regenerated from the CSV alone.
@@ -180,6 +184,18 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
             0)
       << ReadAll(log);
   EXPECT_EQ(ReadAll((dir / "report.md").string()), report);
+  // With a campaigns.md beside it, section 9 carries it over, headings one level down.
+  std::ofstream(dir / "campaigns.md") << "# Campaign engine scaling\n\nMeasured x.\n\n"
+                                         "## On paper\n\n| cores | wall (h) |\n";
+  ASSERT_EQ(RunCommand(std::string("'") + THRUSTSCHED_BENCH + "' --report-only --out '" +
+                       dir.string() + "' > '" + log + "' 2>&1"),
+            0)
+      << ReadAll(log);
+  EXPECT_NE(ReadAll((dir / "report.md").string())
+                .find("## 9. Campaigns (`thrustsched-sweep` on Dask)\n\nMeasured x.\n\n"
+                      "### On paper\n\n| cores | wall (h) |\n"),
+            std::string::npos);
+  fs::remove(dir / "campaigns.md");
   // Section 6 reads year.json files: a whole nominal year gets a ratio to the
   // published 129.2 m/s and the 30-min verdict; a partial run gets no ratio.
   const fs::path years = dir / "years";
