@@ -231,4 +231,5 @@ def _announce(client: Any, verbose: bool) -> None:
         return
     link = getattr(client, "dashboard_link", None)
     n = len(client.scheduler_info().get("workers", {}))
-    print(f"sweep: {n} Dask workers" + (f", dashboard {link}" if link else ""), file=sys.stderr, flush=True)
+    print(f"sweep: {n} Dask worker{'' if n == 1 else 's'}" + (f", dashboard {link}" if link else ""),
+          file=sys.stderr, flush=True)

@@ -249,3 +249,14 @@ def test_a_year_task_resumes_from_its_own_checkpoint(tmp_path):
     assert row["status"] == "complete" and row["check_passed"] == "true"
     assert float(row["consumption_l1_m_s"]) == reference["consumption_l1_m_s"]
     assert float(row["thrust_days"]) == reference["thrust_days"]["total"]
+
+
+def test_an_existing_dask_scheduler_runs_the_campaign(serial_run, tmp_path):
+    from distributed import LocalCluster
+
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0",
+                      silence_logs=40, local_directory=str(tmp_path / "dask")) as cluster:
+        r = sweep(CAMPAIGN, "--out", tmp_path / "c", "--scheduler", cluster.scheduler_address)
+    assert r.returncode == 0, r.stderr
+    assert "1 Dask worker," in r.stderr or "1 Dask worker\n" in r.stderr
+    assert fixed(rows(tmp_path / "c")) == fixed(rows(serial_run))
