@@ -13,7 +13,9 @@ if [[ "${1:-}" == "-h" || "${1:-}" == "--help" ]]; then
 fi
 cd "$(dirname "$0")/.."
 command -v clang-format >/dev/null || { echo "check_format: clang-format not found"; exit 1; }
-mapfile -t files < <(git ls-files '*.cc' '*.h' | grep -v '^tests/install/consumer/')
+# Tracked files and new ones not yet added (what the next commit would hold).
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cc' '*.h' |
+                     grep -v '^tests/install/consumer/')
 if [[ "${1:-}" == "--fix" ]]; then
   clang-format -i "${files[@]}"
   echo "check_format: formatted ${#files[@]} files"

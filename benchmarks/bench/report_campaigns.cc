@@ -19,7 +19,8 @@ void WriteCampaigns(std::ostream& md, const std::string& dir) {
   while (std::getline(in, line)) {
     if (!body && (line.empty() || line.rfind("# ", 0) == 0)) continue;
     body = true;
-    if (!line.empty() && line[0] == '#') line = "#" + line;  // "## x" becomes "### x", below the section
+    if (!line.empty() && line[0] == '#')
+      line = "#" + line;  // "## x" becomes "### x", below the section
     md << line << "\n";
   }
   md << "\n(From `campaigns.md`, written by `benchmarks/campaign_scaling.py`.)\n\n";
