@@ -25,7 +25,8 @@ from typing import Any, Dict, List, Optional
 
 from ._campaign_results import failed_row, write_json_atomic, write_results_csv
 from ._campaign_spec import CampaignError, CampaignSpec
-from ._campaign_task_run import TaskCrashed, TaskInterrupted, finished_row, run_task, task_paths
+from ._campaign_task_run import (TaskCrashed, TaskInterrupted, finished_row, read_attempts, run_task,
+                                 task_paths)
 from ._campaign_tasks import Task, expand
 
 CAMPAIGN_FILE = "campaign.json"
@@ -99,7 +100,7 @@ class _Progress:
 def _record(outcome: CampaignOutcome, task: Task, row: Optional[Dict[str, Any]], error: str,
             progress: _Progress) -> None:
     if row is None:
-        row = failed_row(task, error, attempts=_attempts(outcome.out, task.id))
+        row = failed_row(task, error, attempts=read_attempts(task_paths(outcome.out, task.id)["attempts"]))
         outcome.failed.append(row)
         write_json_atomic(os.path.join(outcome.out, "rows", f"{task.id}.failed.json"), row)
         progress.finished(False, f"task {task.index} failed: {error.splitlines()[0][:120]}")
@@ -107,14 +108,6 @@ def _record(outcome: CampaignOutcome, task: Task, row: Optional[Dict[str, Any]],
         progress.finished(True, f"task {task.index}: {row['status']}")
     outcome.rows.append(row)
     write_results_csv(os.path.join(outcome.out, "results.csv"), outcome.spec.parameters, outcome.rows)
-
-
-def _attempts(out: str, task_id: str) -> int:
-    try:
-        with open(task_paths(out, task_id)["attempts"], encoding="utf-8") as f:
-            return int(f.read().strip())
-    except (FileNotFoundError, ValueError):
-        return 0
 
 
 def _run_serial(outcome: CampaignOutcome, pending: List[Task], progress: _Progress, faults: Dict[str, str]) -> None:

@@ -166,14 +166,19 @@ def _interrupted(t: Any, task_dir: str, exit_code: int) -> bool:
         return bool(json.load(f).get("interrupted"))
 
 
+def read_attempts(path: str) -> int:
+    """Attempts recorded in an attempts file (0 when there is none)."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            return int(f.read().strip() or 0)
+    except (FileNotFoundError, ValueError):
+        return 0
+
+
 def _count_attempt(path: str) -> int:
     """Attempts so far at this task, this one included (a retry after a crash
     or a killed worker counts)."""
-    try:
-        with open(path, encoding="utf-8") as f:
-            n = int(f.read().strip() or 0) + 1
-    except (FileNotFoundError, ValueError):
-        n = 1
+    n = read_attempts(path) + 1
     with open(path, "w", encoding="utf-8") as f:
         f.write(f"{n}\n")
     return n

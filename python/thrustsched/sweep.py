@@ -21,6 +21,7 @@ campaign file and the out folder are described in data/campaigns/README.md.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import shlex
 import sys
@@ -106,21 +107,18 @@ def _dry_run(spec: CampaignSpec, out: str) -> None:
     from ._campaign_task_run import finished_row
 
     ts = expand(spec)
-    done = [t for t in ts if finished_row(out, t.id) is not None]
+    finished = {t.id: row for t in ts for row in [finished_row(out, t.id)] if row is not None}
     print(f"campaign {spec.name}: {len(ts)} {spec.kind} tasks over {', '.join(spec.parameters) or 'nothing'}; "
-          f"{len(done)} finished in {out}")
+          f"{len(finished)} finished in {out}")
     for t in ts:
         swept = ", ".join(f"{p}={v}" for p, v in t.params.items())
-        print(f"  {t.index:4d} {t.id} {'done ' if t in done else 'to run'} {swept}")
-    walls = []
-    for t in done:
-        row = finished_row(out, t.id)
-        if isinstance(row.get("wall_s"), float):
-            walls.append(row["wall_s"])
+        print(f"  {t.index:4d} {t.id} {'done ' if t.id in finished else 'to run'} {swept}")
+    # Collected runs (--emit-tasks) have no wall time of their own (NaN).
+    walls = sorted(w for w in (r.get("wall_s") for r in finished.values())
+                   if isinstance(w, float) and math.isfinite(w))
     if walls:
-        walls.sort()
         median = walls[len(walls) // 2]
-        todo = len(ts) - len(done)
+        todo = len(ts) - len(finished)
         print(f"estimated cost: {todo} tasks x {median:.3g} s (median of the finished ones) = "
               f"{todo * median / 3600:.3g} core-hours")
     else:
