@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/format.h"
+#include "milp/lazy_rows.h"
 #include "milp/lp_bound.h"
 
 namespace thrustsched::transcription {
@@ -54,9 +55,8 @@ class Search {
       return Result();
     }
     if (!Done()) Heuristic();
-    for (int round = 0; round < 3 && !Done() && !Stopped() && has_incumbent(); ++round) {
-      if (!ExactRestricted()) break;
-    }
+    ExactRounds();
+    if (!Done() && !Stopped() && has_incumbent() && Improve()) ExactRounds();
     if (!Done() && !Stopped()) WholeMilp();
     return Result();
   }
@@ -243,32 +243,98 @@ class Search {
   // Step 2: the MILP restricted to the candidate slots, widened while it is
   // infeasible.
   void Heuristic() {
-    double threshold = search_.candidate_threshold;
-    int k = search_.neighbourhood;
     for (int widening = 0; widening <= search_.max_widenings && !Stopped(); ++widening) {
-      const Eigen::MatrixXi mask = CandidateSlots(threshold, k, widening > 0);
+      const Eigen::MatrixXi mask = WideningMask(widening);
       const Restriction r = Restrict(mask);
       if (report_ != nullptr) report_->candidate_slots = Count(mask);
       const double t0 = Elapsed();
       milp::SolveOptions o = RestrictedOptions();
       o.max_nodes = NodeLimit();
       milp::SolveResult s;
-      if (r.feasible) s = solver_.Solve(r.small, o);
+      if (r.feasible) s = SolveRestricted(r.small, o);
       nodes_ += s.nodes;
       const std::string what = "MILP restricted to " + std::to_string(Count(mask)) +
                                " candidate slots (" + std::to_string(r.small.num_cols()) +
                                " columns, " + std::to_string(r.small.num_rows()) + " rows)";
       if (s.has_solution()) {
         Step(what + ": " + std::string(milp::ToString(s.status)) + " in " +
-             FormatG(Elapsed() - t0, 3) + " s, " + std::to_string(s.nodes) + " nodes");
+             FormatG(Elapsed() - t0, 3) + " s, " + std::to_string(s.nodes) + " nodes" + lazy_note_);
         Offer(Lift(r, s.x), "the restricted MILP");
+        heuristic_level_ = widening;
         return;
       }
       Step(what + ": " + (r.feasible ? std::string(milp::ToString(s.status)) : "infeasible") +
            ", widened");
+    }
+  }
+
+  // The candidate slots of widening level w: the relaxation's slots with
+  // threshold t/10^w, k doubled w times, every thruster from level 1 on.
+  Eigen::MatrixXi WideningMask(int level) const {
+    double threshold = search_.candidate_threshold;
+    int k = search_.neighbourhood;
+    for (int w = 0; w < level; ++w) {
       k = std::max(2 * k, k + 1);
       threshold /= 10.0;
     }
+    return CandidateSlots(threshold, k, level > 0);
+  }
+
+  // Step 4b, local improvement (when reduced-cost fixing leaves too many
+  // slots): the MILP restricted to the next, wider nets around the
+  // relaxation's and the incumbent's slots, each asked for a schedule better
+  // than the incumbent by a step (a cutoff row); up to improvement_rounds
+  // nets of at most max_exact_slots slots. Incumbents only: a restriction's
+  // verdict says nothing of the slots it leaves out. True if it improved.
+  bool Improve() {
+    const double before = objective_;
+    const int first = heuristic_level_ + 1;
+    Eigen::MatrixXi last;
+    for (int level = first; level < first + search_.improvement_rounds; ++level) {
+      if (Done() || Stopped()) break;
+      const Eigen::MatrixXi mask = WideningMask(level);
+      if (Count(mask) > search_.max_exact_slots) break;
+      if (last.size() == mask.size() && last == mask) continue;
+      last = mask;
+      Restriction r = Restrict(mask);
+      if (!r.feasible) continue;
+      AddObjectiveCutoff(&r.small, Cutoff());
+      const double t0 = Elapsed();
+      milp::SolveOptions o = RestrictedOptions();
+      o.max_nodes = NodeLimit();
+      const milp::SolveResult s = SolveRestricted(r.small, o);
+      nodes_ += s.nodes;
+      Step("improvement over " + std::to_string(Count(mask)) +
+           " slots: " + std::string(milp::ToString(s.status)) + " in " +
+           FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
+      if (s.has_solution()) Offer(Lift(r, s.x), "the improvement MILP");
+    }
+    return objective_ < before;
+  }
+
+  void ExactRounds() {
+    for (int round = 0; round < 3 && !Done() && !Stopped() && has_incumbent(); ++round) {
+      if (!ExactRestricted()) break;
+    }
+  }
+
+  // Only schedules better than the incumbent by a step count.
+  double Cutoff() const {
+    return objective_ - std::max(step_, 0.0) + 1e-7 * std::max(1.0, std::abs(objective_));
+  }
+
+  // A restricted MILP: by row generation over its dense (condensed window)
+  // rows unless disabled (milp/lazy_rows.h; exact, so proofs carry over).
+  milp::SolveResult SolveRestricted(const milp::LpData& small, const milp::SolveOptions& o) {
+    if (!search_.lazy_rows) return solver_.Solve(small, o);
+    milp::LazyRowReport lazy;
+    milp::SolveResult s = milp::SolveWithLazyRows(solver_, small, o, {}, &lazy);
+    lazy_note_ = lazy.used ? " (" + std::to_string(lazy.final_rows) + " of " +
+                                 std::to_string(small.num_rows()) + " rows in " +
+                                 std::to_string(lazy.rounds) + " round" +
+                                 (lazy.rounds == 1 ? "" : "s") + ")"
+                           : "";
+    return s;
   }
 
   long long NodeLimit() const {
@@ -305,13 +371,10 @@ class Search {
     }
     Restriction r = Restrict(mask);
     const double before = objective_;
-    // Only schedules better than the incumbent by a step count.
-    const double cutoff =
-        objective_ - std::max(step_, 0.0) + 1e-7 * std::max(1.0, std::abs(objective_));
-    AddObjectiveCutoff(&r.small, cutoff);
+    AddObjectiveCutoff(&r.small, Cutoff());
     const double t0 = Elapsed();
     milp::SolveResult s;
-    if (r.feasible) s = solver_.Solve(r.small, RestrictedOptions());
+    if (r.feasible) s = SolveRestricted(r.small, RestrictedOptions());
     nodes_ += s.nodes;
     const std::string what = "exact MILP over the " + std::to_string(Count(mask)) +
                              " slots reduced-cost fixing leaves free";
@@ -335,7 +398,7 @@ class Search {
     }
     if (bound_ > objective_) bound_ = objective_;
     Step(what + ": " + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) +
-         " s, bound " + FormatG(bound_, 8));
+         " s, bound " + FormatG(bound_, 8) + lazy_note_);
     return s.status != milp::SolveStatus::kOptimal && objective_ < before;
   }
 
@@ -427,6 +490,8 @@ class Search {
   SearchReport* report_;
   Clock::time_point start_;
   double step_ = 0.0;
+  int heuristic_level_ = 0;  // widening level of the heuristic's incumbent
+  std::string lazy_note_;    // rows the last restricted solve used
 
   milp::LpRelaxationResult relaxation_;
   milp::DualBound dual_;
@@ -457,6 +522,8 @@ bool SearchOptions::IsValid(std::string* error) const {
   if (restricted_max_nodes < 0) {
     return fail("restricted_max_nodes must be >= 0, got " + std::to_string(restricted_max_nodes));
   }
+  if (improvement_rounds < 0)
+    return fail("improvement_rounds must be >= 0, got " + std::to_string(improvement_rounds));
   if (max_exact_slots < 0)
     return fail("max_exact_slots must be >= 0, got " + std::to_string(max_exact_slots));
   return true;

@@ -29,6 +29,12 @@
 //     restricted to them is exact for any improvement: its solve proves the
 //     incumbent optimal or finds a better one (and then again), and the bound
 //     is min(incumbent, that solve's bound) and at least the LP bound.
+//     Restricted MILPs are solved by row generation over their dense window
+//     rows (milp/lazy_rows.h; exact): a few thousand of them bind.
+//  4b. When too many slots stay free for step 4: local improvement, the MILP
+//     restricted to wider nets around the relaxation's and the incumbent's
+//     slots with a cutoff one step below the incumbent (incumbents only),
+//     then step 4 again with the better incumbent.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, from the
 //     incumbent (MIP start and cutoff).
 // Heuristic steps give incumbents only; bounds come from the LP duals and
@@ -64,6 +70,13 @@ struct SearchOptions {
   Formulation restricted_formulation = Formulation::kCondensed;
   /// Node limit of each restricted MILP solve.
   long long restricted_max_nodes = 20000;
+  /// Restricted MILPs solved by row generation over their dense rows
+  /// (milp::SolveWithLazyRows): on GEO weeks ~1/4 of the condensed window
+  /// rows bind at the LP optimum, and CBC's node LPs on the rest cost 10x.
+  bool lazy_rows = true;
+  /// Widening levels tried after the heuristic's incumbent, each a
+  /// restricted MILP with a cutoff one step below the incumbent (step 3).
+  int improvement_rounds = 2;
   /// Largest number of slots left free by reduced-cost fixing for the exact
   /// restricted solve (step 4); above it, the whole MILP (step 5).
   int max_exact_slots = 3000;

@@ -168,9 +168,10 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
   }
 }
 
-// The problem-aware search against the first release's path (CBC on the
-// whole MILP), case by case in the same run so that machine load cancels in
-// the ratio; the targets are those of the solver-speed work.
+// The problem-aware search against the previous release's search (without
+// lazy rows and the improvement step) and the first release's path (CBC on
+// the whole MILP), case by case in the same run so that machine load cancels
+// in the ratios; the targets are those of the solver-speed work.
 void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
   auto pair = [b](CaseSpec c, const std::string& suffix) {
     // Only the solve is timed: no separate LP relaxation (the search reports
@@ -180,6 +181,10 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     c.search = true;
     c.variant = "search (this release)";
     b->Add(c, suffix + "-search");
+    c.search_previous = true;
+    c.variant = "search as the previous release ran it";
+    b->Add(c, suffix + "-previous");
+    c.search_previous = false;
     c.search = false;
     c.variant = "CBC on the whole MILP (first release)";
     b->Add(c, suffix + "-cbc");

@@ -11,10 +11,11 @@
 namespace thrustsched::bench {
 namespace {
 
-// The two arms of one case: rows of "<id>-search" and "<id>-cbc".
+// The arms of one case: rows of "<id>-search", "<id>-previous" (the
+// previous release's search) and "<id>-cbc" (the first release's path).
 struct Pair {
   std::string id;
-  std::vector<const Row*> search, cbc;
+  std::vector<const Row*> search, previous, cbc;
 };
 
 std::vector<Pair> Pairs(const std::vector<Row>& rows) {
@@ -23,14 +24,17 @@ std::vector<Pair> Pairs(const std::vector<Row>& rows) {
   for (const Row& r : rows) {
     if (r.Get("section") != kSectionSolverSpeed) continue;
     const std::string id = r.Get("case_id");
-    const bool search = r.Get("solver_path") == "search";
-    const std::string suffix = search ? "-search" : "-cbc";
+    const std::string path = r.Get("solver_path");
+    const std::string suffix =
+        path == "search" ? "-search" : (path == "search_previous" ? "-previous" : "-cbc");
     const bool tagged = id.size() > suffix.size() &&
                         id.compare(id.size() - suffix.size(), suffix.size(), suffix) == 0;
     const std::string base = tagged ? id.substr(0, id.size() - suffix.size()) : id;
     auto [it, fresh] = at.emplace(base, out.size());
-    if (fresh) out.push_back({base, {}, {}});
-    (search ? out[it->second].search : out[it->second].cbc).push_back(&r);
+    if (fresh) out.push_back({base, {}, {}, {}});
+    Pair& pair = out[it->second];
+    (path == "search" ? pair.search : (path == "search_previous" ? pair.previous : pair.cbc))
+        .push_back(&r);
   }
   return out;
 }
@@ -51,20 +55,24 @@ double TimeToGap(const Row& r, double gap) {
 }  // namespace
 
 void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
-  md << "## 8. Solver speed: the search against CBC on the whole MILP\n\n";
+  md << "## 8. Solver speed: the search against the previous release and CBC alone\n\n";
   const std::vector<Pair> pairs = Pairs(rows);
   if (pairs.empty()) {
     md << "Not run.\n\n";
     return;
   }
-  md << "Each case is solved by both paths in the same run, one after the other, so machine "
-        "load acts on both: `search` is what `thrustsched solve` does (interior-point LP bound "
-        "from safe duals, MILPs restricted to the slots the relaxation uses, reduced-cost "
-        "fixing, CBC on the whole MILP only when needed; `transcription/search.h`), `cbc` is "
-        "the first release's path (`--no-search`). Medians over the repeats; \"not reached\" "
-        "counts as infinite; the ratio is first release / this release (> 1: faster now).\n\n";
-  MdTable t({"case", "measure", "target (s)", "this release", "first release", "ratio",
-             "verdict (this release)", "objective (this / first)", "final gap (this / first)"});
+  md << "Each case is solved by every path in the same run, one after the other, so machine "
+        "load acts on all: `search` is what `thrustsched solve` does (interior-point LP bound "
+        "from safe duals, MILPs restricted to the slots the relaxation uses and solved by row "
+        "generation over their dense window rows, local improvement over wider nets, "
+        "reduced-cost fixing, CBC on the whole MILP only when needed; "
+        "`transcription/search.h`), `previous` is the search as the previous release ran it "
+        "(restricted MILPs solved whole, no improvement step), `cbc` is the first release's "
+        "path (`--no-search`). Medians over the repeats; \"not reached\" counts as infinite; "
+        "the ratios are the other path's time / this release's (> 1: faster now).\n\n";
+  MdTable t({"case", "measure", "target (s)", "this release", "previous release", "ratio",
+             "first release", "ratio", "verdict (this release)",
+             "objective (this / previous / first)", "final gap (this / previous / first)"});
   for (const Pair& p : pairs) {
     if (p.search.empty()) continue;
     const Row& spec = *p.search.front();
@@ -86,22 +94,30 @@ void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
     }
     for (const Measure& m : measures) {
       auto value = [&](const std::vector<const Row*>& arm) {
+        if (arm.empty()) return static_cast<double>(NAN);
         if (!m.column.empty()) return MedianCol(arm, m.column, true);
         std::vector<double> v;
         for (const Row* r : arm) v.push_back(TimeToGap(*r, spec.Num("target_gap")));
         return MedianOf(v, true);
       };
-      const double now = value(p.search), before = p.cbc.empty() ? NAN : value(p.cbc);
+      const double now = value(p.search);
       const double limit = spec.Num(m.target_column);
-      std::string ratio = "-";
-      if (now > 0.0 && std::isfinite(now) && !std::isnan(before)) {
-        ratio = std::isinf(before) ? "> " + G(spec.Num("time_limit_s") / now, 3) + "x"
-                                   : G(before / now, 3) + "x";
-      }
-      t.Add({p.id, m.name, G(limit, 3), Sec(now), Sec(before), ratio, Verdict(now, limit),
-             G(MedianCol(p.search, "objective", false), 8) + " / " +
-                 G(MedianCol(p.cbc, "objective", false), 8),
-             Pct(MedianCol(p.search, "gap", false)) + " / " + Pct(MedianCol(p.cbc, "gap", false))});
+      auto ratio = [&](double before) {
+        if (!(now > 0.0) || !std::isfinite(now) || std::isnan(before)) return std::string("-");
+        return std::isinf(before) ? "> " + G(spec.Num("time_limit_s") / now, 3) + "x"
+                                  : G(before / now, 3) + "x";
+      };
+      auto three = [&](const std::string& col, bool pct) {
+        std::string out;
+        for (const auto* arm : {&p.search, &p.previous, &p.cbc}) {
+          const double v = arm->empty() ? NAN : MedianCol(*arm, col, false);
+          out += (out.empty() ? "" : " / ") + (pct ? Pct(v) : G(v, 8));
+        }
+        return out;
+      };
+      const double previous = value(p.previous), first = value(p.cbc);
+      t.Add({p.id, m.name, G(limit, 3), Sec(now), Sec(previous), ratio(previous), Sec(first),
+             ratio(first), Verdict(now, limit), three("objective", false), three("gap", true)});
     }
   }
   md << t.Str() << "\n";

@@ -233,11 +233,15 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
     trace.push_back({pr.wall_seconds, pr.objective, pr.best_bound});
   };
   milp::SolveResult sr;
-  r.Set("solver_path", spec.search ? "search" : "cbc");
+  r.Set("solver_path", spec.search ? (spec.search_previous ? "search_previous" : "search") : "cbc");
   if (spec.search) {
     transcription::SearchReport report;
-    sr = transcription::SearchSchedule(*milp, *solver, so, transcription::SearchOptions{}, {},
-                                       &report);
+    transcription::SearchOptions search;
+    if (spec.search_previous) {
+      search.lazy_rows = false;
+      search.improvement_rounds = 0;
+    }
+    sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;
     r.Set("search_steps", steps);

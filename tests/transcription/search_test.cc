@@ -3,8 +3,9 @@
 //  - the published optima of the thesis Table 4.1 (whole numbers of 5-min
 //    slots) and CBC alone on the whole MILP (search disabled, gap 1e-9);
 //  - its LP bound never above a proven optimum;
-//  - the restricted MILP (BuildOptions::free_slots, condensed) against the
-//    full sparse MILP with the same slots forbidden by column bounds;
+//  - the restricted MILP (BuildOptions::free_slots, condensed), solved whole
+//    and by row generation, against the full sparse MILP with the same slots
+//    forbidden by column bounds;
 //  - determinism, a given start kept, an interrupt honoured.
 // Every solve has a node limit or is small enough that CBC needs a handful of
 // nodes; none depends on the wall clock.
@@ -19,6 +20,7 @@
 
 #include "dynamics/discretisation.h"
 #include "milp/cbc_solver.h"
+#include "milp/lazy_rows.h"
 #include "milp/lp_data.h"
 #include "tests/transcription/thesis_cases.h"
 #include "transcription/search.h"
@@ -80,6 +82,8 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
     o.milp = Exact();
     const ScheduleResult a = SolveSchedule(p, *solver, o);
     const ScheduleResult b = SolveSchedule(p, *solver, o);
+    o.search.lazy_rows = false;
+    const ScheduleResult whole_rows = SolveSchedule(p, *solver, o);
     o.search.enabled = false;
     const ScheduleResult ref = SolveSchedule(p, *solver, o);
     ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
@@ -88,6 +92,7 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
         << a.solve.detail;
     EXPECT_LE(a.search.lp_bound, ref.solve.objective + 1e-9);
     EXPECT_EQ(a.solve.objective, b.solve.objective);
+    EXPECT_NEAR(whole_rows.solve.objective, ref.solve.objective, 1e-9 * ref.solve.objective);
     EXPECT_EQ(a.schedule.pattern, b.schedule.pattern);
     EXPECT_EQ(a.search.steps.size(), b.search.steps.size());
     EXPECT_TRUE(a.check.operational_ok) << a.check.Summary();
@@ -127,9 +132,20 @@ TEST(FreeSlots, RestrictedCondensedMilpEqualsTheFullMilpWithSlotsForbidden) {
     EXPECT_LT(small.num_cols(), full.lp().num_cols() / 2);
     const milp::SolveResult a = solver->Solve(forbidden, Exact());
     const milp::SolveResult b = solver->Solve(small, Exact());
+    // And by row generation over its dense window rows (milp/lazy_rows.h).
+    milp::LazyRowOptions lazy;
+    lazy.dense_row_min_nonzeros = 8;
+    milp::LazyRowReport lazy_report;
+    const milp::SolveResult c =
+        milp::SolveWithLazyRows(*solver, small, Exact(), lazy, &lazy_report);
     ASSERT_EQ(a.status, milp::SolveStatus::kOptimal) << trial;
     ASSERT_EQ(b.status, milp::SolveStatus::kOptimal) << trial;
+    ASSERT_EQ(c.status, milp::SolveStatus::kOptimal) << trial << " " << c.detail;
     EXPECT_NEAR(a.objective, b.objective, 1e-7 * std::max(1.0, a.objective)) << trial;
+    EXPECT_NEAR(a.objective, c.objective, 1e-7 * std::max(1.0, a.objective)) << trial;
+    EXPECT_TRUE(lazy_report.used) << c.detail;
+    EXPECT_LT(lazy_report.final_rows, small.num_rows()) << c.detail;
+    EXPECT_LE(small.MaxViolation(c.x), 1e-6);
     // The restricted optimum fires only free slots.
     for (size_t k = 0; k < kept.size(); ++k) {
       EXPECT_LE(restricted.lp().col_lower[kept[k]], restricted.lp().col_upper[kept[k]]);
@@ -189,6 +205,10 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   s.neighbourhood = -1;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("neighbourhood"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.improvement_rounds = -2;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("improvement_rounds must be >= 0, got -2"), std::string::npos) << error;
 }
 
 }  // namespace

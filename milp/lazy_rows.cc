@@ -1,0 +1,262 @@
+#include "milp/lazy_rows.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/format.h"
+
+namespace thrustsched::milp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using SparseCol = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+double Scale(double bound) { return std::max(1.0, std::abs(bound)); }
+
+// How far the activity is beyond the row's bounds (<= 0: satisfied), and
+// its slack to the nearer finite bound (>= 0 when satisfied).
+double Violation(double activity, double lower, double upper) {
+  double v = -std::numeric_limits<double>::infinity();
+  if (std::isfinite(lower)) v = std::max(v, (lower - activity) / Scale(lower));
+  if (std::isfinite(upper)) v = std::max(v, (activity - upper) / Scale(upper));
+  return v;
+}
+
+class LazySolve {
+ public:
+  LazySolve(const Solver& solver, const LpData& lp, const SolveOptions& options,
+            const LazyRowOptions& lazy, LazyRowReport* report)
+      : solver_(solver),
+        lp_(lp),
+        options_(options),
+        lazy_(lazy),
+        report_(report),
+        start_(Clock::now()) {}
+
+  SolveResult Run() {
+    std::vector<int> nonzeros(static_cast<size_t>(lp_.num_rows()), 0);
+    for (int j = 0; j < lp_.num_cols(); ++j) {
+      for (SparseCol::InnerIterator it(lp_.a_matrix, j); it; ++it) ++nonzeros[it.row()];
+    }
+    in_.assign(static_cast<size_t>(lp_.num_rows()), 0);
+    int dense = 0;
+    long long dense_nonzeros = 0;
+    for (int i = 0; i < lp_.num_rows(); ++i) {
+      const int count = nonzeros[static_cast<size_t>(i)];
+      const bool is_dense = count >= lazy_.dense_row_min_nonzeros;
+      in_[static_cast<size_t>(i)] = is_dense ? 0 : 1;
+      dense += is_dense ? 1 : 0;
+      dense_nonzeros += is_dense ? count : 0;
+    }
+    report_->dense_rows = dense;
+    if (static_cast<double>(dense_nonzeros) < lazy_.min_dense_share * lp_.num_nonzeros()) {
+      return Whole("few nonzeros in dense rows");
+    }
+    if (!AddRowsActiveAtTheLpOptimum()) return Whole(detail_);
+    report_->used = true;
+    report_->initial_rows = Count();
+    double bound = -std::numeric_limits<double>::infinity() * Sign();
+    long long nodes = 0;
+    for (int round = 0; round < lazy_.max_rounds; ++round) {
+      SolveOptions o = options_;
+      o.time_limit_s = std::max(0.0, Remaining());
+      const LpData subset = SelectRows(lp_, Rows());
+      SolveResult s = solver_.Solve(subset, o);
+      ++report_->rounds;
+      report_->final_rows = static_cast<int>(subset.num_rows());
+      nodes += s.nodes;
+      if (std::isfinite(s.best_bound) && Better(s.best_bound, bound)) bound = s.best_bound;
+      s.nodes = nodes;
+      s.wall_seconds = Elapsed();
+      if (s.status == SolveStatus::kUnbounded) return Whole("a subset is unbounded");
+      if (!s.has_solution()) return Finish(std::move(s), "");
+      const int added = AddBrokenRows(s.x);
+      if (added == 0) {
+        s.best_bound = bound;
+        s.gap = RelativeGap(s.objective, s.best_bound);
+        return Finish(std::move(s), "");
+      }
+      if (Interrupted() || Remaining() <= 0.0) {
+        // The subset's solution breaks the model: no solution, only a bound.
+        SolveResult r;
+        r.status = SolveStatus::kNoSolutionFound;
+        r.solver_version = s.solver_version;
+        r.nodes = nodes;
+        r.best_bound = bound;
+        r.wall_seconds = Elapsed();
+        return Finish(std::move(r), Interrupted() ? "interrupted" : "time limit");
+      }
+    }
+    report_->fell_back = true;
+    return Whole("still breaking rows after " + std::to_string(lazy_.max_rounds) + " rounds");
+  }
+
+ private:
+  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  double Remaining() const { return options_.time_limit_s - Elapsed(); }
+  bool Interrupted() const {
+    return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
+  }
+  double Sign() const { return lp_.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0; }
+  bool Better(double bound, double than) const { return Sign() * bound > Sign() * than; }
+  int Count() const { return static_cast<int>(std::count(in_.begin(), in_.end(), 1)); }
+  std::vector<int> Rows() const {
+    std::vector<int> rows;
+    for (int i = 0; i < lp_.num_rows(); ++i) {
+      if (in_[static_cast<size_t>(i)]) rows.push_back(i);
+    }
+    return rows;
+  }
+
+  // The LP relaxation by dual simplex; its binding dense rows join the
+  // subset. False (detail_ set) when it did not end optimal.
+  bool AddRowsActiveAtTheLpOptimum() {
+    SolveOptions o = options_;
+    o.time_limit_s = std::max(0.0, Remaining());
+    o.lp_algorithm = LpAlgorithm::kDual;
+    const LpRelaxationResult r = solver_.SolveLpRelaxation(lp_, o);
+    if (r.status != SolveStatus::kOptimal) {
+      detail_ = "LP relaxation " + std::string(ToString(r.status));
+      return false;
+    }
+    const Eigen::VectorXd activity = lp_.a_matrix * r.x;
+    for (int i = 0; i < lp_.num_rows(); ++i) {
+      if (in_[static_cast<size_t>(i)]) continue;
+      const double v = Violation(activity[i], lp_.row_lower[i], lp_.row_upper[i]);
+      if (v >= -lazy_.active_tolerance || std::abs(r.row_duals[i]) > 0.0) {
+        in_[static_cast<size_t>(i)] = 1;
+      }
+    }
+    return true;
+  }
+
+  int AddBrokenRows(const Eigen::VectorXd& x) {
+    const Eigen::VectorXd activity = lp_.a_matrix * x;
+    int added = 0;
+    for (int i = 0; i < lp_.num_rows(); ++i) {
+      if (in_[static_cast<size_t>(i)]) continue;
+      if (Violation(activity[i], lp_.row_lower[i], lp_.row_upper[i]) > lazy_.violation_tolerance) {
+        in_[static_cast<size_t>(i)] = 1;
+        ++added;
+      }
+    }
+    return added;
+  }
+
+  SolveResult Whole(const std::string& why) {
+    SolveOptions o = options_;
+    o.time_limit_s = std::max(0.0, Remaining());
+    SolveResult s = solver_.Solve(lp_, o);
+    s.wall_seconds = Elapsed();
+    return Finish(std::move(s), why.empty() ? "" : "whole model (" + why + ")");
+  }
+
+  SolveResult Finish(SolveResult s, const std::string& note) {
+    std::string what;
+    if (report_->used) {
+      what = "lazy rows: " + std::to_string(report_->initial_rows) + " -> " +
+             std::to_string(report_->final_rows) + " of " + std::to_string(lp_.num_rows()) +
+             " rows in " + std::to_string(report_->rounds) + " solve(s)";
+    }
+    for (const std::string& part : {note, s.detail}) {
+      if (part.empty()) continue;
+      what += (what.empty() ? "" : "; ") + part;
+    }
+    s.detail = what;
+    return s;
+  }
+
+  const Solver& solver_;
+  const LpData& lp_;
+  const SolveOptions& options_;
+  const LazyRowOptions& lazy_;
+  LazyRowReport* report_;
+  Clock::time_point start_;
+  std::vector<char> in_;
+  std::string detail_;
+};
+
+}  // namespace
+
+bool LazyRowOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& m) {
+    if (error != nullptr) *error = "LazyRowOptions: " + m;
+    return false;
+  };
+  if (dense_row_min_nonzeros < 1) {
+    return fail("dense_row_min_nonzeros must be >= 1, got " +
+                std::to_string(dense_row_min_nonzeros));
+  }
+  if (!(min_dense_share >= 0.0 && min_dense_share <= 1.0)) {
+    return fail("min_dense_share must be in [0, 1], got " + common::FormatG(min_dense_share, 6));
+  }
+  if (!(active_tolerance >= 0.0 && std::isfinite(active_tolerance))) {
+    return fail("active_tolerance must be finite and >= 0, got " +
+                common::FormatG(active_tolerance, 6));
+  }
+  if (!(violation_tolerance >= 0.0 && std::isfinite(violation_tolerance))) {
+    return fail("violation_tolerance must be finite and >= 0, got " +
+                common::FormatG(violation_tolerance, 6));
+  }
+  if (max_rounds < 1) return fail("max_rounds must be >= 1, got " + std::to_string(max_rounds));
+  return true;
+}
+
+LpData SelectRows(const LpData& lp, const std::vector<int>& rows) {
+  std::vector<int> position(static_cast<size_t>(lp.num_rows()), -1);
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const int i = rows[k];
+    if (i < 0 || i >= lp.num_rows() || (k > 0 && rows[k - 1] >= i)) {
+      throw std::invalid_argument("SelectRows: rows must be ascending indices below " +
+                                  std::to_string(lp.num_rows()));
+    }
+    position[static_cast<size_t>(i)] = static_cast<int>(k);
+  }
+  LpData out;
+  out.name = lp.name;
+  out.sense = lp.sense;
+  out.col_cost = lp.col_cost;
+  out.objective_offset = lp.objective_offset;
+  out.col_lower = lp.col_lower;
+  out.col_upper = lp.col_upper;
+  out.col_type = lp.col_type;
+  out.col_names = lp.col_names;
+  const int m = static_cast<int>(rows.size());
+  out.row_lower.resize(m);
+  out.row_upper.resize(m);
+  for (int k = 0; k < m; ++k) {
+    out.row_lower[k] = lp.row_lower[rows[static_cast<size_t>(k)]];
+    out.row_upper[k] = lp.row_upper[rows[static_cast<size_t>(k)]];
+    if (!lp.row_names.empty()) out.row_names.push_back(lp.row_names[rows[static_cast<size_t>(k)]]);
+  }
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    for (SparseCol::InnerIterator it(lp.a_matrix, j); it; ++it) {
+      const int k = position[static_cast<size_t>(it.row())];
+      if (k >= 0) t.emplace_back(k, j, it.value());
+    }
+  }
+  out.a_matrix.resize(m, lp.num_cols());
+  out.a_matrix.setFromTriplets(t.begin(), t.end());
+  out.a_matrix.makeCompressed();
+  return out;
+}
+
+SolveResult SolveWithLazyRows(const Solver& solver, const LpData& lp, const SolveOptions& options,
+                              const LazyRowOptions& lazy, LazyRowReport* report) {
+  std::string error;
+  if (!lazy.IsValid(&error)) throw std::invalid_argument(error);
+  if (!lp.IsValid(&error)) throw std::invalid_argument("SolveWithLazyRows: " + error);
+  if (!options.IsValid(&error)) throw std::invalid_argument("SolveWithLazyRows: " + error);
+  LazyRowReport local;
+  LazyRowReport* r = report != nullptr ? report : &local;
+  *r = LazyRowReport{};
+  return LazySolve(solver, lp, options, lazy, r).Run();
+}
+
+}  // namespace thrustsched::milp
