@@ -65,6 +65,19 @@ class LazySolve {
     for (int round = 0; round < lazy_.max_rounds; ++round) {
       SolveOptions o = options_;
       o.time_limit_s = std::max(0.0, Remaining());
+      // A subset's incumbent may break a left-out row: not the model's, so
+      // not reported as one (the caller would count on a schedule it cannot
+      // have); a solution that keeps every row is reported below.
+      if (options_.progress) {
+        const double offset = Elapsed();
+        o.progress = [this, offset](const SolveProgress& sub) {
+          SolveProgress p = sub;
+          p.wall_seconds += offset;
+          p.new_incumbent = false;
+          p.objective = p.gap = std::numeric_limits<double>::quiet_NaN();
+          options_.progress(p);
+        };
+      }
       const LpData subset = SelectRows(lp_, Rows());
       SolveResult s = solver_.Solve(subset, o);
       ++report_->rounds;
@@ -79,6 +92,7 @@ class LazySolve {
       if (added == 0) {
         s.best_bound = bound;
         s.gap = RelativeGap(s.objective, s.best_bound);
+        ReportSolution(s);
         return Finish(std::move(s), "");
       }
       if (Interrupted() || Remaining() <= 0.0) {
@@ -111,6 +125,18 @@ class LazySolve {
       if (in_[static_cast<size_t>(i)]) rows.push_back(i);
     }
     return rows;
+  }
+
+  void ReportSolution(const SolveResult& s) const {
+    if (!options_.progress) return;
+    SolveProgress p;
+    p.wall_seconds = Elapsed();
+    p.objective = s.objective;
+    p.best_bound = s.best_bound;
+    p.gap = s.gap;
+    p.nodes = s.nodes;
+    p.new_incumbent = true;
+    options_.progress(p);
   }
 
   // The LP relaxation by dual simplex; its binding dense rows join the

@@ -61,7 +61,9 @@ LpData SelectRows(const LpData& lp, const std::vector<int>& rows);
 /// Solves `lp` as solver.Solve(lp, options) would, by row generation over its
 /// dense rows. options.time_limit_s covers every solve; options.max_nodes
 /// caps each one. options.initial_solution is handed to each subset solve
-/// (it satisfies every subset if it satisfies the model).
+/// (it satisfies every subset if it satisfies the model). options.progress
+/// hears the subset solves without their incumbents (which may break a
+/// left-out row), then once with new_incumbent for the model's solution.
 /// @throws std::invalid_argument as Solver::Solve, or for invalid `lazy`.
 SolveResult SolveWithLazyRows(const Solver& solver, const LpData& lp, const SolveOptions& options,
                               const LazyRowOptions& lazy = {}, LazyRowReport* report = nullptr);

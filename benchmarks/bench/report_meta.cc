@@ -69,7 +69,8 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
         "[4. Scaling](#4-scaling) · [5. Operational constraints](#5-operational-constraints) · "
         "[6. One year](#6-one-year-of-station-keeping-thrustsched-simulate) · "
         "[7. Collision avoidance](#7-collision-avoidance-serra-2015-ch-4) · "
-        "[8. Solver speed](#8-solver-speed-the-search-against-cbc-on-the-whole-milp) · "
+        "[8. Solver speed](#8-solver-speed-the-search-against-the-previous-release-and-cbc-alone) "
+        "· "
         "[Method and definitions](#method-and-definitions) · "
         "[Not run or skipped](#not-run-or-skipped) · [Columns](#columns-of-resultscsv)\n\n";
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -61,8 +62,17 @@ TEST(SolveWithLazyRows, FindsTheEnumeratedOptimumWithRowsLeftOut) {
     const double expected = Enumerate(lp);
     ASSERT_FALSE(std::isnan(expected));
     LazyRowReport report;
-    const SolveResult r = SolveWithLazyRows(*solver, lp, Exact(), SmallDense(), &report);
+    // Progress names no incumbent of a subset (it may break a left-out row):
+    // one report, of the model's solution.
+    std::vector<double> reported;
+    SolveOptions o = Exact();
+    o.progress = [&reported](const SolveProgress& p) {
+      if (p.new_incumbent) reported.push_back(p.objective);
+    };
+    const SolveResult r = SolveWithLazyRows(*solver, lp, o, SmallDense(), &report);
     ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+    ASSERT_EQ(reported.size(), 1u);
+    EXPECT_EQ(reported[0], r.objective);
     EXPECT_NEAR(r.objective, expected, 1e-6);
     EXPECT_NEAR(r.best_bound, expected, 1e-6);
     EXPECT_LE(lp.MaxViolation(r.x), 1e-6);
