@@ -17,8 +17,10 @@ import dataclasses
 import json
 import os
 import shutil
+import signal
 import sys
 import tempfile
+import threading
 import time
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional
@@ -97,6 +99,18 @@ class _Progress:
               f"elapsed {elapsed:.0f} s, ETA {eta:.0f} s ({label})", file=sys.stderr, flush=True)
 
 
+# Ctrl-C seen by this process. Python raises KeyboardInterrupt wherever the
+# main thread is when the signal lands; inside a finaliser or a logging lock
+# release ("Exception ignored in ...") it is printed and dropped, and the
+# campaign would run on. The flag stops it at the next task boundary anyway.
+_SIGINT_SEEN = threading.Event()
+
+
+def _on_sigint(signum: int, frame: Any) -> None:
+    _SIGINT_SEEN.set()
+    raise KeyboardInterrupt
+
+
 def _record(outcome: CampaignOutcome, task: Task, row: Optional[Dict[str, Any]], error: str,
             progress: _Progress) -> None:
     if row is None:
@@ -108,6 +122,8 @@ def _record(outcome: CampaignOutcome, task: Task, row: Optional[Dict[str, Any]],
         progress.finished(True, f"task {task.index}: {row['status']}")
     outcome.rows.append(row)
     write_results_csv(os.path.join(outcome.out, "results.csv"), outcome.spec.parameters, outcome.rows)
+    if _SIGINT_SEEN.is_set():
+        raise KeyboardInterrupt
 
 
 def _run_serial(outcome: CampaignOutcome, pending: List[Task], progress: _Progress, faults: Dict[str, str]) -> None:
@@ -182,6 +198,9 @@ def run_campaign(spec: CampaignSpec, out: str, *, client: Any = None, workers: O
     if progress and outcome.skipped:
         print(f"sweep: {outcome.skipped} of {len(tasks)} tasks finished before, {len(pending)} to run",
               file=sys.stderr, flush=True)
+    _SIGINT_SEEN.clear()
+    main_thread = threading.current_thread() is threading.main_thread()
+    previous_handler = signal.signal(signal.SIGINT, _on_sigint) if main_thread else None
     try:
         if not pending:
             pass
@@ -198,6 +217,9 @@ def run_campaign(spec: CampaignSpec, out: str, *, client: Any = None, workers: O
         if progress:
             print(f"sweep: interrupted; {len(outcome.rows)} of {len(tasks)} tasks are on disk, "
                   f"--resume runs the rest", file=sys.stderr, flush=True)
+    finally:
+        if main_thread and previous_handler is not None:
+            signal.signal(signal.SIGINT, previous_handler)
     outcome.wall_s = time.monotonic() - start
     write_report(outcome)
     return outcome

@@ -207,7 +207,11 @@ def test_ctrl_c_exits_four_within_seconds_and_resume_completes(serial_run, tmp_p
                              "--workers", "1"], cwd=SOURCE_DIR, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             text=True, start_new_session=True)
     deadline = time.monotonic() + 300
-    while not (out / "rows").exists() or not os.listdir(out / "rows"):
+
+    def finished_rows():  # ID.json; not a row being written (ID.json.tmpPID)
+        return [n for n in os.listdir(out / "rows") if n.endswith(".json")] if (out / "rows").exists() else []
+
+    while not finished_rows():
         assert proc.poll() is None and time.monotonic() < deadline
         time.sleep(0.05)
     os.killpg(proc.pid, signal.SIGINT)  # as a terminal's Ctrl-C: the sweep and its task's process
@@ -217,6 +221,7 @@ def test_ctrl_c_exits_four_within_seconds_and_resume_completes(serial_run, tmp_p
     assert proc.returncode == 4, stderr
     assert "--resume runs the rest" in stderr
     finished = len(os.listdir(out / "rows"))  # ID.json each, nothing half-written
+    assert finished == len(finished_rows())
     assert 1 <= finished < 6, (os.listdir(out / "rows"), stderr)
     r = sweep(CAMPAIGN, "--out", out, "--resume", "--workers", "1")
     assert r.returncode == 0, r.stderr
