@@ -1,7 +1,6 @@
 #include "milp/lazy_rows.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -9,11 +8,11 @@
 #include <vector>
 
 #include "common/format.h"
+#include "milp/internal/solve_clock.h"
 
 namespace thrustsched::milp {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using SparseCol = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 double Scale(double bound) { return std::max(1.0, std::abs(bound)); }
@@ -36,7 +35,7 @@ class LazySolve {
         options_(options),
         lazy_(lazy),
         report_(report),
-        start_(Clock::now()) {}
+        clock_(options.time_limit_s, options.interrupt) {}
 
   SolveResult Run() {
     std::vector<int> nonzeros(static_cast<size_t>(lp_.num_rows()), 0);
@@ -111,11 +110,9 @@ class LazySolve {
   }
 
  private:
-  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  double Remaining() const { return options_.time_limit_s - Elapsed(); }
-  bool Interrupted() const {
-    return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
-  }
+  double Elapsed() const { return clock_.Elapsed(); }
+  double Remaining() const { return clock_.Remaining(); }
+  bool Interrupted() const { return clock_.Interrupted(); }
   double Sign() const { return lp_.sense == ObjectiveSense::kMaximize ? -1.0 : 1.0; }
   bool Better(double bound, double than) const { return Sign() * bound > Sign() * than; }
   int Count() const { return static_cast<int>(std::count(in_.begin(), in_.end(), 1)); }
@@ -202,7 +199,7 @@ class LazySolve {
   const SolveOptions& options_;
   const LazyRowOptions& lazy_;
   LazyRowReport* report_;
-  Clock::time_point start_;
+  internal::SolveClock clock_;
   std::vector<char> in_;
   std::string detail_;
 };
