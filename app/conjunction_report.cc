@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "app/outputs.h"
@@ -17,6 +18,13 @@ std::string G(double v, int digits = 4) {
   if (std::isnan(v)) return "n/a";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   return FormatG(v, digits);
+}
+
+// The avoidance's extra cost over the plan without the conjunction (NaN if
+// either is missing).
+double ExtraCost(const transcription::ConjunctionSolve& cs) {
+  return cs.result.has_schedule() ? cs.result.solve.objective - cs.without_objective
+                                  : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -66,6 +74,17 @@ void PrintConjunctionCheck(std::ostream& os, const transcription::ConjunctionChe
 }
 
 void PrintConjunctionSolve(std::ostream& os, const transcription::ConjunctionSolve& cs) {
+  if (!std::isnan(cs.without_objective)) {
+    const double extra = ExtraCost(cs);
+    os << "without       " << G(cs.without_objective, 8)
+       << " (the plan without the conjunction, bound " << G(cs.lower_bound, 8) << ")";
+    if (!std::isnan(extra)) {
+      os << "; extra cost of the avoidance " << G(extra, 4);
+      if (cs.without_objective > 0.0)
+        os << " (" << G(100.0 * extra / cs.without_objective, 3) << " %)";
+    }
+    os << "\n";
+  }
   if (!std::isnan(cs.start_objective)) {
     os << "start         " << G(cs.start_objective, 6) << " (fixed faces: " << cs.start_label
        << "), " << G(cs.start_seconds, 3) << " s\n";
@@ -97,7 +116,10 @@ nlohmann::json ConjunctionJson(const std::optional<transcription::KeepOutStats>&
     j["solve"] = {{"start_objective", FiniteOrNull(cs->start_objective)},
                   {"start_label", cs->start_label},
                   {"start_seconds", cs->start_seconds},
-                  {"rounds", rounds}};
+                  {"rounds", rounds},
+                  {"without_conjunction_objective", FiniteOrNull(cs->without_objective)},
+                  {"lower_bound", FiniteOrNull(cs->lower_bound)},
+                  {"extra_cost", FiniteOrNull(ExtraCost(*cs))}};
   } else {
     j["solve"] = nullptr;
   }

@@ -181,6 +181,31 @@ GEO_2DAY_START = [-468.075868490414, 3.42304066864388e-05, 8.8677186757361e-05,
 GEO_2DAY_PLAN_AT_TC = ([-2537.3885683, 19032.7025944, -7284.48439884],
                        [-0.0597000034064, 0.28544697203, 0.778966364793])
 GEO_TC = 302400
+# The same encounter time in the whole week: the position and velocity at t_c
+# of the optimal plan of geo_week_anzel4 (trajectory.csv of `thrustsched solve
+# data/scenarios/geo_week_anzel4.json`, mapped by HcwCoordinates).
+GEO_WEEK_PLAN_AT_TC = ([-758.795258549, 13169.8082635, -6054.64559826],
+                       [-0.0211883050959, -0.0709693881115, 0.62460783836])
+# Offsets of the secondary from the plan at t_c, and its uncertainty.
+GEO_MISS_M, GEO_REL_VELOCITY_M_S = [3.0, -4.0, 5.0], [0.02, 0.2, -0.03]
+GEO_SECONDARY_COVARIANCE = [[1e4, 0, 0, 0, 0, 0], [0, 1e6, 0, 0, 0, 0], [0, 0, 1e4, 0, 0, 0],
+                            [0, 0, 0, 4e-6, 0, 0], [0, 0, 0, 0, 2.5e-5, 0],
+                            [0, 0, 0, 0, 0, 4e-6]]
+
+
+def geo_encounter(plan_at_tc, cost_budget):
+    pos, vel = plan_at_tc
+    return {
+        "secondary": {"time_s": GEO_TC,
+                      "position_m": [round(p + d, 3) for p, d in zip(pos, GEO_MISS_M)],
+                      "velocity_m_s": [round(v + d, 6) for v, d in zip(vel, GEO_REL_VELOCITY_M_S)]},
+        "covariance": GEO_SECONDARY_COVARIANCE,
+        "radius_m": 15,
+        "risk_threshold": 1e-4,
+        "checks": {"count": 143, "start_s": GEO_TC - 21600, "end_s": GEO_TC + 21600},
+        "cost_budget": cost_budget,
+        "verification": {"monte_carlo_samples": 100000, "seed": 1},
+    }
 
 
 def geo_2day(name, description, conjunction=None, gap=1e-4):
@@ -200,26 +225,25 @@ def geo_conjunction_cases():
               "rules, +-0.05 deg window, end-of-horizon station-keeping set. ")
     write("geo_2day_anzel4", geo_2day(
         "geo_2day_anzel4", common + "Without conjunction: the reference of geo_2day_anzel4_conjunction."))
-    pos, vel = GEO_2DAY_PLAN_AT_TC
-    offset_m, rel_m_s = [3.0, -4.0, 5.0], [0.02, 0.2, -0.03]
     write("geo_2day_anzel4_conjunction", geo_2day(
         "geo_2day_anzel4_conjunction",
         common + "A secondary passes 7 m from the optimal plan of geo_2day_anzel4 at t = 302400 s "
         "(relative velocity 0.2 m/s along-track), with 100 m radial and normal and 1 km "
         "along-track position uncertainty; eps = 1e-4 over +-6 h around the encounter (143 "
         "checks on the grid nodes). The plan must keep the box, the rules and the risk.",
-        conjunction={
-            "secondary": {"time_s": GEO_TC,
-                          "position_m": [round(p + d, 3) for p, d in zip(pos, offset_m)],
-                          "velocity_m_s": [round(v + d, 6) for v, d in zip(vel, rel_m_s)]},
-            "covariance": [[1e4, 0, 0, 0, 0, 0], [0, 1e6, 0, 0, 0, 0], [0, 0, 1e4, 0, 0, 0],
-                           [0, 0, 0, 4e-6, 0, 0], [0, 0, 0, 0, 2.5e-5, 0], [0, 0, 0, 0, 0, 4e-6]],
-            "radius_m": 15,
-            "risk_threshold": 1e-4,
-            "checks": {"count": 143, "start_s": GEO_TC - 21600, "end_s": GEO_TC + 21600},
-            "cost_budget": 2.5,
-            "verification": {"monte_carlo_samples": 100000, "seed": 1},
-        }, gap=0.01))
+        conjunction=geo_encounter(GEO_2DAY_PLAN_AT_TC, 2.5), gap=0.01))
+    week = geo(
+        "geo_week_anzel4_conjunction",
+        "The GEO week of geo_week_anzel4 (118 deg E, epoch 2034-01-01T00:00:00Z, full "
+        "perturbation model, Anzel thrusters, thesis rules, +-0.05 deg window, end-of-week "
+        "station-keeping set) with a secondary that passes 7 m from that week's optimal plan in "
+        "the middle of the week (t = 302400 s, relative velocity 0.2 m/s along-track), with 100 m "
+        "radial and normal and 1 km along-track position uncertainty; eps = 1e-4 over +-6 h "
+        "around the encounter (143 checks on the grid nodes). One MILP keeps the box, the rules "
+        "and the risk; its extra cost is measured against geo_week_anzel4.",
+        {"preset": "anzel4", "theta_deg": 63.64, "alpha_deg": 7.03}, time_limit=900)
+    week["conjunction"] = geo_encounter(GEO_WEEK_PLAN_AT_TC, 3.5)
+    write("geo_week_anzel4_conjunction", week)
 
 
 def serra(name, description, a_m, e, nu0, nuf, z0, vz0, zf, vzf, intervals=1000):

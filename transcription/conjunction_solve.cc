@@ -4,9 +4,14 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <stdexcept>
 
 #include "common/timing.h"
+#include "milp/lp_data.h"
+#include "transcription/search.h"
+#include "transcription/terminal_sets.h"
 
 namespace thrustsched::transcription {
 
@@ -16,6 +21,10 @@ namespace {
 
 using common::Clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// The restricted MILP of a repair: slots within two intervals of the burns.
+constexpr int kRepairNeighbourhood = 2;
+constexpr long long kRepairMaxNodes = 20000;
 
 // At every check with a disjunction: the face the thrust-free path satisfies
 // best if it satisfies one; otherwise `face` if the check has it (any face
@@ -62,38 +71,154 @@ int LeastMissedFace(const KeepOutGroup& g, const Eigen::VectorXd& act, const mil
   return best;
 }
 
-// On-off mode: the plan of the problem without its conjunction, then the
-// same MILP with every disjunction fixed to the face that plan misses least
-// (its station keeping is kept and bent just enough). Each solve gets
-// `share` of the time limit (300 s when unlimited).
+// The plan `x` of another build of the problem as a full start of `m`.
+Eigen::VectorXd StartFor(const ScheduleMilp& m, const Eigen::VectorXd& x) {
+  const int own = m.keep_out()->first_binary_column;
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(m.lp().num_cols());
+  out.head(own) = x.head(own);
+  CompleteKeepOut(m.lp(), *m.keep_out(), &out);
+  return out;
+}
+
+// The slots a repair of `plan` may use: every thruster within
+// `neighbourhood` intervals of the plan's burns, and every slot from half an
+// orbital period before the first check to the last (a burn's radial and
+// normal effects peak a quarter to half a period later).
+Eigen::MatrixXi RepairSlots(const ScheduleMilp& m, const Eigen::VectorXd& plan, int neighbourhood) {
+  const OperationalEncoding& enc = m.encoding();
+  const ScheduleProblem& p = m.problem();
+  const std::vector<double> checks = p.conjunction->CheckTimes(p.grid.front(), p.grid.back());
+  const double half_period_s = M_PI / HcwMeanMotion(*p.model);
+  const double from_s = checks.empty() ? kInf : checks.front() - half_period_s;
+  const double to_s = checks.empty() ? -kInf : checks.back();
+  const int num_thrusters = enc.num_thrusters, n = enc.num_intervals;
+  std::vector<char> near_burn(n, 0);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < num_thrusters; ++i) {
+      if (plan[enc.on[i][j].index()] < 0.5) continue;
+      for (int d = -neighbourhood; d <= neighbourhood; ++d) {
+        if (j + d >= 0 && j + d < n) near_burn[j + d] = 1;
+      }
+    }
+  }
+  Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(num_thrusters, n);
+  for (int j = 0; j < n; ++j) {
+    const bool in_window = p.grid[j + 1] > from_s && p.grid[j] < to_s;
+    if (!near_burn[j] && !in_window) continue;
+    for (int i = 0; i < num_thrusters; ++i) mask(i, j) = 1;
+  }
+  return mask;
+}
+
+// The MILP `m` with every disjunction fixed to the face `plan` misses least
+// (keep-out binaries at 0 for the activities), restricted to `mask` when it
+// has entries (the sparse build of m with those free slots, without its
+// fixed columns). A full column vector of `m`, or empty.
+Eigen::VectorXd SolveFixedFaces(const ScheduleMilp& m, const Eigen::VectorXd& plan,
+                                const Eigen::MatrixXi& mask, const milp::Solver& solver,
+                                const milp::SolveOptions& o, std::string* note) {
+  std::unique_ptr<ScheduleMilp> restricted;
+  const ScheduleMilp* model = &m;
+  if (mask.size() > 0) {
+    BuildOptions b = m.options();
+    b.free_slots = mask;
+    restricted = std::make_unique<ScheduleMilp>(m.problem(), m.discrete(), b);
+    if (!restricted->infeasibility_reasons().empty()) return {};
+    model = restricted.get();
+  }
+  const KeepOutStats& ko = *model->keep_out();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(model->lp().num_cols());
+  x.head(ko.first_binary_column) = plan.head(ko.first_binary_column);
+  const Eigen::VectorXd act = model->lp().a_matrix * x;  // keep-out binaries at 0
+  milp::LpData lp = model->lp();
+  FixFaces(
+      ko, [&](const KeepOutGroup& g) { return LeastMissedFace(g, act, lp); }, &lp);
+  std::vector<int> kept;
+  bool feasible = true;
+  const milp::LpData small = milp::RemoveFixedColumns(lp, &kept, &feasible);
+  if (!feasible) return {};
+  const milp::SolveResult r = solver.Solve(small, o);
+  *note = std::to_string(small.num_cols()) + " columns, " + std::to_string(r.nodes) + " nodes";
+  if (!r.has_solution()) return {};
+  // The plan as an on-off pattern, its states propagated in `m` (exact, where
+  // the solver's columns hold only to its tolerances).
+  Eigen::VectorXd x_model = lp.col_lower;  // the fixed columns' values
+  for (size_t k = 0; k < kept.size(); ++k) x_model[kept[k]] = r.x[static_cast<Eigen::Index>(k)];
+  const OperationalEncoding& enc = model->encoding();
+  Eigen::MatrixXi pattern(enc.num_thrusters, enc.num_intervals);
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    for (int j = 0; j < enc.num_intervals; ++j) pattern(i, j) = x_model[enc.on[i][j].index()] > 0.5;
+  }
+  return m.StartFromPattern(pattern);
+}
+
+// On-off mode: the plan of the problem without its conjunction (the
+// problem-aware search, transcription/search.h), then the same MILP with
+// every disjunction fixed to the face that plan misses least: its station
+// keeping is kept and bent just enough. The bent plan is first looked for
+// over the slots near the plan's burns and the half orbit before the
+// encounter (a node-limited restricted MILP), then over every slot. Each
+// solve gets `share` of the time limit (300 s when unlimited).
 ConjunctionStart RepairedPlanStart(const ScheduleMilp& m, const milp::Solver& solver,
                                    const milp::SolveOptions& base, double share) {
   ConjunctionStart out;
+  const Clock::time_point t0 = Clock::now();
   const double limit = std::isfinite(base.time_limit_s) ? share * base.time_limit_s : 300.0;
   milp::SolveOptions o = base;
   o.initial_solution.reset();
-  o.progress = nullptr;
   o.time_limit_s = limit;
+  // Progress on the caller's clock. The plan without the conjunction is not
+  // a plan of this problem (no incumbent is reported from it), its bound is.
+  double bound = -kInf;
+  const auto forward = [&](bool own_incumbents) -> std::function<void(const milp::SolveProgress&)> {
+    if (!base.progress) return nullptr;
+    const double offset = Since(t0);
+    return [&, offset, own_incumbents](const milp::SolveProgress& sub) {
+      milp::SolveProgress p = sub;
+      p.wall_seconds += offset;
+      if (!own_incumbents) {
+        p.objective = kNaN;
+        p.new_incumbent = false;
+      } else {
+        p.best_bound = bound;
+      }
+      p.gap = std::isfinite(p.objective) ? milp::RelativeGap(p.objective, p.best_bound) : kNaN;
+      base.progress(p);
+    };
+  };
   ScheduleProblem plain = m.problem();
   plain.conjunction.reset();
   const ScheduleMilp without(plain, m.discrete(), m.options());
   o.objective_step = without.objective_step();
-  const milp::SolveResult r0 = solver.Solve(without.lp(), o);
+  o.progress = forward(false);
+  const milp::SolveResult r0 = SearchSchedule(without, solver, o, SearchOptions{}, {});
   if (!r0.has_solution()) return out;
+  bound = r0.best_bound;
+  o.progress = forward(true);
   out.lower_bound = r0.best_bound;
-  const KeepOutStats& ko = *m.keep_out();
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(m.lp().num_cols());
-  x.head(ko.first_binary_column) = r0.x.head(ko.first_binary_column);
-  const Eigen::VectorXd act = m.lp().a_matrix * x;  // keep-out binaries at 0
-  milp::LpData lp = m.lp();
-  FixFaces(
-      ko, [&](const KeepOutGroup& g) { return LeastMissedFace(g, act, lp); }, &lp);
+  out.without_objective = r0.objective;
+  out.without_x = StartFor(m, r0.x);
   o.objective_step = m.objective_step();
-  const milp::SolveResult r = solver.Solve(lp, o);
-  if (!r.has_solution()) return out;
-  out.objective = r.objective;
-  out.x = r.x;
-  out.label = "the plan without the conjunction, repaired at its least-missed faces";
+  const struct {
+    int neighbourhood;  // -1: every slot
+    long long max_nodes;
+  } levels[] = {{kRepairNeighbourhood, kRepairMaxNodes}, {-1, o.max_nodes}};
+  for (const auto& level : levels) {
+    const Eigen::MatrixXi mask =
+        level.neighbourhood < 0 ? Eigen::MatrixXi() : RepairSlots(m, r0.x, level.neighbourhood);
+    milp::SolveOptions lo = o;
+    if (level.max_nodes >= 0) lo.max_nodes = level.max_nodes;
+    std::string note;
+    const Eigen::VectorXd x = SolveFixedFaces(m, r0.x, mask, solver, lo, &note);
+    if (x.size() == 0 || m.lp().MaxViolation(x) > 1e-6) continue;
+    out.objective = m.lp().Objective(x);
+    out.x = x;
+    out.label = "the plan without the conjunction, repaired at its least-missed faces (" +
+                (mask.size() > 0 ? "over " + std::to_string(mask.sum()) + " slots"
+                                 : std::string("over every slot")) +
+                ", " + note + ")";
+    break;
+  }
   return out;
 }
 
@@ -142,15 +267,6 @@ void AddObjectiveFloor(double lower, milp::Model* model) {
   model->AddConstraint(objective, floor, kInf, "keep_out_floor");
 }
 
-// The plan `x` of another build of the problem as a full start of `m`.
-Eigen::VectorXd StartFor(const ScheduleMilp& m, const Eigen::VectorXd& x) {
-  const int own = m.keep_out()->first_binary_column;
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(m.lp().num_cols());
-  out.head(own) = x.head(own);
-  CompleteKeepOut(m.lp(), *m.keep_out(), &out);
-  return out;
-}
-
 // Re-solves the LP of `m` with every integer column fixed at its value in
 // r's solution, and keeps that solution if it violates the model less. CBC
 // can return impulses of ~1e-4 m/s with bound violations near 1e-6 (its
@@ -197,6 +313,12 @@ void DecodeAndCheck(const ScheduleMilp& m, const SolveScheduleOptions& options, 
   r->check_seconds = Since(t0);
 }
 
+bool StartClosesGap(double start, double lower_bound, const milp::SolveOptions& o) {
+  if (!std::isfinite(start) || !std::isfinite(lower_bound)) return false;
+  return start - lower_bound <= o.absolute_gap ||
+         milp::RelativeGap(start, lower_bound) <= o.relative_gap;
+}
+
 }  // namespace
 
 ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver& solver,
@@ -224,6 +346,27 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
       out.start_label = s.label;
     }
     out.lower_bound = s.lower_bound;
+    out.without_objective = s.without_objective;
+    out.without_x = s.without_x;
+  }
+  if (best_x.size() > 0 && StartClosesGap(best, out.lower_bound, options.milp)) {
+    // The start is within the requested gap of the optimum without the
+    // conjunction, a lower bound: no round can do better than the gap asks.
+    ScheduleResult& r = out.result;
+    r.stats = first.stats();
+    r.solve.status = milp::SolveStatus::kOptimal;
+    r.solve.objective = best;
+    r.solve.best_bound = std::min(best, out.lower_bound);
+    r.solve.gap = milp::RelativeGap(best, r.solve.best_bound);
+    r.solve.x = best_x;
+    r.solve.wall_seconds = Since(t0);
+    r.solve.incumbents.push_back({out.start_seconds, best, r.solve.best_bound});
+    r.solve.detail =
+        "the start is within the requested gap of the optimum without the conjunction (a lower "
+        "bound): no budget round needed";
+    r.solve.solver_version = solver.version();
+    DecodeAndCheck(first, options, &r);  // the start's states are propagated, not CBC's
+    return out;
   }
   const ScheduleMilp* current = &first;
   for (int round = 0;; ++round) {

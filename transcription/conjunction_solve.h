@@ -9,10 +9,15 @@
 //     check the face the thrust-free path satisfies best, or one given face
 //     for all checks where no face holds freely), one per face; the cheapest
 //     feasible plan is a MIP start and an upper bound. In on-off mode, the
-//     plan of the problem without its conjunction, then the MILP with every
-//     disjunction fixed to the face that plan misses least (each solve a
+//     plan of the problem without its conjunction (by the problem-aware
+//     search), then the MILP with every disjunction fixed to the face that
+//     plan misses least, first restricted to the slots near its burns and
+//     the half orbit before the checks, then over every slot (each solve a
 //     quarter of the time limit, 300 s without one); the optimum without the
-//     conjunction is then also a lower bound, added as a row to the rounds;
+//     conjunction is then also a lower bound, added as a row to the rounds.
+//     A start within the requested gap of that bound ends the solve (an
+//     avoidance at no extra cost is common: station-keeping optima are
+//     degenerate, and many plans of the same cost pass elsewhere);
 //  2. rounds: the problem is rebuilt with the best known cost as its budget
 //     (big-M and pruning bounded with the terminal constraint too, by small
 //     LPs) and solved from that plan; a round that finds a plan cheaper than
@@ -70,6 +75,12 @@ struct ConjunctionSolve {
   /// The start's lower bound, added to every rebuilt round as the row
   /// "objective >= bound" (valid, and it tightens the LP relaxation).
   double lower_bound = -std::numeric_limits<double>::infinity();
+  /// On-off mode: the plan of the problem without its conjunction (its cost,
+  /// and the plan as a full column vector of the solved model, for
+  /// Decode and CheckConjunction); NaN / empty otherwise. The extra cost of
+  /// the avoidance is result.solve.objective - without_objective.
+  double without_objective = std::numeric_limits<double>::quiet_NaN();
+  Eigen::VectorXd without_x;
 };
 
 /// Step 1 alone, as a full column vector of `milp`: impulsive mode, the
@@ -83,6 +94,10 @@ struct ConjunctionStart {
   /// On-off mode: the best bound of the problem without its conjunction,
   /// also a lower bound with it (a constraint can only raise the optimum).
   double lower_bound = -std::numeric_limits<double>::infinity();
+  /// On-off mode: that problem's plan (cost, and as a full column vector of
+  /// `milp`, keep-out binaries completed); NaN / empty otherwise.
+  double without_objective = std::numeric_limits<double>::quiet_NaN();
+  Eigen::VectorXd without_x;
 };
 ConjunctionStart FixedFaceStart(const ScheduleMilp& milp, const milp::Solver& solver,
                                 const milp::SolveOptions& options);

@@ -463,6 +463,17 @@ void AddCollisionAvoidance(Builder* b, const MatrixOptions& o) {
     c.variant = "risk selection, proven optimum, 1 thread";
     b->Add(c, "1thread");
   }
+  // Avoidance with on-off thrusters: a GEO station-keeping week (and two days
+  // of it) with a conjunction, one MILP; its extra cost over the plan without
+  // the conjunction, both plans verified.
+  for (const char* scenario : {"geo_week_anzel4_conjunction", "geo_2day_anzel4_conjunction"}) {
+    CaseSpec c = b->Make(kSectionCollisionAvoidance, scenario, CaseKind::kConjunction);
+    c.threads = 2;
+    c.time_limit_s = 900;
+    c.relative_gap = 0.01;
+    c.variant = "on-off station keeping with avoidance, 1 % gap, 2 threads";
+    b->Add(c, "2threads");
+  }
 }
 
 const std::vector<std::string>& ComparedSchemes() {

@@ -116,7 +116,13 @@ void WriteColumns(std::ostream& md) {
         "`published`, `published_source`, `ratio` (objective / published), `ext_cbc_*`, "
         "`ext_glpsol_*` and `ext_highs_*` (status, objective, seconds of the external "
         "cross-check; HiGHS also `ext_highs_bound` and `ext_highs_gap`, its mip_dual_bound and "
-        "mip_gap), `wall_s` "
+        "mip_gap), collision avoidance (section 7): `start_objective`, `budget_rounds`, "
+        "`keep_out_binaries`, `max_risk`, `max_risk_unmanoeuvred` (thrust-free path), "
+        "`published_risk_unmanoeuvred`, `mc_samples`, `mc_collisions_linear`, "
+        "`mc_collisions_nonlinear`, `mc_min_distance_m`, `verify_s`, and for on-off cases "
+        "`without_conjunction` (cost of the plan without the conjunction), `extra_cost`, "
+        "`without_max_risk`, `without_mc_collisions_linear`, `without_mc_collisions_nonlinear` "
+        "(that plan verified against the conjunction), `wall_s` "
         "(whole child run), `exit` (child exit code), `note`. Times are wall-clock seconds; "
         "empty cells = not applicable or not reached.\n";
 }

@@ -66,7 +66,8 @@ const std::vector<std::string>& ResultColumns() {
           // Added after the first published results.csv: appended, so that
           // every earlier column keeps its position.
           "ext_highs_status", "ext_highs_objective", "ext_highs_s", "ext_highs_bound",
-          "ext_highs_gap"}) {
+          "ext_highs_gap", "without_conjunction", "extra_cost", "without_max_risk",
+          "without_mc_collisions_linear", "without_mc_collisions_nonlinear"}) {
       c.push_back(name);
     }
     return c;

@@ -102,6 +102,9 @@ TEST(ConjunctionCli, ValidateExportSolveCheck) {
   EXPECT_EQ(c["verification"]["collisions_nonlinear"], 0);
   EXPECT_GT(c["verification"]["collisions_unmanoeuvred_linear"].get<int>(), 0);
   EXPECT_LE(c["verification"]["max_risk"].get<double>(), 1e-6);
+  // Impulsive mode: no plan without the conjunction is solved.
+  EXPECT_TRUE(c["solve"]["without_conjunction_objective"].is_null());
+  EXPECT_TRUE(c["solve"]["extra_cost"].is_null());
 
   RunResult ok = RunCli({"check", kSmall, dir + "/solve/impulses.csv"});
   EXPECT_EQ(ok.exit_code, 0) << ok.Describe();
@@ -112,6 +115,35 @@ TEST(ConjunctionCli, ValidateExportSolveCheck) {
   EXPECT_HAS(none.out, "conjunction   FAILED");
   EXPECT_FALSE(
       ReadJson(dir + "/none/check.json")["conjunction"]["verification"]["passed"].get<bool>());
+  std::filesystem::remove_all(dir);
+}
+
+// On-off mode: the primary at rest needs no burn without the conjunction;
+// with it, the cheapest plan is one slot (0.05 N / 1000 kg x 500 s = 0.025
+// m/s: a plan that moves the primary burns at least one whole slot), and the
+// summary reports the plan without the conjunction and the extra cost.
+TEST(ConjunctionCli, OnOffReportsTheExtraCostOverThePlanWithoutTheConjunction) {
+  const std::string dir = TempDir("conjunction_onoff");
+  const std::string scenario = THRUSTSCHED_APP_TEST_DATA "/conjunction_onoff_small.json";
+  RunResult r = RunCli({"solve", scenario, "--out", dir + "/solve", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_HAS(r.out, "without       0 (the plan without the conjunction, bound 0)");
+  EXPECT_HAS(r.out, "conjunction   PASSED");
+  const json summary = ReadJson(dir + "/solve/summary.json");
+  EXPECT_EQ(summary["status"], "optimal");
+  EXPECT_NEAR(summary["objective"].get<double>(), 0.025, 1e-9);
+  const json& solve = summary["conjunction"]["solve"];
+  EXPECT_NEAR(solve["without_conjunction_objective"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(solve["lower_bound"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(solve["extra_cost"].get<double>(), 0.025, 1e-9);
+  EXPECT_NE(solve["start_label"].get<std::string>().find("over 132 slots"), std::string::npos);
+  EXPECT_TRUE(summary["conjunction"]["verification"]["passed"].get<bool>());
+
+  // The plan without the conjunction (no burn) fails it: exit 5.
+  WriteFile(dir + "/none.csv", "thruster,start_s,end_s\n");
+  RunResult none = RunCli({"check", scenario, dir + "/none.csv", "--out", dir + "/none"});
+  EXPECT_EQ(none.exit_code, 5) << none.Describe();
+  EXPECT_HAS(none.out, "conjunction   FAILED");
   std::filesystem::remove_all(dir);
 }
 

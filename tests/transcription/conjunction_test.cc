@@ -213,8 +213,22 @@ TEST(ConjunctionSolveTest, OnOffStartRepairsThePlanWithoutTheConjunction) {
   EXPECT_GT(start.objective, 0.0);            // the repair must burn
   EXPECT_LT(milp.lp().MaxViolation(start.x), 1e-6);
 
+  // The repair is first looked for over the slots near the plan's burns and
+  // the half orbit before the checks (here the plan has no burn: the slots
+  // from 9000 - pi/n = -34080 s, i.e. the whole horizon up to 11000 s).
+  EXPECT_NE(start.label.find("over 132 slots"), std::string::npos) << start.label;
+  // The plan without the conjunction: no burn, and it fails the conjunction.
+  EXPECT_NEAR(start.without_objective, 0.0, 1e-9);
+  ASSERT_EQ(start.without_x.size(), milp.lp().num_cols());
+  const Schedule without = milp.Decode(start.without_x);
+  EXPECT_EQ(without.num_burns(), 0);
+  ConjunctionCheckOptions quick;
+  quick.monte_carlo_samples = 2000;
+  EXPECT_FALSE(CheckConjunction(milp.problem(), without.burns, {}, quick).risk_ok);
+
   const ConjunctionSolve cs = SolveConjunction(milp, *solver, so);
   ASSERT_TRUE(cs.result.has_schedule());
+  EXPECT_EQ(cs.without_objective, start.without_objective);
   EXPECT_EQ(cs.start_objective, start.objective);
   EXPECT_EQ(cs.lower_bound, start.lower_bound);
   EXPECT_LE(cs.result.solve.objective, start.objective + 1e-9);
@@ -231,6 +245,33 @@ TEST(ConjunctionSolveTest, OnOffStartRepairsThePlanWithoutTheConjunction) {
   EXPECT_GT(r.collisions_unmanoeuvred_linear, 0);  // the manoeuvre matters
   EXPECT_FALSE(r.nonlinear_checked);               // HCW: linear only, and said why
   EXPECT_FALSE(r.nonlinear_note.empty());
+}
+
+// A secondary passing 5 km from the primary's plan: every check is clear,
+// the plan without the conjunction is feasible with it and costs the lower
+// bound, so the solve ends after the start, with no budget round and the
+// plan proven optimal (the gap to the bound is 0).
+TEST(ConjunctionSolveTest, StartAtTheBoundWithoutTheConjunctionEndsTheSolve) {
+  ScheduleProblem p = SmallOnOffAvoidance();
+  p.conjunction->secondary_state[2] = 5000.0;
+  const ScheduleMilp milp(p, BuildOptions{});
+  const auto solver = milp::MakeCbcSolver();
+  SolveScheduleOptions so;
+  so.milp.relative_gap = 1e-6;
+  so.milp.max_nodes = 2000;
+  const ConjunctionSolve cs = SolveConjunction(milp, *solver, so);
+  ASSERT_TRUE(cs.result.has_schedule());
+  EXPECT_TRUE(cs.rounds.empty());
+  EXPECT_EQ(cs.result.solve.status, milp::SolveStatus::kOptimal);
+  EXPECT_NEAR(cs.result.solve.objective, 0.0, 1e-9);
+  EXPECT_NEAR(cs.without_objective, 0.0, 1e-9);
+  EXPECT_EQ(cs.result.schedule.num_burns(), 0);
+  EXPECT_TRUE(cs.result.checked);
+  EXPECT_LT(milp.lp().MaxViolation(cs.result.solve.x), 1e-6);
+  ConjunctionCheckOptions o;
+  o.monte_carlo_samples = 2000;
+  const ConjunctionCheckReport r = CheckConjunction(p, cs.result.schedule.burns, {}, o);
+  EXPECT_TRUE(r.passed()) << r.max_risk;
 }
 
 }  // namespace
