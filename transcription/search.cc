@@ -429,7 +429,7 @@ class Search {
   void WholeMilp() {
     milp::SolveOptions o = SubOptions(true);
     o.complete_solution = [this](Eigen::VectorXd* x) { return milp_.CompleteFromPattern(x); };
-    if (has_incumbent()) o.initial_solution = x_;
+    if (has_incumbent() && search_.whole_milp_from_incumbent) o.initial_solution = x_;
     const double t0 = Elapsed();
     const milp::SolveResult s = solver_.Solve(lp_, o);
     nodes_ += s.nodes;
@@ -444,7 +444,7 @@ class Search {
     }
     solver_detail_ = s.detail;
     Step("whole MILP (" + std::string(solver_.name()) +
-         (has_incumbent() ? ", from the incumbent" : "") + "): " +
+         (o.initial_solution ? ", from the incumbent" : "") + "): " +
          std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) + " s");
   }
 

@@ -240,6 +240,7 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
     if (spec.search_previous) {
       search.lazy_rows = false;
       search.improvement_rounds = 0;
+      search.whole_milp_from_incumbent = true;
     }
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;

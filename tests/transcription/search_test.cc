@@ -193,6 +193,48 @@ TEST(SearchSchedule, KeepsAGivenStartAndHonoursAnInterrupt) {
   EXPECT_LE(s.best_bound, ref.solve.objective + 1e-9);
 }
 
+// Step 5, CBC on the whole MILP (forced: no exact restricted solve, no
+// improvement, no objective step): on its own (the default) or from the search's incumbent, it
+// ends at CBC alone's optimum; with no node for it, the incumbent of the
+// restricted MILP is kept, never a worse or missing schedule.
+TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
+  auto solver = milp::MakeCbcSolver();
+  ScheduleProblem p = SmallHcwDay();
+  // A cost per burn start that is no multiple of a slot's: no objective
+  // step, so the LP bound alone cannot prove the restricted MILP's schedule.
+  p.objective.burn_start_penalty = 0.0037;
+  SolveScheduleOptions o;
+  o.milp = Exact();
+  o.search.enabled = false;
+  const ScheduleResult ref = SolveSchedule(p, *solver, o);
+  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
+
+  const ScheduleMilp milp(p, BuildOptions{});
+  SearchOptions forced;
+  forced.max_exact_slots = 0;
+  forced.improvement_rounds = 0;
+  forced.neighbourhood = 0;
+  for (bool from_incumbent : {false, true}) {
+    forced.whole_milp_from_incumbent = from_incumbent;
+    SearchReport report;
+    const milp::SolveResult r = SearchSchedule(milp, *solver, Exact(), forced, {}, &report);
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
+    EXPECT_NEAR(r.objective, ref.solve.objective, 1e-9 * ref.solve.objective) << r.detail;
+    ASSERT_TRUE(report.whole_milp) << r.detail;
+    const bool said = r.detail.find("from the incumbent") != std::string::npos;
+    EXPECT_EQ(said, from_incumbent) << r.detail;
+  }
+  // No node for the whole MILP: the restricted MILP's schedule is the result.
+  milp::SolveOptions none = Exact();
+  none.max_nodes = 0;
+  forced.whole_milp_from_incumbent = false;
+  SearchReport report;
+  const milp::SolveResult r = SearchSchedule(milp, *solver, none, forced, {}, &report);
+  ASSERT_TRUE(r.has_solution()) << r.detail;
+  EXPECT_GE(r.objective, ref.solve.objective - 1e-9);
+  EXPECT_LE(milp.lp().MaxViolation(r.x), 1e-6);
+}
+
 TEST(SearchOptions, InvalidValuesAreNamed) {
   SearchOptions s;
   std::string error;
