@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
 
 #include "app/outputs.h"
@@ -18,13 +17,6 @@ std::string G(double v, int digits = 4) {
   if (std::isnan(v)) return "n/a";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   return FormatG(v, digits);
-}
-
-// The avoidance's extra cost over the plan without the conjunction (NaN if
-// either is missing).
-double ExtraCost(const transcription::ConjunctionSolve& cs) {
-  return cs.result.has_schedule() ? cs.result.solve.objective - cs.without_objective
-                                  : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -75,7 +67,7 @@ void PrintConjunctionCheck(std::ostream& os, const transcription::ConjunctionChe
 
 void PrintConjunctionSolve(std::ostream& os, const transcription::ConjunctionSolve& cs) {
   if (!std::isnan(cs.without_objective)) {
-    const double extra = ExtraCost(cs);
+    const double extra = cs.extra_cost();
     os << "without       " << G(cs.without_objective, 8)
        << " (the plan without the conjunction, bound " << G(cs.lower_bound, 8) << ")";
     if (!std::isnan(extra)) {
@@ -119,7 +111,7 @@ nlohmann::json ConjunctionJson(const std::optional<transcription::KeepOutStats>&
                   {"rounds", rounds},
                   {"without_conjunction_objective", FiniteOrNull(cs->without_objective)},
                   {"lower_bound", FiniteOrNull(cs->lower_bound)},
-                  {"extra_cost", FiniteOrNull(ExtraCost(*cs))}};
+                  {"extra_cost", FiniteOrNull(cs->extra_cost())}};
   } else {
     j["solve"] = nullptr;
   }

@@ -63,6 +63,12 @@ double RelativeGap(double objective, double bound) {
   return std::abs(objective - bound) / std::max(1e-10, std::abs(objective));
 }
 
+bool GapClosed(double objective, double bound, const SolveOptions& options) {
+  if (!std::isfinite(objective) || !std::isfinite(bound)) return false;
+  return std::abs(objective - bound) <= options.absolute_gap ||
+         RelativeGap(objective, bound) <= options.relative_gap;
+}
+
 std::string_view ToString(SolvePhase phase) {
   switch (phase) {
     case SolvePhase::kRootLp:

@@ -157,6 +157,11 @@ struct SolveOptions {
   bool IsValid(std::string* error) const;
 };
 
+/// True when `objective` is within options.absolute_gap or
+/// options.relative_gap (RelativeGap) of `bound`: the stopping rule of a
+/// solve. False if either is not finite.
+bool GapClosed(double objective, double bound, const SolveOptions& options);
+
 /// One improving solution found during the search (objective and best bound
 /// in the model's own sense, with the offset; wall seconds since Solve()).
 struct Incumbent {

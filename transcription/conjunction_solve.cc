@@ -313,12 +313,6 @@ void DecodeAndCheck(const ScheduleMilp& m, const SolveScheduleOptions& options, 
   r->check_seconds = Since(t0);
 }
 
-bool StartClosesGap(double start, double lower_bound, const milp::SolveOptions& o) {
-  if (!std::isfinite(start) || !std::isfinite(lower_bound)) return false;
-  return start - lower_bound <= o.absolute_gap ||
-         milp::RelativeGap(start, lower_bound) <= o.relative_gap;
-}
-
 }  // namespace
 
 ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver& solver,
@@ -349,7 +343,7 @@ ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver&
     out.without_objective = s.without_objective;
     out.without_x = s.without_x;
   }
-  if (best_x.size() > 0 && StartClosesGap(best, out.lower_bound, options.milp)) {
+  if (best_x.size() > 0 && milp::GapClosed(best, out.lower_bound, options.milp)) {
     // The start is within the requested gap of the optimum without the
     // conjunction, a lower bound: no round can do better than the gap asks.
     ScheduleResult& r = out.result;

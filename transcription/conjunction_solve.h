@@ -77,10 +77,16 @@ struct ConjunctionSolve {
   double lower_bound = -std::numeric_limits<double>::infinity();
   /// On-off mode: the plan of the problem without its conjunction (its cost,
   /// and the plan as a full column vector of the solved model, for
-  /// Decode and CheckConjunction); NaN / empty otherwise. The extra cost of
-  /// the avoidance is result.solve.objective - without_objective.
+  /// Decode and CheckConjunction); NaN / empty otherwise.
   double without_objective = std::numeric_limits<double>::quiet_NaN();
   Eigen::VectorXd without_x;
+
+  /// The avoidance's extra cost over the plan without the conjunction:
+  /// result.solve.objective - without_objective (NaN if either is missing).
+  double extra_cost() const {
+    return result.has_schedule() ? result.solve.objective - without_objective
+                                 : std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 /// Step 1 alone, as a full column vector of `milp`: impulsive mode, the

@@ -131,12 +131,7 @@ class Search {
     if (has_incumbent() && bound_ > objective_) bound_ = objective_;
   }
 
-  bool Done() const {
-    if (!has_incumbent()) return false;
-    const double diff = std::abs(objective_ - bound_);
-    return diff <= options_.absolute_gap ||
-           milp::RelativeGap(objective_, bound_) <= options_.relative_gap;
-  }
+  bool Done() const { return has_incumbent() && milp::GapClosed(objective_, bound_, options_); }
 
   // A point of the full MILP: verified, then the incumbent if better.
   bool Offer(Eigen::VectorXd x, const std::string& source) {

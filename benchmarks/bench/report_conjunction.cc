@@ -8,6 +8,12 @@
 namespace thrustsched::bench {
 namespace {
 
+// "linear, two-body" Monte Carlo collision counts of a row ("-" when the
+// two-body count was not made).
+std::string Collisions(const Row& r, const char* linear, const char* nonlinear) {
+  return r.Get(linear) + ", " + (r.Has(nonlinear) ? r.Get(nonlinear) : std::string("-"));
+}
+
 // One case: cost and time next to the published ones, then the verification.
 void WriteCase(std::ostream& md, const Row& r) {
   md << "| " << r.Get("scenario") << " | " << r.Get("status") << " | "
@@ -16,25 +22,21 @@ void WriteCase(std::ostream& md, const Row& r) {
      << G(r.Num("published_time_s"), 4) << " | " << r.Get("budget_rounds") << " | "
      << r.Get("keep_out_binaries") << " | " << G(r.Num("max_risk"), 3) << " | "
      << G(r.Num("max_risk_unmanoeuvred"), 4) << " (" << G(r.Num("published_risk_unmanoeuvred"), 3)
-     << ") | " << r.Get("mc_collisions_linear") << ", "
-     << (r.Has("mc_collisions_nonlinear") ? r.Get("mc_collisions_nonlinear") : "-") << " ("
+     << ") | " << Collisions(r, "mc_collisions_linear", "mc_collisions_nonlinear") << " ("
      << r.Get("mc_samples") << ") |\n";
 }
 
 // One on-off case: the plan against the same problem's plan without the
 // conjunction, both verified against it.
 void WriteOnOffCase(std::ostream& md, const Row& r) {
-  const auto collisions = [&](const char* linear, const char* nonlinear) {
-    return r.Get(linear) + ", " + (r.Has(nonlinear) ? r.Get(nonlinear) : std::string("-"));
-  };
   md << "| " << r.Get("scenario") << " | " << r.Get("status") << " | " << G(r.Num("objective"), 6)
      << " | " << G(r.Num("without_conjunction"), 6) << " | " << G(r.Num("extra_cost"), 3) << " ("
      << Pct(r.Num("extra_cost") / r.Num("without_conjunction")) << ") | "
      << G(r.Num("best_bound"), 6) << " | " << Pct(r.Num("gap")) << " | " << Sec(r.Num("solve_s"))
      << " | " << r.Get("budget_rounds") << " | " << G(r.Num("max_risk"), 3) << " | "
      << G(r.Num("without_max_risk"), 3) << " | "
-     << collisions("mc_collisions_linear", "mc_collisions_nonlinear") << " | "
-     << collisions("without_mc_collisions_linear", "without_mc_collisions_nonlinear") << " ("
+     << Collisions(r, "mc_collisions_linear", "mc_collisions_nonlinear") << " | "
+     << Collisions(r, "without_mc_collisions_linear", "without_mc_collisions_nonlinear") << " ("
      << r.Get("mc_samples") << ") |\n";
 }
 

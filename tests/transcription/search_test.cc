@@ -38,6 +38,14 @@ milp::SolveOptions Exact() {
   return o;
 }
 
+// The reference: CBC alone on the whole MILP (search disabled), gap 1e-9.
+ScheduleResult CbcAlone(const ScheduleProblem& p, const milp::Solver& solver) {
+  SolveScheduleOptions o;
+  o.milp = Exact();
+  o.search.enabled = false;
+  return SolveSchedule(p, solver, o);
+}
+
 // Thesis Table 4.1 with the start further out and 10-min steps: a one-day
 // problem with several burns, small enough for CBC alone in a second.
 ScheduleProblem SmallHcwDay() {
@@ -165,10 +173,7 @@ TEST(FreeSlots, RestrictedCondensedMilpEqualsTheFullMilpWithSlotsForbidden) {
 TEST(SearchSchedule, KeepsAGivenStartAndHonoursAnInterrupt) {
   auto solver = milp::MakeCbcSolver();
   const ScheduleProblem p = SmallHcwDay();
-  SolveScheduleOptions o;
-  o.milp = Exact();
-  o.search.enabled = false;
-  const ScheduleResult ref = SolveSchedule(p, *solver, o);
+  const ScheduleResult ref = CbcAlone(p, *solver);
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
 
   const ScheduleMilp milp(p, BuildOptions{});
@@ -203,10 +208,7 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
   // A cost per burn start that is no multiple of a slot's: no objective
   // step, so the LP bound alone cannot prove the restricted MILP's schedule.
   p.objective.burn_start_penalty = 0.0037;
-  SolveScheduleOptions o;
-  o.milp = Exact();
-  o.search.enabled = false;
-  const ScheduleResult ref = SolveSchedule(p, *solver, o);
+  const ScheduleResult ref = CbcAlone(p, *solver);
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
 
   const ScheduleMilp milp(p, BuildOptions{});
