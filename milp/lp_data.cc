@@ -188,7 +188,8 @@ bool LpData::IsValid(std::string* error) const {
   return true;
 }
 
-LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasible) {
+LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasible,
+                          std::vector<int>* kept_rows) {
   const int n = lp.num_cols(), m = lp.num_rows();
   std::vector<int> keep, new_index(static_cast<size_t>(n), -1);
   Eigen::VectorXd fixed_value = Eigen::VectorXd::Zero(n);
@@ -258,6 +259,7 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
     for (int i : rows) out.row_names.push_back(lp.row_names[static_cast<size_t>(i)]);
   }
   if (kept != nullptr) *kept = keep;
+  if (kept_rows != nullptr) *kept_rows = rows;
   if (feasible != nullptr) *feasible = ok;
   return out;
 }

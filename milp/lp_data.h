@@ -74,9 +74,10 @@ struct LpData {
 /// with no column dropped. A dropped row whose constant violates its bounds
 /// by more than 1e-9 (relative) makes *feasible false (if not null).
 /// `kept` (if not null) receives, for each remaining column, its index in
-/// `lp`. Names are kept when `lp` has them.
+/// `lp`. Names are kept when `lp` has them. `kept_rows` (if not null)
+/// receives, for each remaining row, its index in `lp`.
 LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept = nullptr,
-                          bool* feasible = nullptr);
+                          bool* feasible = nullptr, std::vector<int>* kept_rows = nullptr);
 
 }  // namespace thrustsched::milp
 

@@ -13,6 +13,7 @@
 #include "common/format.h"
 #include "milp/lazy_rows.h"
 #include "milp/lp_bound.h"
+#include "transcription/dormant.h"
 
 namespace thrustsched::transcription {
 
@@ -155,7 +156,7 @@ class Search {
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
     Report(milp::SolvePhase::kRootLp, false);
-    relaxation_ = solver_.SolveLpRelaxation(lp_, o);
+    relaxation_ = SolveRelaxationWithoutDormantBlocks(o);
     if (report_ != nullptr) report_->lp_seconds = Elapsed() - t0;
     if (relaxation_.status == milp::SolveStatus::kInfeasible) {
       status_ = milp::SolveStatus::kInfeasible;
@@ -173,9 +174,55 @@ class Search {
     Step("LP bound " + FormatG(dual_.bound, 8) +
          (bound_ > dual_.bound ? " (" + FormatG(bound_, 8) + " on the objective step)"
                                : std::string()) +
-         " by interior point in " + FormatG(Elapsed() - t0, 3) + " s");
+         " by interior point in " + FormatG(Elapsed() - t0, 3) + " s" + dormant_note_);
     Report(milp::SolvePhase::kPresolve, false);
     return true;
+  }
+
+  // The LP relaxation with the blocks of dormant thrusters fixed at their
+  // coasting values and removed (transcription/dormant.h): same bound
+  // validity (the duals are the whole MILP's, zero on the removed rows, and
+  // SafeDualBound checks them on the whole MILP). An infeasible verdict is
+  // confirmed on the whole relaxation, so the reduction never declares a
+  // problem infeasible on its own.
+  milp::LpRelaxationResult SolveRelaxationWithoutDormantBlocks(const milp::SolveOptions& o) {
+    if (search_.drop_dormant_blocks) dormant_ = FindDormantThrusters(milp_);
+    if (!dormant_.any()) return solver_.SolveLpRelaxation(lp_, o);
+    milp::LpData fixed = lp_;
+    for (int j = 0; j < lp_.num_cols(); ++j) {
+      if (!dormant_.column[static_cast<size_t>(j)]) continue;
+      fixed.col_lower[j] = fixed.col_upper[j] = dormant_.all_off[j];
+    }
+    std::vector<int> kept, kept_rows;
+    bool feasible = true;
+    const milp::LpData small = milp::RemoveFixedColumns(fixed, &kept, &feasible, &kept_rows);
+    if (!feasible) return solver_.SolveLpRelaxation(lp_, o);
+    milp::LpRelaxationResult r = solver_.SolveLpRelaxation(small, o);
+    if (r.status == milp::SolveStatus::kInfeasible) {
+      milp::SolveOptions rest = o;
+      rest.time_limit_s = std::max(0.0, Remaining());
+      return solver_.SolveLpRelaxation(lp_, rest);
+    }
+    dormant_note_ = " (thrusters " + dormant_.Names(milp_) +
+                    " left off, their block staying within its constraints without them: LP over " +
+                    std::to_string(small.num_cols()) + " of " + std::to_string(lp_.num_cols()) +
+                    " columns)";
+    if (r.status != milp::SolveStatus::kOptimal) return r;
+    Eigen::VectorXd x = fixed.col_lower;  // the removed columns' values
+    for (size_t k = 0; k < kept.size(); ++k) x[kept[k]] = r.x[static_cast<Eigen::Index>(k)];
+    Eigen::VectorXd duals = Eigen::VectorXd::Zero(lp_.num_rows());
+    for (size_t k = 0; k < kept_rows.size(); ++k) {
+      duals[kept_rows[k]] = r.row_duals[static_cast<Eigen::Index>(k)];
+    }
+    r.x = std::move(x);
+    r.row_duals = std::move(duals);
+    r.objective = lp_.Objective(r.x);
+    r.dual_bound = kNaN;  // SafeDualBound below, on the whole MILP
+    return r;
+  }
+
+  bool Dormant(int thruster) const {
+    return !dormant_.thruster.empty() && dormant_.thruster[static_cast<size_t>(thruster)];
   }
 
   // ------------------------------------------------- 2. restricted MILPs
@@ -199,7 +246,9 @@ class Search {
     Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(m, n);
     for (int i = 0; i < m; ++i) {
       for (int j = 0; j < n; ++j) {
-        if (lp_.col_upper[enc.on[i][j].index()] < 0.5) continue;
+        // Dormant thrusters stay off in the heuristic nets (it only needs
+        // a schedule; the exact step 4 does not use these nets).
+        if (lp_.col_upper[enc.on[i][j].index()] < 0.5 || Dormant(i)) continue;
         bool near = false;
         for (int d = -k; d <= k && !near; ++d) {
           const int jj = j + d;
@@ -489,6 +538,8 @@ class Search {
   std::string lazy_note_;    // rows the last restricted solve used
 
   milp::LpRelaxationResult relaxation_;
+  DormantThrusters dormant_;
+  std::string dormant_note_;
   milp::DualBound dual_;
   double bound_ = -kInf;
   Eigen::VectorXd x_;

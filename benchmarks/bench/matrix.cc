@@ -168,8 +168,8 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
   }
 }
 
-// The problem-aware search against the previous release's search (without
-// lazy rows and the improvement step) and the first release's path (CBC on
+// The problem-aware search against the previous release's search (its LP
+// relaxation on the whole MILP) and the first release's path (CBC on
 // the whole MILP), case by case in the same run so that machine load cancels
 // in the ratios; the targets are those of the solver-speed work.
 void AddSolverSpeed(Builder* b, const MatrixOptions& o) {

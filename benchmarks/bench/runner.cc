@@ -237,11 +237,8 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    if (spec.search_previous) {
-      search.lazy_rows = false;
-      search.improvement_rounds = 0;
-      search.whole_milp_from_incumbent = true;
-    }
+    // The previous release's search: the LP relaxation on the whole MILP.
+    if (spec.search_previous) search.drop_dormant_blocks = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;
