@@ -334,7 +334,8 @@ void PrintSummary(const YearRun& y, const std::vector<std::string>& files, bool 
       << "fallbacks     " << sum.fallback_soft_window << " soft window, "
       << sum.fallback_free_terminal << " soft window + free terminal, " << sum.fallback_zero_thrust
       << " zero thrust; " << sum.uncontrollable_cycles << " uncontrollable cycle(s); "
-      << sum.time_limited_cycles << " cycle(s) stopped by the time limit\n"
+      << sum.time_limited_cycles
+      << " cycle(s) stopped by a limit (node budget or time) above the gap\n"
       << "solve time    median " << G(sum.solve_seconds.median, 3) << " s, p90 "
       << G(sum.solve_seconds.p90, 3) << " s, max " << G(sum.solve_seconds.max, 3)
       << " s; gap median " << FormatPercent(sum.gap.median) << ", max "
