@@ -148,5 +148,26 @@ TEST(FindDormantThrusters, TheSearchWithTheReductionKeepsTheOptimumAndTheBound) 
   EXPECT_LE(with.check.max_window_violation_at_nodes, 1e-3) << with.check.Summary();
 }
 
+// Nothing needs thrust: every block is dormant, the LP left is empty (or
+// only the thesis encoding's gamma columns), and the search proves the
+// empty schedule optimal at 0 in both encodings.
+TEST(FindDormantThrusters, WithEveryThrusterDormantTheEmptyScheduleIsProvenOptimal) {
+  auto solver = milp::MakeCbcSolver();
+  for (Encoding e : {Encoding::kThesis, Encoding::kTight}) {
+    SolveScheduleOptions o;
+    o.build.encoding = e;
+    o.milp.threads = 1;
+    o.milp.max_nodes = 1000;
+    const ScheduleResult r = SolveSchedule(HcwDay(0.0, 3000.0), *solver, o);
+    ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
+    EXPECT_EQ(r.solve.objective, 0.0);
+    EXPECT_TRUE(r.schedule.burns.empty());
+    EXPECT_NE(r.solve.detail.find("+R, +T, +N, -R, -T, -N left off"), std::string::npos)
+        << r.solve.detail;
+    EXPECT_TRUE(r.check.operational_ok) << r.check.Summary();
+    EXPECT_LE(r.check.max_window_violation_at_nodes, 1e-3) << r.check.Summary();
+  }
+}
+
 }  // namespace
 }  // namespace thrustsched::transcription
