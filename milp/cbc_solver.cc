@@ -159,6 +159,14 @@ LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
                                                       const SolveOptions& options) const {
   SolveClock clock(options.time_limit_s, options.interrupt);
   LpRelaxationResult r;
+  if (clock.ShouldStop()) {
+    // Stopped before it started: CLP polls its event handler (and the child
+    // process's parent its flag) only now and then, and a small LP would run
+    // to the end past an interrupt raised before the call.
+    r.status = SolveStatus::kNoSolutionFound;
+    r.detail = clock.stopped_by_interrupt() ? "clp: interrupted" : "clp: time limit";
+    return r;
+  }
   LpData relaxed = lp;
   std::fill(relaxed.col_type.begin(), relaxed.col_type.end(), VarType::kContinuous);
   if (lp.num_cols() == 0 || lp.num_rows() == 0) {

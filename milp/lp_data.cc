@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <unordered_set>
+#include <utility>
 
 #include "common/error.h"
 #include "common/format.h"
@@ -262,6 +263,56 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
   if (kept_rows != nullptr) *kept_rows = rows;
   if (feasible != nullptr) *feasible = ok;
   return out;
+}
+
+void AppendRows(LpData* lp, const std::vector<SparseRow>& rows) {
+  const int m = lp->num_rows(), n = lp->num_cols();
+  const int added = static_cast<int>(rows.size());
+  std::vector<std::vector<std::pair<int, double>>> by_column(static_cast<size_t>(n));
+  for (int r = 0; r < added; ++r) {
+    const SparseRow& row = rows[static_cast<size_t>(r)];
+    const std::string label = "AppendRows: row " + std::to_string(m + r) +
+                              (row.name.empty() ? std::string() : " '" + row.name + "'");
+    if (row.columns.size() != row.coefficients.size()) {
+      throw std::invalid_argument(label + ": " + std::to_string(row.columns.size()) +
+                                  " columns but " + std::to_string(row.coefficients.size()) +
+                                  " coefficients");
+    }
+    for (size_t k = 0; k < row.columns.size(); ++k) {
+      const int j = row.columns[k];
+      if (j < 0 || j >= n) {
+        throw std::invalid_argument(label + ": column " + std::to_string(j) + " out of range [0, " +
+                                    std::to_string(n) + ")");
+      }
+      auto& entries = by_column[static_cast<size_t>(j)];
+      if (!entries.empty() && entries.back().first == m + r) {
+        throw std::invalid_argument(label + ": column " + std::to_string(j) + " repeated");
+      }
+      if (row.coefficients[k] != 0.0) entries.emplace_back(m + r, row.coefficients[k]);
+    }
+  }
+  std::vector<Eigen::Triplet<double, int>> t;
+  t.reserve(static_cast<size_t>(lp->num_nonzeros()) + rows.size() * 8);
+  for (int j = 0; j < n; ++j) {
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp->a_matrix, j); it;
+         ++it) {
+      t.emplace_back(static_cast<int>(it.row()), j, it.value());
+    }
+    for (const auto& [i, v] : by_column[static_cast<size_t>(j)]) t.emplace_back(i, j, v);
+  }
+  // Rows named when the model's rows are (or, with none yet, its columns).
+  const bool named = m > 0 ? static_cast<int>(lp->row_names.size()) == m : !lp->col_names.empty();
+  lp->a_matrix.resize(m + added, n);
+  lp->a_matrix.setFromTriplets(t.begin(), t.end());
+  lp->a_matrix.makeCompressed();
+  lp->row_lower.conservativeResize(m + added);
+  lp->row_upper.conservativeResize(m + added);
+  for (int r = 0; r < added; ++r) {
+    const SparseRow& row = rows[static_cast<size_t>(r)];
+    lp->row_lower[m + r] = row.lower;
+    lp->row_upper[m + r] = row.upper;
+    if (named) lp->row_names.push_back(row.name.empty() ? "R" + std::to_string(m + r) : row.name);
+  }
 }
 
 }  // namespace thrustsched::milp

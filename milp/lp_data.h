@@ -79,6 +79,20 @@ struct LpData {
 LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept = nullptr,
                           bool* feasible = nullptr, std::vector<int>* kept_rows = nullptr);
 
+/// A row to append: lower <= sum_k coefficients[k] * x[columns[k]] <= upper.
+struct SparseRow {
+  std::vector<int> columns;
+  std::vector<double> coefficients;
+  double lower = -kInfinity;
+  double upper = kInfinity;
+  std::string name;  // used when the model has row names ("" gets R<index>)
+};
+
+/// Appends `rows` after lp's own rows, rebuilding the matrix once.
+/// @throws std::invalid_argument naming the row for a column out of range,
+/// a repeated column or columns and coefficients of different lengths.
+void AppendRows(LpData* lp, const std::vector<SparseRow>& rows);
+
 }  // namespace thrustsched::milp
 
 #endif  // THRUSTSCHED_MILP_LP_DATA_H_

@@ -14,6 +14,7 @@
 #include "milp/lazy_rows.h"
 #include "milp/lp_bound.h"
 #include "transcription/dormant.h"
+#include "transcription/total_branching.h"
 
 namespace thrustsched::transcription {
 
@@ -57,7 +58,14 @@ class Search {
     }
     if (!Done()) Heuristic();
     ExactRounds();
-    if (!Done() && !Stopped() && has_incumbent() && Improve()) ExactRounds();
+    // The first improvement level is cheap and often finds the optimum; the
+    // tree is the proof; wider levels cost more and come after it.
+    bool improved = !Done() && !Stopped() && has_incumbent() && Improve(1);
+    if (!Done() && !Stopped() && has_incumbent()) BranchOnTotals();
+    if (!Done() && !Stopped() && has_incumbent() && Improve(search_.improvement_rounds)) {
+      improved = true;
+    }
+    if (improved) ExactRounds();
     if (!Done() && !Stopped()) WholeMilp();
     return Result();
   }
@@ -231,14 +239,18 @@ class Search {
   // and the same thruster's within k intervals of them; `all_thrusters`
   // frees every thruster there (a wider net when that is infeasible).
   Eigen::MatrixXi CandidateSlots(double threshold, int k, bool all_thrusters) const {
+    return CandidateSlots(relaxation_.x, threshold, k, all_thrusters);
+  }
+  // The same around the slots a relaxation point `x` uses.
+  Eigen::MatrixXi CandidateSlots(const Eigen::VectorXd& x, double threshold, int k,
+                                 bool all_thrusters) const {
     const OperationalEncoding& enc = milp_.encoding();
     const int m = enc.num_thrusters, n = enc.num_intervals;
     Eigen::MatrixXi used = Eigen::MatrixXi::Zero(m, n);
     for (int i = 0; i < m; ++i) {
       for (int j = 0; j < n; ++j) {
         const int c = enc.on[i][j].index();
-        if (relaxation_.x[c] > threshold || lp_.col_lower[c] > 0.5 ||
-            (has_incumbent() && x_[c] > 0.5)) {
+        if (x[c] > threshold || lp_.col_lower[c] > 0.5 || (has_incumbent() && x_[c] > 0.5)) {
           used(i, j) = 1;
         }
       }
@@ -324,24 +336,29 @@ class Search {
     return CandidateSlots(threshold, k, level > 0);
   }
 
-  // Step 4b, local improvement (when reduced-cost fixing leaves too many
+  // Step 4a, local improvement (when reduced-cost fixing leaves too many
   // slots): the MILP restricted to the next, wider nets around the
   // relaxation's and the incumbent's slots, each asked for a schedule better
-  // than the incumbent by a step (a cutoff row); up to improvement_rounds
-  // nets of at most max_exact_slots slots. Incumbents only: a restriction's
-  // verdict says nothing of the slots it leaves out. True if it improved.
-  bool Improve() {
+  // than the incumbent by a step (a cutoff row): the next `rounds` of the
+  // improvement_rounds levels, nets of at most max_exact_slots slots.
+  // Incumbents only: a restriction's verdict says nothing of the slots it
+  // leaves out. True if it improved.
+  bool Improve(int rounds) {
     const double before = objective_;
-    const int first = heuristic_level_ + 1;
-    Eigen::MatrixXi last;
-    for (int level = first; level < first + search_.improvement_rounds; ++level) {
+    const int end = heuristic_level_ + 1 + search_.improvement_rounds;
+    if (improvement_level_ < 0) improvement_level_ = heuristic_level_ + 1;
+    for (int solved = 0; solved < rounds && improvement_level_ < end; ++improvement_level_) {
       if (Done() || Stopped()) break;
-      const Eigen::MatrixXi mask = WideningMask(level);
-      if (Count(mask) > search_.max_exact_slots) break;
-      if (last.size() == mask.size() && last == mask) continue;
-      last = mask;
+      const Eigen::MatrixXi mask = WideningMask(improvement_level_);
+      if (Count(mask) > search_.max_exact_slots) {
+        improvement_level_ = end;
+        break;
+      }
+      if (last_improvement_mask_.size() == mask.size() && last_improvement_mask_ == mask) continue;
+      last_improvement_mask_ = mask;
       Restriction r = Restrict(mask);
       if (!r.feasible) continue;
+      ++solved;
       AddObjectiveCutoff(&r.small, Cutoff());
       const double t0 = Elapsed();
       milp::SolveOptions o = RestrictedOptions();
@@ -448,24 +465,52 @@ class Search {
 
   // Appends the row  cost' x <= cutoff - offset.
   static void AddObjectiveCutoff(milp::LpData* lp, double cutoff) {
-    const int m = lp->num_rows(), n = lp->num_cols();
-    std::vector<Eigen::Triplet<double, int>> t;
-    t.reserve(static_cast<size_t>(lp->num_nonzeros() + n));
-    for (int j = 0; j < n; ++j) {
-      for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp->a_matrix, j); it;
-           ++it) {
-        t.emplace_back(static_cast<int>(it.row()), j, it.value());
-      }
-      if (lp->col_cost[j] != 0.0) t.emplace_back(m, j, lp->col_cost[j]);
+    milp::SparseRow row;
+    for (int j = 0; j < lp->num_cols(); ++j) {
+      if (lp->col_cost[j] == 0.0) continue;
+      row.columns.push_back(j);
+      row.coefficients.push_back(lp->col_cost[j]);
     }
-    lp->a_matrix.resize(m + 1, n);
-    lp->a_matrix.setFromTriplets(t.begin(), t.end());
-    lp->a_matrix.makeCompressed();
-    lp->row_lower.conservativeResize(m + 1);
-    lp->row_upper.conservativeResize(m + 1);
-    lp->row_lower[m] = -kInf;
-    lp->row_upper[m] = cutoff - lp->objective_offset;
-    if (!lp->row_names.empty()) lp->row_names.push_back("objective_cutoff");
+    row.upper = cutoff - lp->objective_offset;
+    row.name = "objective_cutoff";
+    milp::AppendRows(lp, {row});
+  }
+
+  // ------------------------------------- 4b. branching on thruster totals
+
+  // A better bound from a small tree over each thruster's number of on slots
+  // (transcription/total_branching.h); bounds only.
+  void BranchOnTotals() {
+    if (search_.total_branching_lps < 2 || !relaxation_.x.size()) return;
+    milp::SolveOptions o = SubOptions(true);
+    o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
+    const double t0 = Elapsed();
+    const TotalBranching t = BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_,
+                                                    objective_, step_, search_.total_branching_lps);
+    RaiseBound(t.bound);
+    Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
+    Report(milp::SolvePhase::kSearch, false);
+    if (!Done() && !Stopped() && t.lowest_leaf_x.size() > 0) LeafHeuristic(t.lowest_leaf_x);
+  }
+
+  // The lowest leaf's LP is where a better schedule would be: the MILP
+  // restricted to the slots it uses (and the incumbent's), with the cutoff.
+  void LeafHeuristic(const Eigen::VectorXd& leaf_x) {
+    const Eigen::MatrixXi mask =
+        CandidateSlots(leaf_x, search_.candidate_threshold, search_.neighbourhood, false);
+    if (Count(mask) > search_.max_exact_slots) return;
+    Restriction r = Restrict(mask);
+    if (!r.feasible) return;
+    AddObjectiveCutoff(&r.small, Cutoff());
+    const double t0 = Elapsed();
+    milp::SolveOptions o = RestrictedOptions();
+    o.max_nodes = NodeLimit();
+    const milp::SolveResult s = SolveRestricted(r.small, o);
+    nodes_ += s.nodes;
+    Step("MILP restricted to the lowest leaf's " + std::to_string(Count(mask)) +
+         " slots: " + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) +
+         " s" + lazy_note_);
+    if (s.has_solution()) Offer(Lift(r, s.x), "the lowest leaf's restricted MILP");
   }
 
   // --------------------------------------------------- 5. the whole MILP
@@ -534,8 +579,10 @@ class Search {
   SearchReport* report_;
   Clock::time_point start_;
   double step_ = 0.0;
-  int heuristic_level_ = 0;  // widening level of the heuristic's incumbent
-  std::string lazy_note_;    // rows the last restricted solve used
+  int heuristic_level_ = 0;                // widening level of the heuristic's incumbent
+  int improvement_level_ = -1;             // next widening level of step 4a (-1: not started)
+  Eigen::MatrixXi last_improvement_mask_;  // its last net, not solved twice
+  std::string lazy_note_;                  // rows the last restricted solve used
 
   milp::LpRelaxationResult relaxation_;
   DormantThrusters dormant_;
@@ -567,6 +614,9 @@ bool SearchOptions::IsValid(std::string* error) const {
     return fail("max_widenings must be >= 0, got " + std::to_string(max_widenings));
   if (restricted_max_nodes < 0) {
     return fail("restricted_max_nodes must be >= 0, got " + std::to_string(restricted_max_nodes));
+  }
+  if (total_branching_lps < 0) {
+    return fail("total_branching_lps must be >= 0, got " + std::to_string(total_branching_lps));
   }
   if (improvement_rounds < 0)
     return fail("improvement_rounds must be >= 0, got " + std::to_string(improvement_rounds));

@@ -34,10 +34,14 @@
 //     is min(incumbent, that solve's bound) and at least the LP bound.
 //     Restricted MILPs are solved by row generation over their dense window
 //     rows (milp/lazy_rows.h; exact): a few thousand of them bind.
-//  4b. When too many slots stay free for step 4: local improvement, the MILP
+//  4a. When too many slots stay free for step 4: local improvement, the MILP
 //     restricted to wider nets around the relaxation's and the incumbent's
-//     slots with a cutoff one step below the incumbent (incumbents only),
-//     then step 4 again with the better incumbent.
+//     slots with a cutoff one step below the incumbent (incumbents only):
+//     the first net, then
+//  4b. branching on each thruster's number of on slots (an integer in every
+//     schedule) over a few LPs: a better bound, often the proof
+//     (transcription/total_branching.h), then the wider nets, then step 4
+//     again if the incumbent improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -91,6 +95,13 @@ struct SearchOptions {
   /// optimum in 150 s; on the hard-weeks suite it changed nothing or helped.
   /// The incumbent is kept either way (a worse CBC result does not replace it).
   bool whole_milp_from_incumbent = false;
+  /// LPs of the tree over each thruster's number of on slots that raises the
+  /// bound when the incumbent is not proven (transcription/total_branching.h;
+  /// step 4b); 0 (or 1) turns it off. On a six-thruster GEO week each LP is
+  /// an interior point over the whole MILP (~10 s on a quiet machine): one
+  /// split (2 LPs) proved a 2034-04-02 week's incumbent optimal, while on
+  /// another state of that week three splits left the bound where it was.
+  int total_branching_lps = 4;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those
   /// thrusters out of the heuristic nets. On thesis Table 4.2 (t1 = 2 d), an

@@ -67,11 +67,11 @@ void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
         "generation over their dense window rows, local improvement over wider nets, "
         "reduced-cost fixing, CBC on the whole MILP only when needed; "
         "`transcription/search.h`), `previous` is the search as the previous release ran it "
-        "(its LP relaxation on the whole MILP, without leaving out the blocks of thrusters an "
-        "optimal schedule can leave off, `transcription/dormant.h`; the GEO weeks' rows, where "
-        "every thruster moves the whole state and nothing is left off, come from earlier runs "
-        "whose `previous` was the search before row generation: restricted MILPs solved whole, "
-        "no improvement step), `cbc` is the first release's "
+        "(without the branching on thruster totals, `transcription/total_branching.h`; rows "
+        "not re-run since come from earlier runs, whose `previous` was the release before: "
+        "for the Hill-Clohessy-Wiltshire rows the LP on the whole MILP without leaving out "
+        "the blocks of thrusters an optimal schedule can leave off, `transcription/dormant.h`, "
+        "for the GEO weeks the search before row generation), `cbc` is the first release's "
         "path (`--no-search`). Medians over the repeats; \"not reached\" counts as infinite; "
         "the ratios are the other path's time / this release's (> 1: faster now).\n\n";
   MdTable t({"case", "measure", "target (s)", "this release", "previous release", "ratio",

@@ -237,8 +237,8 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search: the LP relaxation on the whole MILP.
-    if (spec.search_previous) search.drop_dormant_blocks = false;
+    // The previous release's search: no branching on thruster totals.
+    if (spec.search_previous) search.total_branching_lps = 0;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;
