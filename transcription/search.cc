@@ -356,21 +356,28 @@ class Search {
       }
       if (last_improvement_mask_.size() == mask.size() && last_improvement_mask_ == mask) continue;
       last_improvement_mask_ = mask;
-      Restriction r = Restrict(mask);
-      if (!r.feasible) continue;
-      ++solved;
-      AddObjectiveCutoff(&r.small, Cutoff());
-      const double t0 = Elapsed();
-      milp::SolveOptions o = RestrictedOptions();
-      o.max_nodes = NodeLimit();
-      const milp::SolveResult s = SolveRestricted(r.small, o);
-      nodes_ += s.nodes;
-      Step("improvement over " + std::to_string(Count(mask)) +
-           " slots: " + std::string(milp::ToString(s.status)) + " in " +
-           FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
-      if (s.has_solution()) Offer(Lift(r, s.x), "the improvement MILP");
+      if (ImproveWithin(mask, "improvement over ", "the improvement MILP")) ++solved;
     }
     return objective_ < before;
+  }
+
+  // The MILP restricted to `mask` with the cutoff one step below the
+  // incumbent; its schedule (if any) offered. False if the restriction is
+  // infeasible by its fixed slots alone (nothing solved).
+  bool ImproveWithin(const Eigen::MatrixXi& mask, const std::string& what,
+                     const std::string& source) {
+    Restriction r = Restrict(mask);
+    if (!r.feasible) return false;
+    AddObjectiveCutoff(&r.small, Cutoff());
+    const double t0 = Elapsed();
+    milp::SolveOptions o = RestrictedOptions();
+    o.max_nodes = NodeLimit();
+    const milp::SolveResult s = SolveRestricted(r.small, o);
+    nodes_ += s.nodes;
+    Step(what + std::to_string(Count(mask)) + " slots: " + std::string(milp::ToString(s.status)) +
+         " in " + FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
+    if (s.has_solution()) Offer(Lift(r, s.x), source);
+    return true;
   }
 
   void ExactRounds() {
@@ -499,18 +506,8 @@ class Search {
     const Eigen::MatrixXi mask =
         CandidateSlots(leaf_x, search_.candidate_threshold, search_.neighbourhood, false);
     if (Count(mask) > search_.max_exact_slots) return;
-    Restriction r = Restrict(mask);
-    if (!r.feasible) return;
-    AddObjectiveCutoff(&r.small, Cutoff());
-    const double t0 = Elapsed();
-    milp::SolveOptions o = RestrictedOptions();
-    o.max_nodes = NodeLimit();
-    const milp::SolveResult s = SolveRestricted(r.small, o);
-    nodes_ += s.nodes;
-    Step("MILP restricted to the lowest leaf's " + std::to_string(Count(mask)) +
-         " slots: " + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) +
-         " s" + lazy_note_);
-    if (s.has_solution()) Offer(Lift(r, s.x), "the lowest leaf's restricted MILP");
+    ImproveWithin(mask, "MILP restricted to the lowest leaf's ",
+                  "the lowest leaf's restricted MILP");
   }
 
   // --------------------------------------------------- 5. the whole MILP
