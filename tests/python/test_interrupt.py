@@ -20,8 +20,13 @@ def test_first_ctrl_c_returns_the_best_schedule_found():
     out, err = _run("once")
     assert out["returned"] and out["interrupted"]
     assert "interrupted: stopping the solve" in err
-    # Stopped before the proof: the incumbent is kept with its open gap.
-    assert out["status"] == "feasible" and out["gap"] > 0
+    # Stopped before the proof: the incumbent is kept with its open gap. CBC
+    # may also close its proof at the root node the signal lands in (on a
+    # quiet machine it proves this one at node 0 right after its first
+    # incumbent): then it is optimal with no gap, as the CLI's signal test
+    # (tests/app/stop_and_output_test.cc) accepts too.
+    assert (out["status"] == "feasible" and out["gap"] > 0) or (
+        out["status"] == "optimal" and out["gap"] == 0), out
     assert out["burns"] > 0 and out["operational_ok"]
     assert out["utc"].startswith("2034-01-0")
     # Within 2 s of the signal (the checker's time excluded).
