@@ -14,7 +14,7 @@
 // S_i >= ceil(y_i) for the relaxation's y_i: two LPs, each the relaxation
 // with one row more, and each usually needs a costlier mix of thrusters
 // (measured on a six-thruster week of the year, 2034-04-02: relaxation 20.66
-// steps; thruster +N at 0.45 slots: 22.91 steps with it off, 21.17 with it
+// steps; thruster +T at 0.45 slots: 22.91 steps with it off, 21.17 with it
 // on for a slot or more, so every schedule costs 22 steps, the heuristic's
 // incumbent). CBC's branching on single slots moves this bound very little in
 // the same time (aggregated branching, as on the number of vehicles in
