@@ -9,16 +9,17 @@
 // Why: when every slot costs one objective step (ScheduleMilp::objective_step),
 // a schedule costs a whole number of steps, and the LP relaxation of a GEO
 // week reaches its bound with thrusters fired for a fractional number of
-// slots (2.27 slots on one, 0.45 on another). The total S_i = sum_j on[i][j]
-// of each thruster is an integer in every schedule, so S_i <= floor(y_i) or
-// S_i >= ceil(y_i) for the relaxation's y_i: two LPs, each the relaxation
-// with one row more, and each usually needs a costlier mix of thrusters
-// (measured on a six-thruster week of the year, 2034-04-02: relaxation 20.66
-// steps; thruster +T at 0.45 slots: 22.91 steps with it off, 21.17 with it
-// on for a slot or more, so every schedule costs 22 steps, the heuristic's
-// incumbent). CBC's branching on single slots moves this bound very little in
-// the same time (aggregated branching, as on the number of vehicles in
-// routing).
+// slots. The total S_i = sum_j on[i][j] of each thruster is an integer in
+// every schedule, so S_i <= floor(y_i) or S_i >= ceil(y_i) for the
+// relaxation's y_i: two LPs, each the relaxation with one row more, and each
+// usually needs a costlier mix of thrusters (the 2034-04-02 six-thruster
+// week of data/scenarios/hard/, `thrustsched-bench --cases
+// 'solver_speed-hard_year_ideal6_fixed_w14*-search'`: relaxation 0.3386 m/s,
+// 20.66 steps; +T is on for 0.45 slots, and the bound is 0.3770 m/s with it
+// off, 0.3606 with it on for a slot or more, so every schedule costs 22
+// steps, the heuristic's incumbent). CBC's branching on single slots did not
+// move this bound in 32 s (previous release, same week): aggregated
+// branching, as on the number of vehicles in routing.
 //
 // The tree is searched best first: the open leaf with the lowest bound is
 // split on its most fractional total. Each leaf's bound is the safe dual
