@@ -315,4 +315,35 @@ void AppendRows(LpData* lp, const std::vector<SparseRow>& rows) {
   }
 }
 
+int AppendColumns(LpData* lp, const std::vector<ColumnSpec>& columns) {
+  const int n = lp->num_cols();
+  const int added = static_cast<int>(columns.size());
+  for (int k = 0; k < added; ++k) {
+    const ColumnSpec& c = columns[static_cast<size_t>(k)];
+    if (std::isnan(c.lower) || std::isnan(c.upper) || std::isnan(c.cost) || c.lower > c.upper) {
+      throw std::invalid_argument("AppendColumns: column " + std::to_string(n + k) +
+                                  (c.name.empty() ? std::string() : " '" + c.name + "'") +
+                                  ": bounds [" + common::FormatG(c.lower, 17) + ", " +
+                                  common::FormatG(c.upper, 17) + "], cost " +
+                                  common::FormatG(c.cost, 17));
+    }
+  }
+  // Columns named when the model's columns are (or, with none yet, its rows).
+  const bool named = n > 0 ? static_cast<int>(lp->col_names.size()) == n : !lp->row_names.empty();
+  lp->a_matrix.conservativeResize(lp->num_rows(), n + added);
+  lp->a_matrix.makeCompressed();
+  lp->col_lower.conservativeResize(n + added);
+  lp->col_upper.conservativeResize(n + added);
+  lp->col_cost.conservativeResize(n + added);
+  for (int k = 0; k < added; ++k) {
+    const ColumnSpec& c = columns[static_cast<size_t>(k)];
+    lp->col_lower[n + k] = c.lower;
+    lp->col_upper[n + k] = c.upper;
+    lp->col_cost[n + k] = c.cost;
+    lp->col_type.push_back(c.type);
+    if (named) lp->col_names.push_back(c.name.empty() ? "C" + std::to_string(n + k) : c.name);
+  }
+  return n;
+}
+
 }  // namespace thrustsched::milp

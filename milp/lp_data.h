@@ -93,6 +93,20 @@ struct SparseRow {
 /// a repeated column or columns and coefficients of different lengths.
 void AppendRows(LpData* lp, const std::vector<SparseRow>& rows);
 
+/// A column to append (no matrix entries: AppendRows gives it its rows).
+struct ColumnSpec {
+  double lower = 0.0;
+  double upper = kInfinity;
+  double cost = 0.0;
+  VarType type = VarType::kContinuous;
+  std::string name;  // used when the model has column names ("" gets C<index>)
+};
+
+/// Appends empty columns after lp's own; returns the index of the first.
+/// @throws std::invalid_argument naming the column for lower > upper or a
+/// bound or cost that is NaN.
+int AppendColumns(LpData* lp, const std::vector<ColumnSpec>& columns);
+
 }  // namespace thrustsched::milp
 
 #endif  // THRUSTSCHED_MILP_LP_DATA_H_

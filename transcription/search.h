@@ -40,8 +40,10 @@
 //     the first net, then
 //  4b. branching on each thruster's number of on slots (an integer in every
 //     schedule) over a few LPs: a better bound, often the proof
-//     (transcription/total_branching.h), then the wider nets, then step 4
-//     again if the incumbent improved.
+//     (transcription/total_branching.h); then the MILP with the lowest
+//     leaf's bounds on the totals, restricted to every slot of the
+//     thrusters its LP fires (or, if too many, the slots it uses), then the
+//     wider nets, then step 4 again if the incumbent improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -98,10 +100,10 @@ struct SearchOptions {
   /// LPs of the tree over each thruster's number of on slots that raises the
   /// bound when the incumbent is not proven (transcription/total_branching.h;
   /// step 4b); 0 (or 1) turns it off. On a six-thruster GEO week each LP is
-  /// an interior point over the whole MILP (~10 s on a quiet machine): one
-  /// split (2 LPs) proved a 2034-04-02 week's incumbent optimal, while on
-  /// another state of that week three splits left the bound where it was.
-  int total_branching_lps = 4;
+  /// an interior point over the whole MILP (~10-20 s; the two of a split
+  /// side by side with two threads): two splits prove week 39 of
+  /// data/scenarios/hard/ optimal (0.377 m/s over a relaxation of 0.3606).
+  int total_branching_lps = 6;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those
   /// thrusters out of the heuristic nets. On thesis Table 4.2 (t1 = 2 d), an

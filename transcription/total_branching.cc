@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <utility>
 #include <vector>
 
@@ -73,7 +74,11 @@ class Tree {
     out.lps = lps_;
     const Leaf& lowest = leaves_[static_cast<size_t>(Lowest())];
     out.bound = lowest.bound;
-    if (lowest.order > 0 && Below(lowest.bound)) out.lowest_leaf_x = lowest.x;
+    if (lowest.order > 0 && Below(lowest.bound) && lowest.x.size() > 0) {
+      out.lowest_leaf_x = lowest.x;
+      out.lowest_leaf_lower = lowest.lower;
+      out.lowest_leaf_upper = lowest.upper;
+    }
     for (const Leaf& leaf : leaves_) out.open_leaves += Below(leaf.bound) ? 1 : 0;
     std::string splits;
     for (const std::string& line : splits_) splits += (splits.empty() ? " (" : "; ") + line;
@@ -106,37 +111,42 @@ class Tree {
       Leaf down = parent, up = parent;
       down.upper[u] = std::floor(y[u]);
       up.lower[u] = std::ceil(y[u]);
-      for (Leaf* child : {&down, &up}) {
-        child->order = ++created_;
-        Solve(child);
-        leaves_.push_back(std::move(*child));
-      }
+      down.order = ++created_;
+      up.order = ++created_;
+      const double t0 = Elapsed();
+      SolvePair(&down, &up);
       splits_.push_back(milp_.problem().thrusters.thruster(i).name + " at " + FormatG(y[u], 4) +
-                        " slots: " + FormatG(leaves_[leaves_.size() - 2].bound, 6) + " / " +
-                        FormatG(leaves_.back().bound, 6));
+                        " slots: " + BoundText(down) + " / " + BoundText(up) + ", " +
+                        FormatG(Elapsed() - t0, 3) + " s");
+      leaves_.push_back(std::move(down));
+      leaves_.push_back(std::move(up));
     }
   }
 
-  // The leaf's LP: the relaxation with a row per thruster whose total is bounded.
-  void Solve(Leaf* leaf) {
-    milp::LpData lp = milp_.lp();
-    const OperationalEncoding& enc = milp_.encoding();
-    std::vector<milp::SparseRow> rows;
-    for (int i = 0; i < enc.num_thrusters; ++i) {
-      const size_t u = static_cast<size_t>(i);
-      if (leaf->lower[u] <= 0.0 && leaf->upper[u] >= enc.num_intervals) continue;
-      milp::SparseRow row;
-      for (int j = 0; j < enc.num_intervals; ++j) row.columns.push_back(enc.on[i][j].index());
-      row.coefficients.assign(row.columns.size(), 1.0);
-      row.lower = leaf->lower[u] > 0.0 ? leaf->lower[u] : -milp::kInfinity;
-      row.upper = leaf->upper[u];
-      row.name = "total_" + std::to_string(i);
-      rows.push_back(std::move(row));
-    }
-    milp::AppendRows(&lp, rows);
+  // The two children of a split, side by side when the caller allows two
+  // threads (each LP runs in its own process: milp/solver.h).
+  void SolvePair(Leaf* down, Leaf* up) {
+    const milp::LpData down_lp = WithThrusterTotals(milp_, down->lower, down->upper);
+    const milp::LpData up_lp = WithThrusterTotals(milp_, up->lower, up->upper);
     milp::SolveOptions o = options_;
     o.time_limit_s = std::max(0.0, Remaining());
-    const milp::LpRelaxationResult r = solver_.SolveLpRelaxation(lp, o);
+    o.threads = 1;
+    milp::LpRelaxationResult down_r, up_r;
+    if (options_.threads >= 2) {
+      std::future<milp::LpRelaxationResult> later =
+          std::async(std::launch::async, [&] { return solver_.SolveLpRelaxation(up_lp, o); });
+      down_r = solver_.SolveLpRelaxation(down_lp, o);
+      up_r = later.get();
+    } else {
+      down_r = solver_.SolveLpRelaxation(down_lp, o);
+      o.time_limit_s = std::max(0.0, Remaining());
+      up_r = solver_.SolveLpRelaxation(up_lp, o);
+    }
+    Take(down_lp, down_r, down);
+    Take(up_lp, up_r, up);
+  }
+
+  void Take(const milp::LpData& lp, const milp::LpRelaxationResult& r, Leaf* leaf) {
     ++lps_;
     leaf->x.resize(0);
     if (r.status == milp::SolveStatus::kInfeasible) {
@@ -144,8 +154,15 @@ class Tree {
     } else if (r.status == milp::SolveStatus::kOptimal) {
       const milp::DualBound b = milp::SafeDualBound(lp, r.row_duals);
       leaf->bound = std::max(leaf->bound, milp::RoundBoundToStep(lp, b.bound, step_));
-      leaf->x = r.x;
+      leaf->x = r.x.head(milp_.lp().num_cols());
     }  // otherwise (a limit): the parent's bound, not split further
+  }
+
+  // A leaf whose LP stopped at a limit keeps its parent's bound and no point.
+  static std::string BoundText(const Leaf& leaf) {
+    return FormatG(leaf.bound, 6) + (leaf.x.size() == 0 && leaf.bound < milp::kInfinity
+                                         ? " (LP stopped, parent's bound)"
+                                         : "");
   }
 
   int Lowest() const {
@@ -163,9 +180,8 @@ class Tree {
     if (!std::isfinite(incumbent_)) return bound < milp::kInfinity;  // no incumbent
     return bound < incumbent_ - 1e-7 * std::max(1.0, std::abs(incumbent_));
   }
-  double Remaining() const {
-    return options_.time_limit_s - std::chrono::duration<double>(Clock::now() - start_).count();
-  }
+  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  double Remaining() const { return options_.time_limit_s - Elapsed(); }
   bool Interrupted() const {
     return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
   }
@@ -183,6 +199,40 @@ class Tree {
 };
 
 }  // namespace
+
+milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
+                                const std::vector<double>& upper) {
+  milp::LpData lp = milp.lp();
+  const OperationalEncoding& enc = milp.encoding();
+  const int n = enc.num_intervals;
+  std::vector<milp::SparseRow> rows;
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    const size_t u = static_cast<size_t>(i);
+    if (lower[u] <= 0.0 && upper[u] >= n) continue;
+    std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
+    for (int j = 0; j < n; ++j) {
+      sums[static_cast<size_t>(j)] = {0.0, j + 1.0, 0.0, milp::VarType::kContinuous,
+                                      "total_" + std::to_string(i) + "_" + std::to_string(j)};
+    }
+    sums.back().lower = std::max(0.0, lower[u]);
+    sums.back().upper = std::min(static_cast<double>(n), upper[u]);
+    const int first = milp::AppendColumns(&lp, sums);
+    for (int j = 0; j < n; ++j) {
+      milp::SparseRow row;  // p_j - p_{j-1} - on[i][j] = 0
+      row.columns = {first + j, enc.on[i][j].index()};
+      row.coefficients = {1.0, -1.0};
+      if (j > 0) {
+        row.columns.push_back(first + j - 1);
+        row.coefficients.push_back(-1.0);
+      }
+      row.lower = row.upper = 0.0;
+      row.name = "total_" + std::to_string(i) + "_" + std::to_string(j);
+      rows.push_back(std::move(row));
+    }
+  }
+  milp::AppendRows(&lp, rows);
+  return lp;
+}
 
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,

@@ -237,7 +237,7 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search: no branching on thruster totals.
+    // The search without branching on thruster totals (matrix.h).
     if (spec.search_previous) search.total_branching_lps = 0;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;

@@ -98,7 +98,9 @@ TEST(BranchOnThrusterTotals, NeverAboveTheProvenOptimumAndRaisesTheRelaxationsBo
         BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound, optimum, slot, 12);
     EXPECT_LE(proof.bound, optimum + 1e-9) << proof.detail;
     EXPECT_GE(proof.bound, root.bound - 1e-12) << proof.detail;
-    if (c.root_slots == c.optimum_slots) EXPECT_EQ(proof.lps, 0) << proof.detail;
+    if (c.root_slots == c.optimum_slots) {
+      EXPECT_EQ(proof.lps, 0) << proof.detail;
+    }
   }
 }
 
@@ -115,6 +117,83 @@ TEST(BranchOnThrusterTotals, StopsAtItsLpLimit) {
   const TotalBranching two = BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound,
                                                     kInf, milp.objective_step(), 2);
   EXPECT_LE(two.lps, 2);
+}
+
+// A leaf's LP against the same bounds on the totals written as one row per
+// thruster (milp::AppendRows), both by primal simplex: the same optimum; and
+// by the interior point the tree uses, whose safe bound is that optimum.
+TEST(WithThrusterTotals, IsTheRelaxationWithTheTotalsBounded) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.05);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const OperationalEncoding& enc = milp.encoding();
+  const Root root = Relaxation(milp, *solver);
+  const size_t m = static_cast<size_t>(enc.num_thrusters);
+  std::vector<double> totals(m, 0.0);
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    for (int j = 0; j < enc.num_intervals; ++j)
+      totals[static_cast<size_t>(i)] += root.x[enc.on[i][j].index()];
+  }
+  // Every thruster held to at most its relaxation's total rounded down, and
+  // the first thruster with a fractional total to at least its rounding up.
+  std::vector<double> lower(m, 0.0), upper(m, enc.num_intervals);
+  bool raised = false;
+  for (size_t i = 0; i < m; ++i) {
+    const double frac = totals[i] - std::floor(totals[i]);
+    if (frac < 1e-3 || frac > 1 - 1e-3) continue;
+    if (!raised) {
+      lower[i] = std::ceil(totals[i]);
+      raised = true;
+    } else {
+      upper[i] = std::floor(totals[i]);
+    }
+  }
+  ASSERT_TRUE(raised) << "the relaxation fires every thruster a whole number of slots";
+  const milp::LpData chained = WithThrusterTotals(milp, lower, upper);
+  milp::LpData dense = milp.lp();
+  std::vector<milp::SparseRow> rows;
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    const size_t u = static_cast<size_t>(i);
+    if (lower[u] <= 0.0 && upper[u] >= enc.num_intervals) continue;
+    milp::SparseRow row;
+    for (int j = 0; j < enc.num_intervals; ++j) row.columns.push_back(enc.on[i][j].index());
+    row.coefficients.assign(row.columns.size(), 1.0);
+    row.lower = lower[u];
+    row.upper = upper[u];
+    rows.push_back(row);
+  }
+  milp::AppendRows(&dense, rows);
+  std::string error;
+  ASSERT_TRUE(chained.IsValid(&error)) << error;
+  EXPECT_EQ(chained.num_cols(),
+            milp.lp().num_cols() + static_cast<int>(rows.size()) * enc.num_intervals);
+
+  milp::SolveOptions simplex;
+  simplex.lp_algorithm = milp::LpAlgorithm::kPrimal;
+  const milp::LpRelaxationResult a = solver->SolveLpRelaxation(chained, simplex);
+  const milp::LpRelaxationResult b = solver->SolveLpRelaxation(dense, simplex);
+  ASSERT_EQ(a.status, milp::SolveStatus::kOptimal) << a.detail;
+  ASSERT_EQ(b.status, milp::SolveStatus::kOptimal) << b.detail;
+  EXPECT_NEAR(a.objective, b.objective, 1e-7 * b.objective);
+  const milp::LpRelaxationResult relaxed = solver->SolveLpRelaxation(milp.lp(), simplex);
+  EXPECT_GT(a.objective, relaxed.objective + 1e-6);  // the bounds bite
+  // The chain's last column is the total, within its bounds.
+  for (size_t i = 0, k = 0; i < m; ++i) {
+    if (lower[i] <= 0.0 && upper[i] >= enc.num_intervals) continue;
+    const int last = milp.lp().num_cols() + static_cast<int>(k + 1) * enc.num_intervals - 1;
+    double total = 0.0;
+    for (int j = 0; j < enc.num_intervals; ++j)
+      total += a.x[enc.on[static_cast<int>(i)][j].index()];
+    EXPECT_NEAR(a.x[last], total, 1e-7);
+    EXPECT_GE(total, lower[i] - 1e-7);
+    EXPECT_LE(total, upper[i] + 1e-7);
+    ++k;
+  }
+  const milp::LpRelaxationResult interior = solver->SolveLpRelaxation(chained, root.options);
+  ASSERT_EQ(interior.status, milp::SolveStatus::kOptimal) << interior.detail;
+  const double safe = milp::SafeDualBound(chained, interior.row_duals).bound;
+  EXPECT_LE(safe, b.objective + 1e-7 * b.objective);
+  EXPECT_GE(safe, b.objective - 1e-5 * b.objective);
 }
 
 }  // namespace
