@@ -119,6 +119,28 @@ TEST(BranchOnThrusterTotals, StopsAtItsLpLimit) {
   EXPECT_LE(two.lps, 2);
 }
 
+// With two threads the children of each split are solved side by side: the
+// same tree, split for split, as one after the other.
+TEST(BranchOnThrusterTotals, TwoThreadsGiveTheSameTree) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.05);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const Root root = Relaxation(milp, *solver);
+  milp::SolveOptions two = root.options;
+  two.threads = 2;
+  const double step = milp.objective_step();
+  const TotalBranching a =
+      BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound, kInf, step, 8);
+  const TotalBranching b =
+      BranchOnThrusterTotals(milp, *solver, two, root.x, root.bound, kInf, step, 8);
+  EXPECT_GT(a.lps, 0) << a.detail;
+  EXPECT_EQ(a.lps, b.lps) << a.detail << "\n" << b.detail;
+  EXPECT_EQ(a.bound, b.bound) << a.detail << "\n" << b.detail;
+  EXPECT_EQ(a.open_leaves, b.open_leaves);
+  EXPECT_EQ(a.lowest_leaf_lower, b.lowest_leaf_lower);
+  EXPECT_EQ(a.lowest_leaf_upper, b.lowest_leaf_upper);
+}
+
 // A leaf's LP against the same bounds on the totals written as one row per
 // thruster (milp::AppendRows), both by primal simplex: the same optimum; and
 // by the interior point the tree uses, whose safe bound is that optimum.
