@@ -363,8 +363,9 @@ class Search {
   }
 
   // The MILP restricted to `mask` with the cutoff one step below the
-  // incumbent (and `extra_rows`, if given); its schedule (if any) offered. False if the restriction
-  // is infeasible by its fixed slots alone (nothing solved).
+  // incumbent (and `extra_rows`, if given); its schedule (if any) offered.
+  // False if the restriction is infeasible by its fixed slots alone (nothing
+  // solved).
   bool ImproveWithin(
       const Eigen::MatrixXi& mask, const std::string& what, const std::string& source,
       const std::function<std::vector<milp::SparseRow>(const Restriction&)>& extra_rows = {}) {
