@@ -102,7 +102,7 @@ struct SearchOptions {
   /// step 4b); 0 (or 1) turns it off. On a six-thruster GEO week each LP is
   /// an interior point over the whole MILP (~10-20 s; the two of a split
   /// side by side with two threads): two splits prove week 39 of
-  /// data/scenarios/hard/ optimal (0.377 m/s over a relaxation of 0.3606).
+  /// data/scenarios/hard/ optimal (0.377 m/s; the rounded relaxation 0.3606).
   int total_branching_lps = 6;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those
