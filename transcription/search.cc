@@ -513,11 +513,10 @@ class Search {
   // schedule, all 2016 slots of -T hold the optimum.
   void LeafHeuristic(const TotalBranching& t) {
     const OperationalEncoding& enc = milp_.encoding();
+    const std::vector<double> totals = ThrusterTotals(enc, t.lowest_leaf_x);
     Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
     for (int i = 0; i < enc.num_thrusters; ++i) {
-      double total = 0.0;
-      for (int j = 0; j < enc.num_intervals; ++j) total += t.lowest_leaf_x[enc.on[i][j].index()];
-      if (total >= search_.candidate_threshold) mask.row(i).setOnes();
+      if (totals[static_cast<size_t>(i)] >= search_.candidate_threshold) mask.row(i).setOnes();
     }
     if (Count(mask) > search_.max_exact_slots) {
       mask = CandidateSlots(t.lowest_leaf_x, search_.candidate_threshold, search_.neighbourhood,

@@ -29,15 +29,6 @@ struct Leaf {
   int order = 0;      // creation order, for ties
 };
 
-std::vector<double> Totals(const OperationalEncoding& enc, const Eigen::VectorXd& x) {
-  std::vector<double> y(static_cast<size_t>(enc.num_thrusters), 0.0);
-  for (int i = 0; i < enc.num_thrusters; ++i) {
-    for (int j = 0; j < enc.num_intervals; ++j)
-      y[static_cast<size_t>(i)] += x[enc.on[i][j].index()];
-  }
-  return y;
-}
-
 // The thruster whose total is nearest to half a slot from an integer; -1 if
 // every total is integral.
 int MostFractional(const std::vector<double>& y) {
@@ -101,7 +92,7 @@ class Tree {
       Leaf parent = std::move(leaves_[static_cast<size_t>(k)]);
       leaves_.erase(leaves_.begin() + k);
       const std::vector<double> y =
-          parent.x.size() > 0 ? Totals(milp_.encoding(), parent.x) : std::vector<double>{};
+          parent.x.size() > 0 ? ThrusterTotals(milp_.encoding(), parent.x) : std::vector<double>{};
       const int i = y.empty() ? -1 : MostFractional(y);
       if (i < 0) {
         leaves_.push_back(std::move(parent));
@@ -199,6 +190,15 @@ class Tree {
 };
 
 }  // namespace
+
+std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::VectorXd& x) {
+  std::vector<double> y(static_cast<size_t>(enc.num_thrusters), 0.0);
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    for (int j = 0; j < enc.num_intervals; ++j)
+      y[static_cast<size_t>(i)] += x[enc.on[i][j].index()];
+  }
+  return y;
+}
 
 milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
                                 const std::vector<double>& upper) {

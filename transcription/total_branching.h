@@ -11,8 +11,8 @@
 // week reaches its bound with thrusters fired for a fractional number of
 // slots. The total S_i = sum_j on[i][j] of each thruster is an integer in
 // every schedule, so S_i <= floor(y_i) or S_i >= ceil(y_i) for the
-// relaxation's y_i: two LPs, each the relaxation with one row more, and each
-// usually needs a costlier mix of thrusters (the 2034-04-02 six-thruster
+// relaxation's y_i: two LPs, each the relaxation with that total bounded,
+// and each usually needs a costlier mix of thrusters (the 2034-04-02 six-thruster
 // week of data/scenarios/hard/, `thrustsched-bench --cases
 // 'solver_speed-hard_year_ideal6_fixed_w14*-search'`: relaxation 0.3386 m/s,
 // 20.66 steps; +T is on for 0.45 slots, and the bound is 0.3770 m/s with it
@@ -25,11 +25,10 @@
 // split on its most fractional total, its two children's LPs
 // (WithThrusterTotals) solved side by side when lp_options.threads >= 2.
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
-// valid whatever the LP's accuracy),
-// rounded up to the step and at least its parent's; an infeasible leaf's is
-// +inf. The leaves cover every schedule, so the lowest leaf bound is a bound
-// of the MILP. Stops when that bound reaches the incumbent (proof), after
-// max_lps LPs, on the time limit or interrupt of lp_options (the bound of
+// valid whatever the LP's accuracy), rounded up to the step and at least
+// its parent's; an infeasible leaf's is +inf. The leaves cover every
+// schedule, so the lowest leaf bound is a bound of the MILP. Stops when that bound reaches the
+// incumbent (proof), after max_lps LPs, on the time limit or interrupt of lp_options (the bound of
 // what was solved stays valid), or when the lowest leaf has integral totals.
 // Deterministic for the same input (no wall-clock decision) unless a time
 // limit or an interrupt cuts it.
@@ -68,6 +67,10 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps);
+
+/// Each thruster's number of on slots at x, a column vector of milp.lp()
+/// (fractional at a relaxation's point).
+std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::VectorXd& x);
 
 /// The LP of a leaf: the relaxation of `milp` (its columns first, in order)
 /// with thruster i's number of on slots within [lower[i], upper[i]] (one

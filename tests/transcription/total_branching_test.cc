@@ -151,11 +151,7 @@ TEST(WithThrusterTotals, IsTheRelaxationWithTheTotalsBounded) {
   const OperationalEncoding& enc = milp.encoding();
   const Root root = Relaxation(milp, *solver);
   const size_t m = static_cast<size_t>(enc.num_thrusters);
-  std::vector<double> totals(m, 0.0);
-  for (int i = 0; i < enc.num_thrusters; ++i) {
-    for (int j = 0; j < enc.num_intervals; ++j)
-      totals[static_cast<size_t>(i)] += root.x[enc.on[i][j].index()];
-  }
+  const std::vector<double> totals = ThrusterTotals(enc, root.x);
   // Every thruster held to at most its relaxation's total rounded down, and
   // the first thruster with a fractional total to at least its rounding up.
   std::vector<double> lower(m, 0.0), upper(m, enc.num_intervals);
