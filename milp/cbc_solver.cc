@@ -149,69 +149,133 @@ class CbcSolverImpl final : public Solver {
                                        SolveResult claimed) const;
   LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
                                          const SolveOptions& options) const override;
+  std::vector<LpRelaxationResult> DoSolveLpRelaxations(const std::vector<const LpData*>& problems,
+                                                       const SolveOptions& options) const override;
   std::unique_ptr<LpSession> DoOpenLpSession(const LpData& problem,
                                              const SolveOptions& options) const override {
     return internal::OpenClpSession(problem, options);
   }
 };
 
-LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
-                                                      const SolveOptions& options) const {
-  SolveClock clock(options.time_limit_s, options.interrupt);
+// One LP relaxation on its way through CLP: the continuous copy and its arrays.
+struct RelaxedLp {
+  const LpData* lp = nullptr;
+  LpData relaxed;
+  double sign = 1.0;
+  internal::CoinArrays arrays;
+  internal::LpOutcome outcome;
+  std::string note;  // why the interior point was not the one that answered
+};
+
+LpRelaxationResult ToRelaxationResult(const RelaxedLp& p, double wall_seconds) {
+  const internal::LpOutcome& o = p.outcome;
   LpRelaxationResult r;
-  if (clock.ShouldStop()) {
-    // Stopped before it started: CLP polls its event handler (and the child
-    // process's parent its flag) only now and then, and a small LP would run
-    // to the end past an interrupt raised before the call.
-    r.status = SolveStatus::kNoSolutionFound;
-    r.detail = clock.stopped_by_interrupt() ? "clp: interrupted" : "clp: time limit";
-    return r;
-  }
-  LpData relaxed = lp;
-  std::fill(relaxed.col_type.begin(), relaxed.col_type.end(), VarType::kContinuous);
-  if (lp.num_cols() == 0 || lp.num_rows() == 0) {
-    const SolveResult t = internal::SolveTrivial(relaxed);
-    r.status = t.status;
-    r.detail = t.detail;
-    r.objective = t.objective;
-    r.x = t.x;
-    if (t.status == SolveStatus::kOptimal) r.row_duals = Eigen::VectorXd::Zero(lp.num_rows());
-    r.wall_seconds = clock.Elapsed();
-    return r;
-  }
-  const double sign = internal::ObjectiveSign(lp);
-  const internal::CoinArrays arrays = internal::MakeArrays(relaxed, sign, false);
-  internal::LpOutcome o;
-  std::string note;
-  const bool interior = options.lp_algorithm == LpAlgorithm::kBarrier ||
-                        options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
-  if (interior && options.cbc.separate_process) {
-    // CLP's interior point may abort() the process (see lp_child.h).
-    internal::LpChildOutcome c = internal::SolveLpCoreInChild(relaxed, arrays, options, &clock);
-    if (c.died) {
-      SolveOptions simplex = options;
-      simplex.lp_algorithm = LpAlgorithm::kPrimal;
-      note = "interior point " + c.why + ", primal simplex instead";
-      o = internal::SolveLpCore(relaxed, arrays, simplex, &clock);
-    } else {
-      o = std::move(c.outcome);
-    }
-  } else {
-    o = internal::SolveLpCore(relaxed, arrays, options, &clock);
-  }
   r.status = o.status;
-  std::string words = note + (note.empty() || o.detail.empty() ? "" : "; ") + o.detail;
+  std::string words = p.note + (p.note.empty() || o.detail.empty() ? "" : "; ") + o.detail;
   r.detail = words.empty() ? "clp" : "clp: " + words;
   r.iterations = o.iterations;
   if (o.status == SolveStatus::kOptimal) {
     r.x = o.x;
-    r.objective = lp.Objective(o.x);
+    r.objective = p.lp->Objective(o.x);
     // CLP's duals are d(min objective)/d(rhs); the model's objective is
     // sign * (min objective) + offset.
-    r.row_duals = sign * o.duals;
+    r.row_duals = p.sign * o.duals;
   }
-  r.wall_seconds = clock.Elapsed();
+  r.wall_seconds = wall_seconds;
   return r;
+}
+
+LpRelaxationResult TrivialRelaxation(const LpData& lp, double wall_seconds) {
+  LpData relaxed = lp;
+  std::fill(relaxed.col_type.begin(), relaxed.col_type.end(), VarType::kContinuous);
+  const SolveResult t = internal::SolveTrivial(relaxed);
+  LpRelaxationResult r;
+  r.status = t.status;
+  r.detail = t.detail;
+  r.objective = t.objective;
+  r.x = t.x;
+  if (t.status == SolveStatus::kOptimal) r.row_duals = Eigen::VectorXd::Zero(lp.num_rows());
+  r.wall_seconds = wall_seconds;
+  return r;
+}
+
+// CLP's interior point for every LP of `batch`, each in its own child process,
+// all at once (see lp_child.h: it may abort()); an LP whose child died is
+// solved again by the primal simplex, here.
+void SolveInChildren(const std::vector<RelaxedLp*>& batch, const SolveOptions& options,
+                     SolveClock* clock) {
+  std::vector<internal::LpCoreJob> jobs;
+  for (const RelaxedLp* p : batch) jobs.push_back({&p->relaxed, &p->arrays});
+  std::vector<internal::LpChildOutcome> got =
+      internal::SolveLpCoresInChildren(jobs, options, clock);
+  for (size_t i = 0; i < batch.size(); ++i) {
+    RelaxedLp& p = *batch[i];
+    if (!got[i].died) {
+      p.outcome = std::move(got[i].outcome);
+      continue;
+    }
+    SolveOptions simplex = options;
+    simplex.lp_algorithm = LpAlgorithm::kPrimal;
+    p.note = "interior point " + got[i].why + ", primal simplex instead";
+    p.outcome = internal::SolveLpCore(p.relaxed, p.arrays, simplex, clock);
+  }
+}
+
+LpRelaxationResult CbcSolverImpl::DoSolveLpRelaxation(const LpData& lp,
+                                                      const SolveOptions& options) const {
+  return DoSolveLpRelaxations({&lp}, options).front();
+}
+
+std::vector<LpRelaxationResult> CbcSolverImpl::DoSolveLpRelaxations(
+    const std::vector<const LpData*>& lps, const SolveOptions& options) const {
+  SolveClock clock(options.time_limit_s, options.interrupt);
+  std::vector<LpRelaxationResult> out(lps.size());
+  if (clock.ShouldStop()) {
+    // Stopped before it started: CLP polls its event handler (and the child
+    // process's parent its flag) only now and then, and a small LP would run
+    // to the end past an interrupt raised before the call.
+    for (LpRelaxationResult& r : out) {
+      r.status = SolveStatus::kNoSolutionFound;
+      r.detail = clock.stopped_by_interrupt() ? "clp: interrupted" : "clp: time limit";
+    }
+    return out;
+  }
+  std::vector<RelaxedLp> prepared(lps.size());
+  std::vector<RelaxedLp*> todo;
+  for (size_t i = 0; i < lps.size(); ++i) {
+    const LpData& lp = *lps[i];
+    if (lp.num_cols() == 0 || lp.num_rows() == 0) {
+      out[i] = TrivialRelaxation(lp, clock.Elapsed());
+      continue;
+    }
+    RelaxedLp& p = prepared[i];
+    p.lp = &lp;
+    p.relaxed = lp;
+    std::fill(p.relaxed.col_type.begin(), p.relaxed.col_type.end(), VarType::kContinuous);
+    p.sign = internal::ObjectiveSign(lp);
+    p.arrays = internal::MakeArrays(p.relaxed, p.sign, false);
+    todo.push_back(&p);
+  }
+  const bool interior = options.lp_algorithm == LpAlgorithm::kBarrier ||
+                        options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
+  const bool in_children = interior && options.cbc.separate_process;
+  // Children run `threads` at a time; in this process, one LP at a time.
+  const size_t at_once = in_children ? static_cast<size_t>(std::max(1, options.threads)) : 1;
+  for (size_t first = 0; first < todo.size(); first += at_once) {
+    const size_t last = std::min(todo.size(), first + at_once);
+    const std::vector<RelaxedLp*> batch(todo.begin() + static_cast<std::ptrdiff_t>(first),
+                                        todo.begin() + static_cast<std::ptrdiff_t>(last));
+    if (in_children) {
+      SolveInChildren(batch, options, &clock);
+    } else {
+      batch.front()->outcome =
+          internal::SolveLpCore(batch.front()->relaxed, batch.front()->arrays, options, &clock);
+    }
+    for (const RelaxedLp* p : batch) {
+      out[static_cast<size_t>(p - prepared.data())] = ToRelaxationResult(*p, clock.Elapsed());
+    }
+  }
+  return out;
 }
 
 // A model without integer columns: CLP alone.

@@ -153,21 +153,61 @@ SolveResult Solver::Solve(const LpData& problem, const SolveOptions& options) co
   return result;
 }
 
+namespace {
+
+// The safe dual bound (milp/dual_bound.h) and the wall time, for every backend.
+void CompleteRelaxationResult(const LpData& problem, std::chrono::steady_clock::time_point start,
+                              LpRelaxationResult* result) {
+  if (result->row_duals.size() == problem.num_rows() && problem.num_rows() > 0) {
+    result->dual_bound = SafeDualBound(problem, result->row_duals).bound;
+  } else if (result->status == SolveStatus::kOptimal) {
+    result->dual_bound = result->objective;  // no rows: the optimum is exact
+  }
+  if (result->wall_seconds <= 0.0) {
+    result->wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+}
+
+}  // namespace
+
 LpRelaxationResult Solver::SolveLpRelaxation(const LpData& problem,
                                              const SolveOptions& options) const {
   Validate(problem, options, "Solver::SolveLpRelaxation");
   const auto start = std::chrono::steady_clock::now();
   LpRelaxationResult result = DoSolveLpRelaxation(problem, options);
-  if (result.row_duals.size() == problem.num_rows() && problem.num_rows() > 0) {
-    result.dual_bound = SafeDualBound(problem, result.row_duals).bound;
-  } else if (result.status == SolveStatus::kOptimal) {
-    result.dual_bound = result.objective;  // no rows: the optimum is exact
-  }
-  if (result.wall_seconds <= 0.0) {
-    result.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
+  CompleteRelaxationResult(problem, start, &result);
   return result;
+}
+
+std::vector<LpRelaxationResult> Solver::SolveLpRelaxations(
+    const std::vector<const LpData*>& problems, const SolveOptions& options) const {
+  for (const LpData* p : problems) {
+    if (p == nullptr) throw std::invalid_argument("Solver::SolveLpRelaxations: null problem");
+    Validate(*p, options, "Solver::SolveLpRelaxations");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<LpRelaxationResult> results = DoSolveLpRelaxations(problems, options);
+  for (size_t i = 0; i < problems.size(); ++i) {
+    CompleteRelaxationResult(*problems[i], start, &results[i]);
+  }
+  return results;
+}
+
+std::vector<LpRelaxationResult> Solver::DoSolveLpRelaxations(
+    const std::vector<const LpData*>& problems, const SolveOptions& options) const {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<LpRelaxationResult> results;
+  for (const LpData* p : problems) {
+    SolveOptions o = options;
+    if (std::isfinite(options.time_limit_s)) {
+      const double used =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      o.time_limit_s = std::max(0.0, options.time_limit_s - used);
+    }
+    results.push_back(DoSolveLpRelaxation(*p, o));
+  }
+  return results;
 }
 
 namespace {

@@ -246,6 +246,14 @@ class Solver {
   /// Solves the LP relaxation. @throws as Solve.
   LpRelaxationResult SolveLpRelaxation(const LpData& problem,
                                        const SolveOptions& options = {}) const;
+  /// Solves the LP relaxations of several problems with the same options;
+  /// result i belongs to *problems[i], and is what SolveLpRelaxation gives
+  /// for it. options.time_limit_s is for the whole call. With
+  /// options.threads >= 2 a backend may solve up to `threads` of them at once
+  /// (the CBC backend does for its interior point, each LP in a child
+  /// process, all started from the calling thread). @throws as Solve.
+  std::vector<LpRelaxationResult> SolveLpRelaxations(const std::vector<const LpData*>& problems,
+                                                     const SolveOptions& options = {}) const;
   /// Opens an LP session on the continuous relaxation of `problem` (copied).
   /// @throws as Solve.
   std::unique_ptr<LpSession> OpenLpSession(const LpData& problem,
@@ -255,6 +263,10 @@ class Solver {
   virtual SolveResult DoSolve(const LpData& problem, const SolveOptions& options) const = 0;
   virtual LpRelaxationResult DoSolveLpRelaxation(const LpData& problem,
                                                  const SolveOptions& options) const = 0;
+  /// Default: one after another through DoSolveLpRelaxation, each with the
+  /// time left.
+  virtual std::vector<LpRelaxationResult> DoSolveLpRelaxations(
+      const std::vector<const LpData*>& problems, const SolveOptions& options) const;
   /// Default: a session that solves each time from scratch through
   /// DoSolveLpRelaxation (backends override it with a warm-started one).
   virtual std::unique_ptr<LpSession> DoOpenLpSession(const LpData& problem,

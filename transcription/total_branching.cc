@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <utility>
 #include <vector>
 
@@ -115,26 +114,16 @@ class Tree {
   }
 
   // The two children of a split, side by side when the caller allows two
-  // threads (each LP runs in its own process: milp/solver.h).
+  // threads (milp::Solver::SolveLpRelaxations: each LP in its own process).
   void SolvePair(Leaf* down, Leaf* up) {
     const milp::LpData down_lp = WithThrusterTotals(milp_, down->lower, down->upper);
     const milp::LpData up_lp = WithThrusterTotals(milp_, up->lower, up->upper);
     milp::SolveOptions o = options_;
     o.time_limit_s = std::max(0.0, Remaining());
-    o.threads = 1;
-    milp::LpRelaxationResult down_r, up_r;
-    if (options_.threads >= 2) {
-      std::future<milp::LpRelaxationResult> later =
-          std::async(std::launch::async, [&] { return solver_.SolveLpRelaxation(up_lp, o); });
-      down_r = solver_.SolveLpRelaxation(down_lp, o);
-      up_r = later.get();
-    } else {
-      down_r = solver_.SolveLpRelaxation(down_lp, o);
-      o.time_limit_s = std::max(0.0, Remaining());
-      up_r = solver_.SolveLpRelaxation(up_lp, o);
-    }
-    Take(down_lp, down_r, down);
-    Take(up_lp, up_r, up);
+    const std::vector<milp::LpRelaxationResult> r =
+        solver_.SolveLpRelaxations({&down_lp, &up_lp}, o);
+    Take(down_lp, r[0], down);
+    Take(up_lp, r[1], up);
   }
 
   void Take(const milp::LpData& lp, const milp::LpRelaxationResult& r, Leaf* leaf) {

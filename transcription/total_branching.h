@@ -23,7 +23,9 @@
 //
 // The tree is searched best first: the open leaf with the lowest bound is
 // split on its most fractional total, its two children's LPs
-// (WithThrusterTotals) solved side by side when lp_options.threads >= 2.
+// (WithThrusterTotals) solved side by side when lp_options.threads >= 2
+// (milp::Solver::SolveLpRelaxations: one child process each, both forked
+// from the calling thread).
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
 // its parent's; an infeasible leaf's is +inf. The leaves cover every

@@ -109,68 +109,133 @@ int Reap(pid_t pid) {
   return wstatus;
 }
 
-}  // namespace
+// One child: its process, the read end of its pipe and what came through it.
+struct Child {
+  pid_t pid = -1;
+  int fd = -1;  // closed (-1) at EOF
+  std::vector<char> buf;
+  double offset_s = 0.0;  // the parent's clock when the child's started
+  bool in_outcome = false;
+  LpChildOutcome result;
+};
 
-LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
-                                  const SolveOptions& options, SolveClock* clock) {
-  LpChildOutcome c;
+// Forks the child for `job`; on failure marks the result as died.
+void Start(const LpCoreJob& job, const SolveOptions& options, SolveClock* clock, Child* c) {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) {
-    c.died = true;
-    c.why = std::string("pipe: ") + std::strerror(errno);
-    return c;
+    c->result.died = true;
+    c->result.why = std::string("pipe: ") + std::strerror(errno);
+    return;
   }
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]);
     close(fds[1]);
-    c.died = true;
-    c.why = std::string("fork: ") + std::strerror(errno);
-    return c;
+    c->result.died = true;
+    c->result.why = std::string("fork: ") + std::strerror(errno);
+    return;
   }
   if (pid == 0) {
     close(fds[0]);
-    RunChild(fds[1], lp, arrays, options, clock->Remaining());
+    RunChild(fds[1], *job.lp, *job.arrays, options, clock->Remaining());
   }
   close(fds[1]);
-  std::vector<char> buf;
-  char chunk[1 << 16];
-  const double offset_s = clock->Elapsed();  // the child's clock starts here
-  double next_report = offset_s + options.progress_interval_s;
-  bool stopped = false;
-  bool in_outcome = false;
-  // Hands on the progress frames at the front of buf; stops at the outcome.
-  auto drain = [&]() {
-    size_t at = 0;
-    while (!in_outcome && at < buf.size()) {
-      if (buf[at] == kOutcomeFrame) {
-        in_outcome = true;
-        ++at;
-        break;
-      }
-      if (buf.size() - at < 1 + sizeof(SolveProgress)) break;
-      SolveProgress pr;
-      std::memcpy(&pr, buf.data() + at + 1, sizeof(pr));
-      at += 1 + sizeof(pr);
-      pr.wall_seconds += offset_s;
-      next_report = clock->Elapsed() + options.progress_interval_s;
-      if (options.progress) options.progress(pr);
+  c->pid = pid;
+  c->fd = fds[0];
+  c->offset_s = clock->Elapsed();
+}
+
+// Hands on the progress frames at the front of c->buf; stops at the outcome.
+// Returns whether a report went on.
+bool Drain(const SolveOptions& options, Child* c) {
+  size_t at = 0;
+  bool reported = false;
+  while (!c->in_outcome && at < c->buf.size()) {
+    if (c->buf[at] == kOutcomeFrame) {
+      c->in_outcome = true;
+      ++at;
+      break;
     }
-    buf.erase(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(at));
-  };
+    if (c->buf.size() - at < 1 + sizeof(SolveProgress)) break;
+    SolveProgress pr;
+    std::memcpy(&pr, c->buf.data() + at + 1, sizeof(pr));
+    at += 1 + sizeof(pr);
+    pr.wall_seconds += c->offset_s;
+    reported = true;
+    if (options.progress) options.progress(pr);
+  }
+  c->buf.erase(c->buf.begin(), c->buf.begin() + static_cast<std::ptrdiff_t>(at));
+  return reported;
+}
+
+// Reaps the child and turns what it sent into its outcome.
+void Finish(bool stopped, SolveClock* clock, Child* c) {
+  if (c->fd >= 0) close(c->fd);
+  c->fd = -1;
+  const int wstatus = Reap(c->pid);
+  LpChildOutcome& r = c->result;
+  if (stopped) {
+    r.outcome.status = SolveStatus::kNoSolutionFound;
+    r.outcome.detail = clock->stopped_by_interrupt() ? "interrupted" : "time limit";
+    return;
+  }
+  if (c->in_outcome && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 &&
+      Parse(c->buf, &r.outcome)) {
+    return;
+  }
+  r.died = true;
+  if (WIFSIGNALED(wstatus)) {
+    r.why = "killed by signal " + std::to_string(WTERMSIG(wstatus)) + " (" +
+            strsignal(WTERMSIG(wstatus)) + ")";
+  } else {
+    r.why = "exited with status " + std::to_string(WEXITSTATUS(wstatus)) + " without an outcome";
+  }
+}
+
+}  // namespace
+
+std::vector<LpChildOutcome> SolveLpCoresInChildren(const std::vector<LpCoreJob>& jobs,
+                                                   const SolveOptions& options, SolveClock* clock) {
+  // Every child is forked here, from this one thread, before any is read:
+  // a fork taken while another thread of this process holds a lock (of the
+  // allocator, say) can leave the child waiting on that lock forever.
+  std::vector<Child> children(jobs.size());
+  for (size_t i = 0; i < jobs.size(); ++i) Start(jobs[i], options, clock, &children[i]);
+  double next_report = clock->Elapsed() + options.progress_interval_s;
+  bool stopped = false;
+  char chunk[1 << 16];
+  std::vector<pollfd> polled;
+  std::vector<Child*> owner;
   for (;;) {
-    pollfd p{fds[0], POLLIN, 0};
-    const int ready = poll(&p, 1, 50);
+    polled.clear();
+    owner.clear();
+    for (Child& c : children) {
+      if (c.fd < 0) continue;
+      polled.push_back(pollfd{c.fd, POLLIN, 0});
+      owner.push_back(&c);
+    }
+    if (polled.empty()) break;
+    const int ready = poll(polled.data(), polled.size(), 50);
     if (ready > 0) {
-      const ssize_t n = read(fds[0], chunk, sizeof(chunk));
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;  // EOF: the child is done (or dead)
-      buf.insert(buf.end(), chunk, chunk + n);
-      drain();
+      for (size_t k = 0; k < polled.size(); ++k) {
+        if (polled[k].revents == 0) continue;
+        Child& c = *owner[k];
+        const ssize_t n = read(c.fd, chunk, sizeof(chunk));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {  // EOF: the child is done (or dead)
+          close(c.fd);
+          c.fd = -1;
+          continue;
+        }
+        c.buf.insert(c.buf.end(), chunk, chunk + n);
+        if (Drain(options, &c)) next_report = clock->Elapsed() + options.progress_interval_s;
+      }
       continue;
     }
     if (clock->ShouldStop()) {
-      kill(pid, SIGKILL);
+      for (Child& c : children) {
+        if (c.fd >= 0) kill(c.pid, SIGKILL);
+      }
       stopped = true;
       break;
     }
@@ -183,24 +248,19 @@ LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
       options.progress(pr);
     }
   }
-  close(fds[0]);
-  const int wstatus = Reap(pid);
-  if (stopped) {
-    c.outcome.status = SolveStatus::kNoSolutionFound;
-    c.outcome.detail = clock->stopped_by_interrupt() ? "interrupted" : "time limit";
-    return c;
+  std::vector<LpChildOutcome> out;
+  out.reserve(children.size());
+  for (Child& c : children) {
+    // A child that ended before the stop keeps its outcome.
+    if (c.pid > 0) Finish(stopped && c.fd >= 0, clock, &c);
+    out.push_back(std::move(c.result));
   }
-  if (in_outcome && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 && Parse(buf, &c.outcome)) {
-    return c;
-  }
-  c.died = true;
-  if (WIFSIGNALED(wstatus)) {
-    c.why = "killed by signal " + std::to_string(WTERMSIG(wstatus)) + " (" +
-            strsignal(WTERMSIG(wstatus)) + ")";
-  } else {
-    c.why = "exited with status " + std::to_string(WEXITSTATUS(wstatus)) + " without an outcome";
-  }
-  return c;
+  return out;
+}
+
+LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
+                                  const SolveOptions& options, SolveClock* clock) {
+  return SolveLpCoresInChildren({LpCoreJob{&lp, &arrays}}, options, clock).front();
 }
 
 }  // namespace thrustsched::milp::internal

@@ -2,6 +2,8 @@
 //
 //   LpChildOutcome c = SolveLpCoreInChild(lp, arrays, options, &clock);
 //   if (c.died) { /* c.why names the signal; solve with the simplex instead */ }
+//   std::vector<LpChildOutcome> two =
+//       SolveLpCoresInChildren({{&lp_a, &arrays_a}, {&lp_b, &arrays_b}}, options, &clock);
 //
 // Why: CLP 1.17's predictor-corrector calls abort() when its iterate diverges
 // ("primal off to infinity", ClpPredictorCorrector::updateSolution), which
@@ -14,10 +16,13 @@
 // (status, iterations, objective, x, duals, detail); the parent hands the
 // reports to options.progress as they come, and adds a heartbeat in the
 // root-LP phase when the child has been silent for options.progress_interval_s.
+// Several LPs run at once as several children, all forked from the calling
+// thread (never fork from two threads at once: see lp_child.cc).
 #ifndef THRUSTSCHED_MILP_INTERNAL_LP_CHILD_H_
 #define THRUSTSCHED_MILP_INTERNAL_LP_CHILD_H_
 
 #include <string>
+#include <vector>
 
 #include "milp/internal/clp_lp.h"
 
@@ -28,6 +33,16 @@ struct LpChildOutcome {
   bool died = false;  // the child ended without an outcome (signal or exit)
   std::string why;    // e.g. "killed by signal 6 (Aborted)"
 };
+
+struct LpCoreJob {
+  const LpData* lp = nullptr;
+  const CoinArrays* arrays = nullptr;
+};
+
+/// One child per job, all running at once; outcome i belongs to jobs[i].
+/// The clock's stop ends them all (status kNoSolutionFound).
+std::vector<LpChildOutcome> SolveLpCoresInChildren(const std::vector<LpCoreJob>& jobs,
+                                                   const SolveOptions& options, SolveClock* clock);
 
 LpChildOutcome SolveLpCoreInChild(const LpData& lp, const CoinArrays& arrays,
                                   const SolveOptions& options, SolveClock* clock);

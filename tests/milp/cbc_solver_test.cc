@@ -543,6 +543,58 @@ TEST(LpRelaxationTest, ParallelLpSolvesMatchSequentialOnes) {
   }
 }
 
+// Several relaxations in one call (interior point, each in a child process,
+// two at a time, all forked from this thread, so no ASan skip): each result
+// is the hand-derived value and what the one-LP call gives, with the
+// sequential path (one thread) and the in-process path agreeing.
+TEST(LpRelaxationTest, SeveralAtOnceMatchOneByOne) {
+  std::vector<LpData> models;
+  std::vector<const LpData*> all;
+  for (const CatalogProblem& p : Catalog()) models.push_back(p.build());
+  for (unsigned seed = 1; seed <= 3; ++seed) models.push_back(RandomKnapsack(300, 20, seed));
+  for (const LpData& lp : models) all.push_back(&lp);
+  auto solver = MakeCbcSolver();
+  SolveOptions o;
+  o.lp_algorithm = LpAlgorithm::kBarrier;
+  for (int threads : {1, 2, 3}) {
+    for (bool separate : {true, false}) {
+      o.threads = threads;
+      o.cbc.separate_process = separate;
+      const std::vector<LpRelaxationResult> got = solver->SolveLpRelaxations(all, o);
+      ASSERT_EQ(got.size(), models.size());
+      for (size_t k = 0; k < models.size(); ++k) {
+        const LpRelaxationResult one = solver->SolveLpRelaxation(models[k], o);
+        const std::string what = models[k].name + " threads " + std::to_string(threads) +
+                                 (separate ? " children" : " in process");
+        ASSERT_EQ(got[k].status, one.status) << what << ": " << got[k].detail;
+        if (k < Catalog().size() && !std::isnan(Catalog()[k].lp_objective)) {
+          ASSERT_EQ(got[k].status, SolveStatus::kOptimal) << what;
+          EXPECT_NEAR(got[k].objective, Catalog()[k].lp_objective, kTol) << what;
+        }
+        if (one.status != SolveStatus::kOptimal) continue;
+        EXPECT_EQ(got[k].objective, one.objective) << what;
+        EXPECT_EQ(got[k].x, one.x) << what;
+        EXPECT_EQ(got[k].row_duals.size(), models[k].num_rows()) << what;
+        EXPECT_EQ(got[k].dual_bound, one.dual_bound) << what;
+      }
+    }
+  }
+  EXPECT_TRUE(solver->SolveLpRelaxations({}, o).empty());
+}
+
+// A time limit spent before the call stops every LP of it.
+TEST(LpRelaxationTest, SeveralAtOnceStopTogether) {
+  const LpData a = RandomKnapsack(300, 20, 1), b = RandomKnapsack(300, 20, 2);
+  SolveOptions o;
+  o.lp_algorithm = LpAlgorithm::kBarrier;
+  o.threads = 2;
+  o.time_limit_s = 0.0;
+  for (const LpRelaxationResult& r : MakeCbcSolver()->SolveLpRelaxations({&a, &b}, o)) {
+    EXPECT_EQ(r.status, SolveStatus::kNoSolutionFound) << r.detail;
+    EXPECT_THAT(r.detail, HasSubstr("time limit"));
+  }
+}
+
 TEST(CbcSolverTest, ThreadsOptionUsesCbcParallelMode) {
   SolveOptions o;
   o.threads = 2;
