@@ -11,6 +11,10 @@
 // input (LpData::IsValid false, options invalid) throws std::invalid_argument.
 // Same input and options (threads == 1) give the same answer. Distinct Solver
 // instances, or one instance called from several threads, may solve in parallel.
+// For several LP relaxations at once prefer one SolveLpRelaxations call from
+// one thread: the CBC backend forks a child process per solve, and a fork from
+// one thread while another holds a lock of the allocator (ASan's does not
+// reset its locks at fork) can leave the child stuck.
 #ifndef THRUSTSCHED_MILP_SOLVER_H_
 #define THRUSTSCHED_MILP_SOLVER_H_
 

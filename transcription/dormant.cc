@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
+#include <vector>
 
 #include "milp/lp_blocks.h"
 
@@ -89,7 +89,7 @@ DormantThrusters FindDormantThrusters(const ScheduleMilp& milp) {
   d.all_off = milp.StartFromPattern(Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals));
   // A block is broken by the all-off point if one of its own rows or columns is.
   std::vector<bool> broken(static_cast<size_t>(d.num_blocks), false);
-  constexpr double kTolerance = 1e-6;  // the search's own feasibility test
+  constexpr double kTolerance = ScheduleMilp::kPatternFeasibilityTolerance;
   for (int j = 0; j < lp.num_cols(); ++j) {
     const double v = d.all_off[j];
     if (!std::isfinite(v) || v < lp.col_lower[j] - kTolerance || v > lp.col_upper[j] + kTolerance) {
@@ -110,7 +110,7 @@ DormantThrusters FindDormantThrusters(const ScheduleMilp& milp) {
       broken[static_cast<size_t>(row_block[static_cast<size_t>(r)])] = true;
     }
   }
-  std::set<int> dormant_blocks;
+  std::vector<bool> dormant_block(static_cast<size_t>(d.num_blocks), false);
   for (int i = 0; i < enc.num_thrusters; ++i) {
     bool off = true;
     for (const milp::Variable& v : enc.on[static_cast<size_t>(i)]) {
@@ -119,11 +119,12 @@ DormantThrusters FindDormantThrusters(const ScheduleMilp& milp) {
     d.thruster[static_cast<size_t>(i)] = off;
     if (!off) continue;
     for (const milp::Variable& v : enc.on[static_cast<size_t>(i)]) {
-      dormant_blocks.insert(block[static_cast<size_t>(v.index())]);
+      dormant_block[static_cast<size_t>(block[static_cast<size_t>(v.index())])] = true;
     }
   }
   for (int j = 0; j < lp.num_cols(); ++j) {
-    d.column[static_cast<size_t>(j)] = dormant_blocks.count(block[static_cast<size_t>(j)]) > 0;
+    d.column[static_cast<size_t>(j)] =
+        dormant_block[static_cast<size_t>(block[static_cast<size_t>(j)])];
   }
   return d;
 }

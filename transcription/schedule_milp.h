@@ -151,6 +151,10 @@ class ScheduleMilp {
   Eigen::VectorXd StartFromBurns(const std::vector<Burn>& burns) const;
   /// Same from a 0/1 pattern (thrusters x intervals).
   Eigen::VectorXd StartFromPattern(const Eigen::MatrixXi& pattern) const;
+  /// Largest violation (bounds and rows, model units) at which a point built
+  /// by StartFromPattern or CompleteFromPattern is taken as a schedule of
+  /// the MILP (the search's incumbents; dormant.h's all-off blocks).
+  static constexpr double kPatternFeasibilityTolerance = 1e-6;
   /// Completes a column vector from its on-off columns (the rest, which may
   /// be NaN, recomputed as StartFromPattern does). False, x unchanged, if an
   /// on-off entry is NaN or not 0/1, or in impulsive mode. (The solver's

@@ -146,7 +146,9 @@ class Search {
   // A point of the full MILP: verified, then the incumbent if better.
   bool Offer(Eigen::VectorXd x, const std::string& source) {
     if (x.size() != lp_.num_cols()) return false;
-    if (!milp_.CompleteFromPattern(&x) || lp_.MaxViolation(x) > 1e-6) return false;
+    if (!milp_.CompleteFromPattern(&x) ||
+        lp_.MaxViolation(x) > ScheduleMilp::kPatternFeasibilityTolerance)
+      return false;
     const double obj = lp_.Objective(x);
     if (has_incumbent() && !(obj < objective_ - 1e-12 * std::max(1.0, std::abs(obj)))) return false;
     x_ = std::move(x);
@@ -541,7 +543,7 @@ class Search {
     std::vector<milp::SparseRow> rows;
     for (int i = 0; i < enc.num_thrusters; ++i) {
       const size_t u = static_cast<size_t>(i);
-      if (lower[u] <= 0.0 && upper[u] >= enc.num_intervals) continue;
+      if (!TotalIsBounded(lower[u], upper[u], enc.num_intervals)) continue;
       milp::SparseRow row;
       double fixed_on = 0.0;  // slots fixed on (removed with their value)
       for (int j = 0; j < enc.num_intervals; ++j) {

@@ -197,7 +197,7 @@ milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<doub
   std::vector<milp::SparseRow> rows;
   for (int i = 0; i < enc.num_thrusters; ++i) {
     const size_t u = static_cast<size_t>(i);
-    if (lower[u] <= 0.0 && upper[u] >= n) continue;
+    if (!TotalIsBounded(lower[u], upper[u], n)) continue;
     std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
     for (int j = 0; j < n; ++j) {
       sums[static_cast<size_t>(j)] = {0.0, j + 1.0, 0.0, milp::VarType::kContinuous,

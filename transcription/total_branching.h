@@ -70,6 +70,12 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps);
 
+/// Whether bounds [lower, upper] on a thruster's total cut anything: a total
+/// lies in [0, num_intervals] anyway.
+inline bool TotalIsBounded(double lower, double upper, int num_intervals) {
+  return lower > 0.0 || upper < num_intervals;
+}
+
 /// Each thruster's number of on slots at x, a column vector of milp.lp()
 /// (fractional at a relaxation's point).
 std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::VectorXd& x);

@@ -141,6 +141,29 @@ TEST(BranchOnThrusterTotals, TwoThreadsGiveTheSameTree) {
   EXPECT_EQ(a.lowest_leaf_upper, b.lowest_leaf_upper);
 }
 
+// Bounds that cut nothing add nothing to a leaf's LP; one bounded thruster
+// adds its chain of partial sums (one column and one row per slot).
+TEST(WithThrusterTotals, AddsAChainOnlyForABoundedTotal) {
+  const ScheduleProblem p = HcwDay(6000.0, 0.05);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const OperationalEncoding& enc = milp.encoding();
+  const int n = enc.num_intervals;
+  const size_t m = static_cast<size_t>(enc.num_thrusters);
+  EXPECT_FALSE(TotalIsBounded(0.0, n, n));
+  EXPECT_FALSE(TotalIsBounded(-1.0, n + 1.0, n));
+  EXPECT_TRUE(TotalIsBounded(1.0, n, n));
+  EXPECT_TRUE(TotalIsBounded(0.0, n - 1.0, n));
+  std::vector<double> lower(m, 0.0), upper(m, n);
+  const milp::LpData same = WithThrusterTotals(milp, lower, upper);
+  EXPECT_EQ(same.num_cols(), milp.lp().num_cols());
+  EXPECT_EQ(same.num_rows(), milp.lp().num_rows());
+  upper[1] = 3.0;
+  const milp::LpData one = WithThrusterTotals(milp, lower, upper);
+  EXPECT_EQ(one.num_cols(), milp.lp().num_cols() + n);
+  EXPECT_EQ(one.num_rows(), milp.lp().num_rows() + n);
+  EXPECT_EQ(one.col_upper[one.num_cols() - 1], 3.0);
+}
+
 // A leaf's LP against the same bounds on the totals written as one row per
 // thruster (milp::AppendRows), both by primal simplex: the same optimum; and
 // by the interior point the tree uses, whose safe bound is that optimum.
