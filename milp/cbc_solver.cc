@@ -241,7 +241,7 @@ std::vector<LpRelaxationResult> CbcSolverImpl::DoSolveLpRelaxations(
     return out;
   }
   std::vector<RelaxedLp> prepared(lps.size());
-  std::vector<RelaxedLp*> todo;
+  std::vector<size_t> todo;  // indices of the LPs for CLP
   for (size_t i = 0; i < lps.size(); ++i) {
     const LpData& lp = *lps[i];
     if (lp.num_cols() == 0 || lp.num_rows() == 0) {
@@ -254,7 +254,7 @@ std::vector<LpRelaxationResult> CbcSolverImpl::DoSolveLpRelaxations(
     std::fill(p.relaxed.col_type.begin(), p.relaxed.col_type.end(), VarType::kContinuous);
     p.sign = internal::ObjectiveSign(lp);
     p.arrays = internal::MakeArrays(p.relaxed, p.sign, false);
-    todo.push_back(&p);
+    todo.push_back(i);
   }
   const bool interior = options.lp_algorithm == LpAlgorithm::kBarrier ||
                         options.lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
@@ -263,16 +263,17 @@ std::vector<LpRelaxationResult> CbcSolverImpl::DoSolveLpRelaxations(
   const size_t at_once = in_children ? static_cast<size_t>(std::max(1, options.threads)) : 1;
   for (size_t first = 0; first < todo.size(); first += at_once) {
     const size_t last = std::min(todo.size(), first + at_once);
-    const std::vector<RelaxedLp*> batch(todo.begin() + static_cast<std::ptrdiff_t>(first),
-                                        todo.begin() + static_cast<std::ptrdiff_t>(last));
+    std::vector<RelaxedLp*> batch;
+    for (size_t k = first; k < last; ++k) batch.push_back(&prepared[todo[k]]);
     if (in_children) {
       SolveInChildren(batch, options, &clock);
     } else {
-      batch.front()->outcome =
-          internal::SolveLpCore(batch.front()->relaxed, batch.front()->arrays, options, &clock);
+      for (RelaxedLp* p : batch) {
+        p->outcome = internal::SolveLpCore(p->relaxed, p->arrays, options, &clock);
+      }
     }
-    for (const RelaxedLp* p : batch) {
-      out[static_cast<size_t>(p - prepared.data())] = ToRelaxationResult(*p, clock.Elapsed());
+    for (size_t k = first; k < last; ++k) {
+      out[todo[k]] = ToRelaxationResult(prepared[todo[k]], clock.Elapsed());
     }
   }
   return out;

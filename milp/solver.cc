@@ -155,7 +155,7 @@ SolveResult Solver::Solve(const LpData& problem, const SolveOptions& options) co
 
 namespace {
 
-// The safe dual bound (milp/dual_bound.h) and the wall time, for every backend.
+// The safe dual bound (milp/lp_bound.h) and the wall time, for every backend.
 void CompleteRelaxationResult(const LpData& problem, std::chrono::steady_clock::time_point start,
                               LpRelaxationResult* result) {
   if (result->row_duals.size() == problem.num_rows() && problem.num_rows() > 0) {

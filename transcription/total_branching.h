@@ -29,9 +29,10 @@
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
 // its parent's; an infeasible leaf's is +inf. The leaves cover every
-// schedule, so the lowest leaf bound is a bound of the MILP. Stops when that bound reaches the
-// incumbent (proof), after max_lps LPs, on the time limit or interrupt of lp_options (the bound of
-// what was solved stays valid), or when the lowest leaf has integral totals.
+// schedule, so the lowest leaf bound is a bound of the MILP. Stops when
+// that bound reaches the incumbent (proof), after max_lps LPs, on the time
+// limit or interrupt of lp_options (the bound of what was solved stays
+// valid), or when the lowest leaf has integral totals.
 // Deterministic for the same input (no wall-clock decision) unless a time
 // limit or an interrupt cuts it.
 #ifndef THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_

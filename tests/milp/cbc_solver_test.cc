@@ -544,9 +544,9 @@ TEST(LpRelaxationTest, ParallelLpSolvesMatchSequentialOnes) {
 }
 
 // Several relaxations in one call (interior point, each in a child process,
-// two at a time, all forked from this thread, so no ASan skip): each result
-// is the hand-derived value and what the one-LP call gives, with the
-// sequential path (one thread) and the in-process path agreeing.
+// `threads` at a time, all forked from this thread, so no ASan skip): each
+// result is the hand-derived value and what the one-LP call gives, for one,
+// two and three at a time and for the in-process path.
 TEST(LpRelaxationTest, SeveralAtOnceMatchOneByOne) {
   std::vector<LpData> models;
   std::vector<const LpData*> all;
