@@ -498,8 +498,9 @@ class Search {
     milp::SolveOptions o = SubOptions(true);
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
-    const TotalBranching t = BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_,
-                                                    objective_, step_, search_.total_branching_lps);
+    const TotalBranching t =
+        BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_, objective_, step_,
+                               search_.total_branching_lps, search_.total_branching_axis_groups);
     RaiseBound(t.bound);
     Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);
@@ -527,13 +528,14 @@ class Search {
     if (Count(mask) > search_.max_exact_slots) return;
     ImproveWithin(mask, "MILP restricted to the lowest leaf's ",
                   "the lowest leaf's restricted MILP", [&](const Restriction& r) {
-                    return TotalRows(r, t.lowest_leaf_lower, t.lowest_leaf_upper);
+                    return TotalRows(r, t.groups, t.lowest_leaf_lower, t.lowest_leaf_upper);
                   });
   }
 
-  // Rows lower[i] <= (thruster i's number of on slots) <= upper[i] on a
-  // restriction's model, for the thrusters whose total is bounded.
+  // Rows lower[g] <= (group g's number of on slots) <= upper[g] on a
+  // restriction's model, for the groups whose total is bounded.
   static std::vector<milp::SparseRow> TotalRows(const Restriction& r,
+                                                const std::vector<ThrusterGroup>& groups,
                                                 const std::vector<double>& lower,
                                                 const std::vector<double>& upper) {
     const OperationalEncoding& enc = r.milp.encoding();
@@ -541,24 +543,26 @@ class Search {
     for (size_t k = 0; k < r.kept.size(); ++k)
       small_column[static_cast<size_t>(r.kept[k])] = static_cast<int>(k);
     std::vector<milp::SparseRow> rows;
-    for (int i = 0; i < enc.num_thrusters; ++i) {
-      const size_t u = static_cast<size_t>(i);
-      if (!TotalIsBounded(lower[u], upper[u], enc.num_intervals)) continue;
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const int size = static_cast<int>(groups[g].thrusters.size());
+      if (!TotalIsBounded(lower[g], upper[g], enc.num_intervals * size)) continue;
       milp::SparseRow row;
       double fixed_on = 0.0;  // slots fixed on (removed with their value)
-      for (int j = 0; j < enc.num_intervals; ++j) {
-        const int column = enc.on[i][j].index();
-        const int k = small_column[static_cast<size_t>(column)];
-        if (k >= 0) {
-          row.columns.push_back(k);
-          row.coefficients.push_back(1.0);
-        } else {
-          fixed_on += r.milp.lp().col_lower[column];
+      for (int i : groups[g].thrusters) {
+        for (int j = 0; j < enc.num_intervals; ++j) {
+          const int column = enc.on[i][j].index();
+          const int k = small_column[static_cast<size_t>(column)];
+          if (k >= 0) {
+            row.columns.push_back(k);
+            row.coefficients.push_back(1.0);
+          } else {
+            fixed_on += r.milp.lp().col_lower[column];
+          }
         }
       }
-      row.lower = lower[u] > 0.0 ? lower[u] - fixed_on : -milp::kInfinity;
-      row.upper = upper[u] - fixed_on;
-      row.name = "total_" + std::to_string(i);
+      row.lower = lower[g] > 0.0 ? lower[g] - fixed_on : -milp::kInfinity;
+      row.upper = upper[g] - fixed_on;
+      row.name = "total_" + std::to_string(g);
       rows.push_back(std::move(row));
     }
     return rows;

@@ -21,46 +21,83 @@ using Clock = std::chrono::steady_clock;
 // point stops short of exact vertices).
 constexpr double kIntegralTotal = 1e-3;
 
+// Directions whose cosine is within this of +-1 share an axis.
+constexpr double kSameAxisTolerance = 1e-9;
+// Firings whose final-state effects have a cosine within this of 1 stand in
+// for each other.
+constexpr double kStandInTolerance = 1e-3;
+
 struct Leaf {
-  std::vector<double> lower, upper;  // per thruster: bounds on its total
+  std::vector<double> lower, upper;  // per group: bounds on its total
   double bound = -milp::kInfinity;
   Eigen::VectorXd x;  // its LP point; empty when it has none (not split)
   int order = 0;      // creation order, for ties
 };
 
-// The thruster whose total is nearest to half a slot from an integer; -1 if
-// every total is integral.
-int MostFractional(const std::vector<double>& y) {
+// The group to split: the one whose total is nearest to half a slot from an
+// integer, a thruster of a group of several only once that group's total is
+// whole; -1 if every total is integral. The aggregate before its members:
+// thrusters that stand in for each other (+N at the ascending node, -N at
+// the descending one, both turn the inclination vector the same way) trade
+// a fractional slot at almost no cost in the LP, so bounding one alone moves
+// the other and leaves the bound where it was (week 52 of
+// data/scenarios/hard/: +N at 38.5 slots, then -N at 39.51, then -N at
+// 38.51, six LPs and the lowest leaf still at the root's bound; +N and -N
+// together at 77.51 slots, both children a step higher).
+int SplitGroup(const std::vector<ThrusterGroup>& groups, const std::vector<double>& y) {
+  // Per thruster (every thruster has a group of its own, so fewer than
+  // groups.size()): in a group of several whose total is fractional.
+  std::vector<bool> in_fractional_group(groups.size(), false);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    if (groups[g].thrusters.size() < 2 || std::abs(y[g] - std::round(y[g])) <= kIntegralTotal)
+      continue;
+    for (int i : groups[g].thrusters) in_fractional_group[static_cast<size_t>(i)] = true;
+  }
   int best = -1;
   double best_distance = 0.5 - kIntegralTotal;
-  for (size_t i = 0; i < y.size(); ++i) {
-    const double distance = std::abs(y[i] - std::floor(y[i]) - 0.5);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const std::vector<int>& members = groups[g].thrusters;
+    if (members.size() == 1 && in_fractional_group[static_cast<size_t>(members[0])]) continue;
+    const double distance = std::abs(y[g] - std::floor(y[g]) - 0.5);
     if (distance < best_distance) {
-      best = static_cast<int>(i);
+      best = static_cast<int>(g);
       best_distance = distance;
     }
   }
   return best;
 }
 
+std::vector<double> GroupTotals(const std::vector<ThrusterGroup>& groups,
+                                const std::vector<double>& thruster_totals) {
+  std::vector<double> y(groups.size(), 0.0);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    for (int i : groups[g].thrusters) y[g] += thruster_totals[static_cast<size_t>(i)];
+  }
+  return y;
+}
+
 class Tree {
  public:
   Tree(const ScheduleMilp& milp, const milp::Solver& solver, const milp::SolveOptions& options,
-       double incumbent, double step)
+       double incumbent, double step, bool axis_groups)
       : milp_(milp),
         solver_(solver),
         options_(options),
         incumbent_(incumbent),
         step_(step),
+        groups_(TotalGroups(milp, axis_groups)),
         start_(Clock::now()) {}
 
   TotalBranching Run(const Eigen::VectorXd& root_x, double root_bound, int max_lps) {
-    const int m = milp_.encoding().num_thrusters;
-    const double n = milp_.encoding().num_intervals;
-    leaves_.push_back({std::vector<double>(static_cast<size_t>(m), 0.0),
-                       std::vector<double>(static_cast<size_t>(m), n), root_bound, root_x, 0});
+    // Every group's total free: [0, intervals x its thrusters].
+    std::vector<double> upper;
+    for (const ThrusterGroup& g : groups_)
+      upper.push_back(static_cast<double>(milp_.encoding().num_intervals) * g.thrusters.size());
+    leaves_.push_back(
+        {std::vector<double>(groups_.size(), 0.0), std::move(upper), root_bound, root_x, 0});
     const std::string why = Search(max_lps);
     TotalBranching out;
+    out.groups = groups_;
     out.lps = lps_;
     const Leaf& lowest = leaves_[static_cast<size_t>(Lowest())];
     out.bound = lowest.bound;
@@ -85,14 +122,18 @@ class Tree {
       const int k = Lowest();
       if (!Below(leaves_[static_cast<size_t>(k)].bound))
         return "every leaf at the incumbent or above";
+      if (std::isfinite(incumbent_) &&
+          milp::GapClosed(incumbent_, leaves_[static_cast<size_t>(k)].bound, options_))
+        return "the incumbent within the requested gap";
       if (lps_ + 2 > max_lps) return "LP limit (" + std::to_string(max_lps) + ")";
       if (Interrupted()) return "interrupted";
       if (Remaining() <= 0.0) return "time limit";
       Leaf parent = std::move(leaves_[static_cast<size_t>(k)]);
       leaves_.erase(leaves_.begin() + k);
       const std::vector<double> y =
-          parent.x.size() > 0 ? ThrusterTotals(milp_.encoding(), parent.x) : std::vector<double>{};
-      const int i = y.empty() ? -1 : MostFractional(y);
+          parent.x.size() > 0 ? GroupTotals(groups_, ThrusterTotals(milp_.encoding(), parent.x))
+                              : std::vector<double>{};
+      const int i = y.empty() ? -1 : SplitGroup(groups_, y);
       if (i < 0) {
         leaves_.push_back(std::move(parent));
         return "the lowest leaf fires each thruster a whole number of slots";
@@ -105,9 +146,8 @@ class Tree {
       up.order = ++created_;
       const double t0 = Elapsed();
       SolvePair(&down, &up);
-      splits_.push_back(milp_.problem().thrusters.thruster(i).name + " at " + FormatG(y[u], 4) +
-                        " slots: " + BoundText(down) + " / " + BoundText(up) + ", " +
-                        FormatG(Elapsed() - t0, 3) + " s");
+      splits_.push_back(groups_[u].name + " at " + FormatG(y[u], 4) + " slots: " + BoundText(down) +
+                        " / " + BoundText(up) + ", " + FormatG(Elapsed() - t0, 3) + " s");
       leaves_.push_back(std::move(down));
       leaves_.push_back(std::move(up));
     }
@@ -116,8 +156,8 @@ class Tree {
   // The two children of a split, side by side when the caller allows two
   // threads (milp::Solver::SolveLpRelaxations: each LP in its own process).
   void SolvePair(Leaf* down, Leaf* up) {
-    const milp::LpData down_lp = WithThrusterTotals(milp_, down->lower, down->upper);
-    const milp::LpData up_lp = WithThrusterTotals(milp_, up->lower, up->upper);
+    const milp::LpData down_lp = WithGroupTotals(milp_, groups_, down->lower, down->upper);
+    const milp::LpData up_lp = WithGroupTotals(milp_, groups_, up->lower, up->upper);
     milp::SolveOptions o = options_;
     o.time_limit_s = std::max(0.0, Remaining());
     const std::vector<milp::LpRelaxationResult> r =
@@ -171,6 +211,7 @@ class Tree {
   const milp::SolveOptions& options_;
   double incumbent_;
   double step_;
+  std::vector<ThrusterGroup> groups_;
   Clock::time_point start_;
   std::vector<Leaf> leaves_;
   int lps_ = 0;
@@ -189,33 +230,111 @@ std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::
   return y;
 }
 
-milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
-                                const std::vector<double>& upper) {
+namespace {
+
+// Each thruster's effect on the final state of a unit firing in each slot,
+// Phi(t_N, t_{j+1}) Gamma_j e_i, scaled by the model's state scales and
+// normalised: column j of element i.
+std::vector<Eigen::MatrixXd> FinalStateEffects(const ScheduleMilp& milp) {
+  const dynamics::DiscreteModel& d = milp.discrete();
+  const int n = d.num_states(), N = d.num_intervals(), m = milp.encoding().num_thrusters;
+  const Eigen::VectorXd scale = milp.problem().model->state_scale();
+  std::vector<Eigen::MatrixXd> effects(static_cast<size_t>(m), Eigen::MatrixXd(n, N));
+  Eigen::MatrixXd to_end = Eigen::MatrixXd::Identity(n, n);  // Phi(t_N, t_{j+1})
+  for (int j = N - 1; j >= 0; --j) {
+    const Eigen::MatrixXd moved = to_end * d.gamma[static_cast<size_t>(j)];
+    for (int i = 0; i < m; ++i) {
+      Eigen::VectorXd e = moved.col(i).cwiseQuotient(scale);
+      const double norm = e.norm();
+      effects[static_cast<size_t>(i)].col(j) = norm > 0.0 ? Eigen::VectorXd(e / norm) : e;
+    }
+    to_end = to_end * d.phi[static_cast<size_t>(j)];
+  }
+  return effects;
+}
+
+// Whether thruster b can stand in for thruster a: for every slot of a, some
+// slot of b moves the final state the same way (cosine of the effects). By
+// blocks of a's slots: the cosines of all pairs of slots would take
+// N^2 doubles (3 GB for two weeks of 1-min slots).
+bool StandsIn(const std::vector<Eigen::MatrixXd>& effects, int a, int b) {
+  const Eigen::MatrixXd& ea = effects[static_cast<size_t>(a)];
+  const Eigen::MatrixXd& eb = effects[static_cast<size_t>(b)];
+  constexpr Eigen::Index kBlock = 256;
+  for (Eigen::Index first = 0; first < ea.cols(); first += kBlock) {
+    const Eigen::Index size = std::min(kBlock, ea.cols() - first);
+    const Eigen::MatrixXd cosines = ea.middleCols(first, size).transpose() * eb;
+    if (cosines.rowwise().maxCoeff().minCoeff() <= 1.0 - kStandInTolerance) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups) {
+  const dynamics::ThrusterSet& thrusters = milp.problem().thrusters;
+  if (milp.discrete().gamma.empty()) axis_groups = false;  // no slots to compare
+  const int m = thrusters.size();
+  std::vector<Eigen::MatrixXd> effects;
+  std::vector<int> axis(static_cast<size_t>(m));  // the first thruster on i's axis
+  for (int i = 0; i < m; ++i) {
+    axis[static_cast<size_t>(i)] = i;
+    for (int k = 0; k < i; ++k) {
+      const double cosine = thrusters.thruster(i).direction.dot(thrusters.thruster(k).direction);
+      if (!axis_groups || std::abs(cosine) <= 1.0 - kSameAxisTolerance) continue;
+      if (effects.empty()) effects = FinalStateEffects(milp);
+      const int first = axis[static_cast<size_t>(k)];
+      if (StandsIn(effects, first, i) && StandsIn(effects, i, first)) {
+        axis[static_cast<size_t>(i)] = first;
+        break;
+      }
+    }
+  }
+  std::vector<ThrusterGroup> groups;
+  for (int first = 0; first < m; ++first) {
+    ThrusterGroup g;
+    for (int i = first; i < m; ++i) {
+      if (axis[static_cast<size_t>(i)] != first) continue;
+      g.thrusters.push_back(i);
+      g.name += (g.name.empty() ? "" : " and ") + thrusters.thruster(i).name;
+    }
+    if (g.thrusters.size() > 1) groups.push_back(std::move(g));
+  }
+  for (int i = 0; i < m; ++i) groups.push_back({{i}, thrusters.thruster(i).name});
+  return groups;
+}
+
+milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<ThrusterGroup>& groups,
+                             const std::vector<double>& lower, const std::vector<double>& upper) {
   milp::LpData lp = milp.lp();
   const OperationalEncoding& enc = milp.encoding();
   const int n = enc.num_intervals;
   std::vector<milp::SparseRow> rows;
-  for (int i = 0; i < enc.num_thrusters; ++i) {
-    const size_t u = static_cast<size_t>(i);
-    if (!TotalIsBounded(lower[u], upper[u], n)) continue;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const int size = static_cast<int>(groups[g].thrusters.size());
+    if (!TotalIsBounded(lower[g], upper[g], n * size)) continue;
     std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
     for (int j = 0; j < n; ++j) {
-      sums[static_cast<size_t>(j)] = {0.0, j + 1.0, 0.0, milp::VarType::kContinuous,
-                                      "total_" + std::to_string(i) + "_" + std::to_string(j)};
+      sums[static_cast<size_t>(j)] = {0.0, (j + 1.0) * size, 0.0, milp::VarType::kContinuous,
+                                      "total_" + std::to_string(g) + "_" + std::to_string(j)};
     }
-    sums.back().lower = std::max(0.0, lower[u]);
-    sums.back().upper = std::min(static_cast<double>(n), upper[u]);
+    sums.back().lower = std::max(0.0, lower[g]);
+    sums.back().upper = std::min(static_cast<double>(n) * size, upper[g]);
     const int first = milp::AppendColumns(&lp, sums);
     for (int j = 0; j < n; ++j) {
-      milp::SparseRow row;  // p_j - p_{j-1} - on[i][j] = 0
-      row.columns = {first + j, enc.on[i][j].index()};
-      row.coefficients = {1.0, -1.0};
+      milp::SparseRow row;  // p_j - p_{j-1} - sum over the group of on[i][j] = 0
+      row.columns = {first + j};
+      row.coefficients = {1.0};
+      for (int i : groups[g].thrusters) {
+        row.columns.push_back(enc.on[i][j].index());
+        row.coefficients.push_back(-1.0);
+      }
       if (j > 0) {
         row.columns.push_back(first + j - 1);
         row.coefficients.push_back(-1.0);
       }
       row.lower = row.upper = 0.0;
-      row.name = "total_" + std::to_string(i) + "_" + std::to_string(j);
+      row.name = "total_" + std::to_string(g) + "_" + std::to_string(j);
       rows.push_back(std::move(row));
     }
   }
@@ -223,11 +342,20 @@ milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<doub
   return lp;
 }
 
+milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
+                                const std::vector<double>& upper) {
+  std::vector<ThrusterGroup> singles;
+  for (int i = 0; i < milp.encoding().num_thrusters; ++i) singles.push_back({{i}, ""});
+  return WithGroupTotals(milp, singles, lower, upper);
+}
+
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
-                                      double incumbent, double step, int max_lps) {
-  return Tree(milp, solver, lp_options, incumbent, step).Run(root_x, root_bound, max_lps);
+                                      double incumbent, double step, int max_lps,
+                                      bool axis_groups) {
+  return Tree(milp, solver, lp_options, incumbent, step, axis_groups)
+      .Run(root_x, root_bound, max_lps);
 }
 
 }  // namespace thrustsched::transcription

@@ -19,20 +19,27 @@
 // off, 0.3606 with it on for a slot or more, so every schedule costs 22
 // steps, the heuristic's incumbent). CBC's branching on single slots did not
 // move this bound in 32 s (previous release, same week): aggregated
-// branching, as on the number of vehicles in routing.
+// branching, as on the number of vehicles in routing. The summed total of
+// thrusters that stand in for each other (TotalGroups: +N and -N) is an
+// integer too, and is split before its members: the LP trades a fractional
+// slot between them at no cost, so a bound on one alone moves the other
+// (week 52 of data/scenarios/hard/: six LPs on +N and -N alone left the
+// bound at the relaxation's 80 steps, one split of their sum at 77.51 slots
+// raised it to 81).
 //
 // The tree is searched best first: the open leaf with the lowest bound is
 // split on its most fractional total, its two children's LPs
-// (WithThrusterTotals) solved side by side when lp_options.threads >= 2
+// (WithGroupTotals) solved side by side when lp_options.threads >= 2
 // (milp::Solver::SolveLpRelaxations: one child process each, both forked
 // from the calling thread).
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
 // its parent's; an infeasible leaf's is +inf. The leaves cover every
 // schedule, so the lowest leaf bound is a bound of the MILP. Stops when
-// that bound reaches the incumbent (proof), after max_lps LPs, on the time
-// limit or interrupt of lp_options (the bound of what was solved stays
-// valid), or when the lowest leaf has integral totals.
+// that bound reaches the incumbent (proof) or is within lp_options' gap of
+// it, after max_lps LPs, on the time limit or interrupt of lp_options (the
+// bound of what was solved stays valid), or when the lowest leaf has
+// integral totals.
 // Deterministic for the same input (no wall-clock decision) unless a time
 // limit or an interrupt cuts it.
 #ifndef THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
@@ -48,6 +55,26 @@
 
 namespace thrustsched::transcription {
 
+/// Thrusters whose number of on slots the tree bounds together (their sum
+/// is an integer in every schedule too).
+struct ThrusterGroup {
+  std::vector<int> thrusters;  // indices in the ThrusterSet
+  std::string name;            // "+N and -N", or the thruster's name
+};
+
+/// The groups the tree splits on: each set of two or more thrusters on one
+/// axis (directions parallel or opposite) that stand in for each other, then
+/// each thruster alone. Two thrusters stand in for each other when for every
+/// slot of one some slot of the other moves the final state the same way
+/// (Phi(t_N, t_j+1) Gamma_j, scaled; cosine within 1e-3 of 1): +N and -N
+/// of the ideal six (the out-of-plane motion is an oscillator, -N half an
+/// orbit later does what +N does), not +T and -T (opposite drifts) nor +R
+/// and -R (opposite along-track offsets). The thesis' four Anzel thrusters
+/// share no axis: one group per thruster. Without `axis_groups`, single
+/// thrusters only (the previous release's tree, kept for comparison in the
+/// bench).
+std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups = true);
+
 struct TotalBranching {
   double bound = -milp::kInfinity;  // in the MILP's objective, rounded to the step
   int lps = 0;                      // LPs solved
@@ -56,8 +83,9 @@ struct TotalBranching {
   /// LP point of the lowest leaf below the incumbent (where a better
   /// schedule would be); empty when none has one or the root is that leaf.
   Eigen::VectorXd lowest_leaf_x;
-  /// That leaf's bounds on each thruster's number of on slots (empty with
-  /// lowest_leaf_x).
+  /// The groups split on (TotalGroups), and the lowest leaf's bounds on each
+  /// group's number of on slots (empty with lowest_leaf_x).
+  std::vector<ThrusterGroup> groups;
   std::vector<double> lowest_leaf_lower, lowest_leaf_upper;
 };
 
@@ -65,11 +93,12 @@ struct TotalBranching {
 /// (safe, rounded) bound; `incumbent` the best known schedule's objective
 /// (+inf if none); `lp_options` the LP options (algorithm, threads, time
 /// limit from the call, interrupt). On-off mode only; without an objective
-/// step (<= 0) the bound is not rounded.
+/// step (<= 0) the bound is not rounded. `axis_groups`: as in TotalGroups.
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
-                                      double incumbent, double step, int max_lps);
+                                      double incumbent, double step, int max_lps,
+                                      bool axis_groups = true);
 
 /// Whether bounds [lower, upper] on a thruster's total cut anything: a total
 /// lies in [0, num_intervals] anyway.
@@ -92,6 +121,12 @@ std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::
 /// optimum 0.409 m/s in 70 iterations).
 milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
                                 const std::vector<double>& upper);
+
+/// The same with the bounds on groups' totals: group g's summed number of on
+/// slots within [lower[g], upper[g]] ([0, intervals x its thrusters] leaves
+/// it free).
+milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<ThrusterGroup>& groups,
+                             const std::vector<double>& lower, const std::vector<double>& upper);
 
 }  // namespace thrustsched::transcription
 

@@ -67,10 +67,10 @@ struct CaseSpec {
   /// The problem-aware search (transcription::SearchSchedule, what `solve`
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
-  /// With `search`: the search without the branching on thruster totals of
-  /// transcription/total_branching.h (the release before the previous one;
-  /// the previous release's tree with dense leaf rows is not kept), for the
-  /// side-by-side ratio.
+  /// With `search`: the search as the previous release ran it, its branching
+  /// on thruster totals (transcription/total_branching.h) over single
+  /// thrusters only (SearchOptions::total_branching_axis_groups off), for
+  /// the side-by-side ratio.
   bool search_previous = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "dynamics/thrusters.h"
 #include "milp/cbc_solver.h"
 #include "milp/lp_bound.h"
 #include "tests/transcription/thesis_cases.h"
@@ -24,11 +26,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Thesis Table 4.1 (Gazzino 2018, sec. 4.3.3), one day at 10-min steps, the
 // start moved along x and drifting along y: small enough for CBC alone to
 // prove in a second or two.
-ScheduleProblem HcwDay(double x0_m, double vy0_m_s) {
+ScheduleProblem HcwDay(double x0_m, double vy0_m_s, double vz0_m_s = 0.0) {
   ScheduleProblem p = ThesisTable41(1.0);
   p.grid = dynamics::UniformGrid(0.0, 86400.0, 144);
   p.initial_state[0] = x0_m;
   p.initial_state[4] = vy0_m_s;
+  p.initial_state[5] = vz0_m_s;
   return p;
 }
 
@@ -66,18 +69,24 @@ TEST(BranchOnThrusterTotals, NeverAboveTheProvenOptimumAndRaisesTheRelaxationsBo
   auto solver = milp::MakeCbcSolver();
   const double slot = 0.265 / 4850 * 600;  // one 10-min slot, m/s
   struct Case {
-    double x0_m, vy0_m_s;
-    int optimum_slots, root_slots, tree_slots;  // CBC alone; measured once
+    double x0_m, vy0_m_s, vz0_m_s;
+    int optimum_slots, root_slots;  // CBC alone; the rounded relaxation
+    int single_slots, axis_slots;   // the tree's bound: single thrusters, axes first
   };
   // Where the relaxation's rounded bound is the optimum the tree keeps it;
-  // the last two start far out and the rounded relaxation is 1 and 3 slots
-  // short: the tree gains one slot on the drifting start.
-  for (const Case& c : std::vector<Case>{{3000, 0, 9, 9, 9},
-                                         {4500, 0.05, 19, 19, 19},
-                                         {6000, 0, 36, 35, 35},
-                                         {6000, 0.05, 47, 44, 45}}) {
-    SCOPED_TRACE("x0 " + std::to_string(c.x0_m) + " m, vy0 " + std::to_string(c.vy0_m_s) + " m/s");
-    const ScheduleProblem p = HcwDay(c.x0_m, c.vy0_m_s);
+  // the next two start far out and the rounded relaxation is 1 and 3 slots
+  // short: the tree gains one slot on the drifting start; the last one also
+  // leaves the plane (its tree splits +N and -N together after -T) and the
+  // tree proves the optimum. Splitting +N and -N together first gives the
+  // same bounds as single thrusters here.
+  for (const Case& c : std::vector<Case>{{3000, 0, 0, 9, 9, 9, 9},
+                                         {4500, 0.05, 0, 19, 19, 19, 19},
+                                         {6000, 0, 0, 36, 35, 35, 35},
+                                         {6000, 0.05, 0, 47, 44, 45, 45},
+                                         {3000, 0, 2.75, 12, 11, 12, 12}}) {
+    SCOPED_TRACE("x0 " + std::to_string(c.x0_m) + " m, vy0 " + std::to_string(c.vy0_m_s) +
+                 " m/s, vz0 " + std::to_string(c.vz0_m_s) + " m/s");
+    const ScheduleProblem p = HcwDay(c.x0_m, c.vy0_m_s, c.vz0_m_s);
     const ScheduleMilp milp(p, BuildOptions{});
     ASSERT_NEAR(milp.objective_step(), slot, 1e-15);
     const double optimum = CbcOptimum(p, *solver);
@@ -86,12 +95,14 @@ TEST(BranchOnThrusterTotals, NeverAboveTheProvenOptimumAndRaisesTheRelaxationsBo
     EXPECT_NEAR(root.bound / slot, c.root_slots, 1e-6);
     // Without an incumbent: the tree only raises the bound, never above the
     // proven optimum, by whole slots.
-    const TotalBranching t =
-        BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound, kInf, slot, 12);
-    EXPECT_LE(t.lps, 12);
-    EXPECT_GE(t.bound, root.bound - 1e-12) << t.detail;
-    EXPECT_LE(t.bound, optimum + 1e-9) << t.detail;
-    EXPECT_NEAR(t.bound / slot, c.tree_slots, 1e-6) << t.detail;
+    for (const bool axis_groups : {false, true}) {
+      const TotalBranching t = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
+                                                      root.bound, kInf, slot, 12, axis_groups);
+      EXPECT_LE(t.lps, 12);
+      EXPECT_GE(t.bound, root.bound - 1e-12) << t.detail;
+      EXPECT_LE(t.bound, optimum + 1e-9) << t.detail;
+      EXPECT_NEAR(t.bound / slot, axis_groups ? c.axis_slots : c.single_slots, 1e-6) << t.detail;
+    }
     // With the optimum as incumbent: still never above it; where the
     // relaxation already reaches it nothing is solved.
     const TotalBranching proof =
@@ -139,6 +150,99 @@ TEST(BranchOnThrusterTotals, TwoThreadsGiveTheSameTree) {
   EXPECT_EQ(a.open_leaves, b.open_leaves);
   EXPECT_EQ(a.lowest_leaf_lower, b.lowest_leaf_lower);
   EXPECT_EQ(a.lowest_leaf_upper, b.lowest_leaf_upper);
+}
+
+// In the Hill-Clohessy-Wiltshire equations +N fired half an orbit after -N
+// moves the final state the same way (the out-of-plane motion is an
+// oscillator): one group. +R and -R, +T and -T share an axis but not their
+// effect (a radial firing shifts the mean along-track position, a tangential
+// one the drift, each with its sign): single thrusters. The thesis' four
+// Anzel thrusters (all tilted towards -R) share no axis.
+TEST(TotalGroups, ThrustersThatStandInForEachOtherFirst) {
+  auto names = [](const std::vector<ThrusterGroup>& groups) {
+    std::vector<std::string> out;
+    for (const ThrusterGroup& g : groups) out.push_back(g.name);
+    return out;
+  };
+  ScheduleProblem p = HcwDay(6000.0, 0.05);
+  const std::vector<ThrusterGroup> groups = TotalGroups(ScheduleMilp(p, BuildOptions{}));
+  EXPECT_EQ(names(groups),
+            (std::vector<std::string>{"+N and -N", "+R", "+T", "+N", "-R", "-T", "-N"}));
+  EXPECT_EQ(groups[0].thrusters, (std::vector<int>{2, 5}));
+  EXPECT_EQ(groups[1].thrusters, (std::vector<int>{0}));
+  EXPECT_EQ(names(TotalGroups(ScheduleMilp(p, BuildOptions{}), false)),
+            (std::vector<std::string>{"+R", "+T", "+N", "-R", "-T", "-N"}));
+  p.thrusters = dynamics::ThrusterSet::Anzel4(0.265, 4850, 2005);
+  EXPECT_EQ(names(TotalGroups(ScheduleMilp(p, BuildOptions{}))),
+            (std::vector<std::string>{"NE", "SE", "NW", "SW"}));
+  // Three thrusters on the N axis, one of them reversed, and one along R.
+  p.thrusters = dynamics::ThrusterSet({{"a", Eigen::Vector3d(0, 0, 2), true},
+                                       {"b", Eigen::Vector3d(1, 0, 0), true},
+                                       {"c", Eigen::Vector3d(0, 0, -1), true},
+                                       {"d", Eigen::Vector3d(0, 0, 0.5), true}},
+                                      0.265, 4850, 2005);
+  EXPECT_EQ(names(TotalGroups(ScheduleMilp(p, BuildOptions{}))),
+            (std::vector<std::string>{"a and c and d", "a", "b", "c", "d"}));
+}
+
+// A group's bounded total is the relaxation with one dense row over all its
+// thrusters' slots (the same polytope): the same primal simplex optimum, and
+// the interior point's safe bound is that optimum.
+TEST(WithGroupTotals, IsTheRelaxationWithTheGroupTotalBounded) {
+  auto solver = milp::MakeCbcSolver();
+  ScheduleProblem p = HcwDay(6000.0, 0.05);
+  p.initial_state[5] = 2.75;  // m/s: out of plane by 37.7 km, the box is 36.8
+  const ScheduleMilp milp(p, BuildOptions{});
+  const OperationalEncoding& enc = milp.encoding();
+  const Root root = Relaxation(milp, *solver);
+  const std::vector<ThrusterGroup> groups = TotalGroups(milp);
+  const std::vector<double> totals = ThrusterTotals(enc, root.x);
+  // The first group of several thrusters with a fractional total, held to at
+  // least its rounding up.
+  std::vector<double> lower(groups.size(), 0.0), upper(groups.size());
+  int bounded = -1;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    upper[g] = static_cast<double>(enc.num_intervals) * groups[g].thrusters.size();
+    double total = 0.0;
+    for (int i : groups[g].thrusters) total += totals[static_cast<size_t>(i)];
+    const double frac = total - std::floor(total);
+    if (bounded < 0 && groups[g].thrusters.size() > 1 && frac > 1e-3 && frac < 1 - 1e-3) {
+      lower[g] = std::ceil(total);
+      bounded = static_cast<int>(g);
+    }
+  }
+  ASSERT_GE(bounded, 0) << "every axis total is whole at the relaxation";
+  const milp::LpData chained = WithGroupTotals(milp, groups, lower, upper);
+  EXPECT_EQ(chained.num_cols(), milp.lp().num_cols() + enc.num_intervals);
+  milp::LpData dense = milp.lp();
+  milp::SparseRow row;
+  for (int i : groups[static_cast<size_t>(bounded)].thrusters) {
+    for (int j = 0; j < enc.num_intervals; ++j) row.columns.push_back(enc.on[i][j].index());
+  }
+  row.coefficients.assign(row.columns.size(), 1.0);
+  row.lower = lower[static_cast<size_t>(bounded)];
+  milp::AppendRows(&dense, {row});
+
+  milp::SolveOptions simplex;
+  simplex.lp_algorithm = milp::LpAlgorithm::kPrimal;
+  const milp::LpRelaxationResult a = solver->SolveLpRelaxation(chained, simplex);
+  const milp::LpRelaxationResult b = solver->SolveLpRelaxation(dense, simplex);
+  const milp::LpRelaxationResult relaxed = solver->SolveLpRelaxation(milp.lp(), simplex);
+  ASSERT_EQ(a.status, milp::SolveStatus::kOptimal) << a.detail;
+  ASSERT_EQ(b.status, milp::SolveStatus::kOptimal) << b.detail;
+  EXPECT_NEAR(a.objective, b.objective, 1e-7 * b.objective);
+  EXPECT_GT(a.objective, relaxed.objective + 1e-6);  // the bound bites
+  double total = 0.0;
+  for (int i : groups[static_cast<size_t>(bounded)].thrusters) {
+    for (int j = 0; j < enc.num_intervals; ++j) total += a.x[enc.on[i][j].index()];
+  }
+  EXPECT_NEAR(a.x[chained.num_cols() - 1], total, 1e-7);
+  EXPECT_GE(total, lower[static_cast<size_t>(bounded)] - 1e-7);
+  const milp::LpRelaxationResult interior = solver->SolveLpRelaxation(chained, root.options);
+  ASSERT_EQ(interior.status, milp::SolveStatus::kOptimal) << interior.detail;
+  const double safe = milp::SafeDualBound(chained, interior.row_duals).bound;
+  EXPECT_LE(safe, b.objective + 1e-7 * b.objective);
+  EXPECT_GE(safe, b.objective - 1e-5 * b.objective);
 }
 
 // Bounds that cut nothing add nothing to a leaf's LP; one bounded thruster
