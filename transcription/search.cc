@@ -544,8 +544,7 @@ class Search {
       small_column[static_cast<size_t>(r.kept[k])] = static_cast<int>(k);
     std::vector<milp::SparseRow> rows;
     for (size_t g = 0; g < groups.size(); ++g) {
-      const int size = static_cast<int>(groups[g].thrusters.size());
-      if (!TotalIsBounded(lower[g], upper[g], enc.num_intervals * size)) continue;
+      if (!TotalIsBounded(lower[g], upper[g], groups[g], enc.num_intervals)) continue;
       milp::SparseRow row;
       double fixed_on = 0.0;  // slots fixed on (removed with their value)
       for (int i : groups[g].thrusters) {

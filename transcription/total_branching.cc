@@ -92,7 +92,7 @@ class Tree {
     // Every group's total free: [0, intervals x its thrusters].
     std::vector<double> upper;
     for (const ThrusterGroup& g : groups_)
-      upper.push_back(static_cast<double>(milp_.encoding().num_intervals) * g.thrusters.size());
+      upper.push_back(g.MaxTotal(milp_.encoding().num_intervals));
     leaves_.push_back(
         {std::vector<double>(groups_.size(), 0.0), std::move(upper), root_bound, root_x, 0});
     const std::string why = Search(max_lps);
@@ -312,14 +312,15 @@ milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<Thruste
   std::vector<milp::SparseRow> rows;
   for (size_t g = 0; g < groups.size(); ++g) {
     const int size = static_cast<int>(groups[g].thrusters.size());
-    if (!TotalIsBounded(lower[g], upper[g], n * size)) continue;
+    const int most = groups[g].MaxTotal(n);
+    if (!TotalIsBounded(lower[g], upper[g], groups[g], n)) continue;
     std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
     for (int j = 0; j < n; ++j) {
       sums[static_cast<size_t>(j)] = {0.0, (j + 1.0) * size, 0.0, milp::VarType::kContinuous,
                                       "total_" + std::to_string(g) + "_" + std::to_string(j)};
     }
     sums.back().lower = std::max(0.0, lower[g]);
-    sums.back().upper = std::min(static_cast<double>(n) * size, upper[g]);
+    sums.back().upper = std::min(static_cast<double>(most), upper[g]);
     const int first = milp::AppendColumns(&lp, sums);
     for (int j = 0; j < n; ++j) {
       milp::SparseRow row;  // p_j - p_{j-1} - sum over the group of on[i][j] = 0

@@ -60,6 +60,11 @@ namespace thrustsched::transcription {
 struct ThrusterGroup {
   std::vector<int> thrusters;  // indices in the ThrusterSet
   std::string name;            // "+N and -N", or the thruster's name
+
+  /// The most slots the group can be on: its total lies in [0, this].
+  int MaxTotal(int num_intervals) const {
+    return num_intervals * static_cast<int>(thrusters.size());
+  }
 };
 
 /// The groups the tree splits on: each set of two or more thrusters on one
@@ -100,10 +105,11 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       double incumbent, double step, int max_lps,
                                       bool axis_groups = true);
 
-/// Whether bounds [lower, upper] on a thruster's total cut anything: a total
-/// lies in [0, num_intervals] anyway.
-inline bool TotalIsBounded(double lower, double upper, int num_intervals) {
-  return lower > 0.0 || upper < num_intervals;
+/// Whether bounds [lower, upper] on a group's total cut anything: a total
+/// lies in [0, group.MaxTotal(num_intervals)] anyway.
+inline bool TotalIsBounded(double lower, double upper, const ThrusterGroup& group,
+                           int num_intervals) {
+  return lower > 0.0 || upper < group.MaxTotal(num_intervals);
 }
 
 /// Each thruster's number of on slots at x, a column vector of milp.lp()
