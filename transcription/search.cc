@@ -498,9 +498,9 @@ class Search {
     milp::SolveOptions o = SubOptions(true);
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
-    const TotalBranching t =
-        BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_, objective_, step_,
-                               search_.total_branching_lps, search_.total_branching_axis_groups);
+    const TotalBranching t = BranchOnThrusterTotals(
+        milp_, solver_, o, relaxation_.x, bound_, objective_, step_, search_.total_branching_lps,
+        search_.total_branching_axis_groups, search_.total_branching_elastic);
     RaiseBound(t.bound);
     Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);

@@ -34,7 +34,10 @@
 // from the calling thread).
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
-// its parent's; an infeasible leaf's is +inf. The leaves cover every
+// its parent's. The LP's bounds on the totals are elastic (a penalty per
+// slot outside them, 100 times the objective's scale), so an infeasible
+// leaf is cut off by a high bound: CLP takes minutes to call a leaf LP of a
+// GEO week infeasible, seconds to solve its elastic one. The leaves cover every
 // schedule, so the lowest leaf bound is a bound of the MILP. Stops when
 // that bound reaches the incumbent (proof) or is within lp_options' gap of
 // it, after max_lps LPs, on the time limit or interrupt of lp_options (the
@@ -99,11 +102,13 @@ struct TotalBranching {
 /// (+inf if none); `lp_options` the LP options (algorithm, threads, time
 /// limit from the call, interrupt). On-off mode only; without an objective
 /// step (<= 0) the bound is not rounded. `axis_groups`: as in TotalGroups.
+/// `elastic` off: the leaves' bounds on the totals are hard (the previous
+/// release's tree; an infeasible leaf LP then takes CLP minutes).
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps,
-                                      bool axis_groups = true);
+                                      bool axis_groups = true, bool elastic = true);
 
 /// Whether bounds [lower, upper] on a group's total cut anything: a total
 /// lies in [0, group.MaxTotal(num_intervals)] anyway.
@@ -130,9 +135,14 @@ milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<doub
 
 /// The same with the bounds on groups' totals: group g's summed number of on
 /// slots within [lower[g], upper[g]] ([0, intervals x its thrusters] leaves
-/// it free).
+/// it free). With `elastic_cost_per_slot` > 0 the bounds are elastic: two
+/// more columns per bounded group, the slots short of lower[g] and over
+/// upper[g], each costing that much in the objective. A relaxation of the
+/// bounded LP (equal to it where the penalty exceeds the bound rows' duals)
+/// that is never infeasible.
 milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<ThrusterGroup>& groups,
-                             const std::vector<double>& lower, const std::vector<double>& upper);
+                             const std::vector<double>& lower, const std::vector<double>& upper,
+                             double elastic_cost_per_slot = 0.0);
 
 }  // namespace thrustsched::transcription
 

@@ -245,6 +245,69 @@ TEST(WithGroupTotals, IsTheRelaxationWithTheGroupTotalBounded) {
   EXPECT_GE(safe, b.objective - 1e-5 * b.objective);
 }
 
+// Elastic bounds (the tree's leaves): the LP is never infeasible, and its
+// optimum is the bounded LP's where that one is feasible. Every thruster held
+// to 0 slots is infeasible for a start 6 km out; elastic, each slot costs the
+// step plus the penalty, so the optimum is (1 + penalty / step) times the
+// relaxation's (every slot costs one step, ScheduleMilp::objective_step), and
+// the interior point's safe bound is that too.
+TEST(WithGroupTotals, ElasticBoundsAreNeverInfeasibleAndCostThePenaltyPerSlot) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.05);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const OperationalEncoding& enc = milp.encoding();
+  const double step = milp.objective_step();
+  ASSERT_GT(step, 0.0);
+  const Root root = Relaxation(milp, *solver);
+  milp::SolveOptions simplex;
+  simplex.lp_algorithm = milp::LpAlgorithm::kPrimal;
+  const milp::LpRelaxationResult relaxed = solver->SolveLpRelaxation(milp.lp(), simplex);
+  ASSERT_EQ(relaxed.status, milp::SolveStatus::kOptimal) << relaxed.detail;
+  // One group per thruster: each slot is over exactly one bound.
+  const std::vector<ThrusterGroup> groups = TotalGroups(milp, /*axis_groups=*/false);
+  const double penalty = 100.0 * relaxed.objective;  // per slot, as the tree's
+  const std::vector<double> none(groups.size(), 0.0);
+
+  const milp::LpData hard = WithGroupTotals(milp, groups, none, none);
+  EXPECT_EQ(solver->SolveLpRelaxation(hard, simplex).status, milp::SolveStatus::kInfeasible);
+  const milp::LpData elastic = WithGroupTotals(milp, groups, none, none, penalty);
+  EXPECT_EQ(elastic.num_cols(), hard.num_cols() + 2 * static_cast<int>(groups.size()));
+  EXPECT_EQ(elastic.num_rows(), hard.num_rows() + static_cast<int>(groups.size()));
+  const milp::LpRelaxationResult off = solver->SolveLpRelaxation(elastic, simplex);
+  ASSERT_EQ(off.status, milp::SolveStatus::kOptimal) << off.detail;
+  const double expected = (1.0 + penalty / step) * relaxed.objective;
+  EXPECT_NEAR(off.objective, expected, 1e-6 * expected);
+  const milp::LpRelaxationResult interior = solver->SolveLpRelaxation(elastic, root.options);
+  ASSERT_EQ(interior.status, milp::SolveStatus::kOptimal) << interior.detail;
+  const double safe = milp::SafeDualBound(elastic, interior.row_duals).bound;
+  EXPECT_LE(safe, expected * (1 + 1e-7));
+  EXPECT_GE(safe, expected * (1 - 1e-5));
+
+  // A feasible leaf (a thruster the relaxation fires fractionally, held to
+  // at least its rounding up): the elastic LP has the bounded LP's optimum.
+  const std::vector<double> totals = ThrusterTotals(enc, root.x);
+  std::vector<double> lower(groups.size(), 0.0), upper(groups.size());
+  int bounded = -1;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    upper[g] = groups[g].MaxTotal(enc.num_intervals);
+    const double total = totals[static_cast<size_t>(groups[g].thrusters[0])];
+    const double frac = total - std::floor(total);
+    if (bounded < 0 && frac > 1e-3 && frac < 1 - 1e-3) {
+      lower[g] = std::ceil(total);
+      bounded = static_cast<int>(g);
+    }
+  }
+  ASSERT_GE(bounded, 0) << "the relaxation fires every thruster a whole number of slots";
+  const milp::LpRelaxationResult a =
+      solver->SolveLpRelaxation(WithGroupTotals(milp, groups, lower, upper), simplex);
+  const milp::LpRelaxationResult b =
+      solver->SolveLpRelaxation(WithGroupTotals(milp, groups, lower, upper, penalty), simplex);
+  ASSERT_EQ(a.status, milp::SolveStatus::kOptimal) << a.detail;
+  ASSERT_EQ(b.status, milp::SolveStatus::kOptimal) << b.detail;
+  EXPECT_GT(a.objective, relaxed.objective + 1e-6);  // the bound bites
+  EXPECT_NEAR(b.objective, a.objective, 1e-7 * a.objective);
+}
+
 // Bounds that cut nothing add nothing to a leaf's LP; one bounded thruster
 // adds its chain of partial sums (one column and one row per slot).
 TEST(WithThrusterTotals, AddsAChainOnlyForABoundedTotal) {
