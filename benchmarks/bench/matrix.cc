@@ -182,7 +182,7 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     c.variant = "search (this release)";
     b->Add(c, suffix + "-search");
     c.search_previous = true;
-    c.variant = "search as the previous release ran it (the tree on single thrusters)";
+    c.variant = "search as the previous release ran it (the tree with hard bounds in its leaves)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;
