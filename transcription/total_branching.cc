@@ -94,22 +94,17 @@ std::vector<double> GroupTotals(const std::vector<ThrusterGroup>& groups,
 class Tree {
  public:
   Tree(const ScheduleMilp& milp, const milp::Solver& solver, const milp::SolveOptions& options,
-       double incumbent, double step, bool axis_groups, bool elastic)
+       double incumbent, double step, bool axis_groups, double elastic_cost_per_slot)
       : milp_(milp),
         solver_(solver),
         options_(options),
         incumbent_(incumbent),
         step_(step),
+        elastic_cost_(elastic_cost_per_slot),
         groups_(TotalGroups(milp, axis_groups)),
-        elastic_(elastic),
         start_(Clock::now()) {}
 
   TotalBranching Run(const Eigen::VectorXd& root_x, double root_bound, int max_lps) {
-    if (elastic_) {
-      elastic_cost_ = kElasticFactor * std::max(step_, std::abs(root_bound));
-      if (std::isfinite(incumbent_))
-        elastic_cost_ = std::max(elastic_cost_, kElasticFactor * std::abs(incumbent_));
-    }
     // Every group's total free: [0, intervals x its thrusters].
     std::vector<double> upper;
     for (const ThrusterGroup& g : groups_)
@@ -225,8 +220,7 @@ class Tree {
   // A leaf without a point says why (its LP stopped at a limit, or needed
   // its totals relaxed).
   static std::string BoundText(const Leaf& leaf) {
-    return FormatG(leaf.bound, 6) +
-           (leaf.note.empty() || leaf.bound == milp::kInfinity ? "" : " (" + leaf.note + ")");
+    return FormatG(leaf.bound, 6) + (leaf.note.empty() ? "" : " (" + leaf.note + ")");
   }
 
   int Lowest() const {
@@ -255,9 +249,8 @@ class Tree {
   const milp::SolveOptions& options_;
   double incumbent_;
   double step_;
-  double elastic_cost_ = 0.0;  // per slot outside a leaf's totals (0: hard bounds)
+  double elastic_cost_;  // per slot outside a leaf's totals (0: hard bounds)
   std::vector<ThrusterGroup> groups_;
-  bool elastic_;
   Clock::time_point start_;
   std::vector<Leaf> leaves_;
   int lps_ = 0;
@@ -363,6 +356,7 @@ milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<Thruste
     const int size = static_cast<int>(groups[g].thrusters.size());
     const int most = groups[g].MaxTotal(n);
     if (!TotalIsBounded(lower[g], upper[g], groups[g], n)) continue;
+    const double lo = std::max(0.0, lower[g]), hi = std::min(static_cast<double>(most), upper[g]);
     const std::string tag = "total_" + std::to_string(g);
     std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
     for (int j = 0; j < n; ++j) {
@@ -370,8 +364,8 @@ milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<Thruste
                                       tag + "_" + std::to_string(j)};
     }
     if (!elastic) {
-      sums.back().lower = std::max(0.0, lower[g]);
-      sums.back().upper = std::min(static_cast<double>(most), upper[g]);
+      sums.back().lower = lo;
+      sums.back().upper = hi;
     }
     const int first = milp::AppendColumns(&lp, sums);
     for (int j = 0; j < n; ++j) {
@@ -400,8 +394,8 @@ milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<Thruste
       milp::SparseRow row;
       row.columns = std::vector<int>{first + n - 1, slack, slack + 1};
       row.coefficients = {1.0, 1.0, -1.0};
-      row.lower = std::max(0.0, lower[g]);
-      row.upper = std::min(static_cast<double>(most), upper[g]);
+      row.lower = lo;
+      row.upper = hi;
       row.name = tag + "_bounds";
       rows.push_back(std::move(row));
     }
@@ -422,7 +416,13 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps, bool axis_groups,
                                       bool elastic) {
-  return Tree(milp, solver, lp_options, incumbent, step, axis_groups, elastic)
+  double elastic_cost = 0.0;  // hard bounds
+  if (elastic) {
+    elastic_cost = kElasticFactor * std::max(step, std::abs(root_bound));
+    if (std::isfinite(incumbent))
+      elastic_cost = std::max(elastic_cost, kElasticFactor * std::abs(incumbent));
+  }
+  return Tree(milp, solver, lp_options, incumbent, step, axis_groups, elastic_cost)
       .Run(root_x, root_bound, max_lps);
 }
 
