@@ -499,12 +499,94 @@ class Search {
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
     const TotalBranching t = BranchOnThrusterTotals(
-        milp_, solver_, o, relaxation_.x, bound_, objective_, step_, search_.total_branching_lps,
+        milp_, solver_, o, relaxation_.x, bound_, objective_, step_, TreeLpBudget(),
         search_.total_branching_axis_groups, search_.total_branching_elastic);
     RaiseBound(t.bound);
     Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);
-    if (!Done() && !Stopped() && t.lowest_leaf_x.size() > 0) LeafHeuristic(t);
+    const bool lowest_solved = !Done() && !Stopped() && CloseLeaves(t);
+    if (!Done() && !Stopped() && t.lowest_leaf_x.size() > 0 && !lowest_solved) LeafHeuristic(t);
+  }
+
+  // The open leaves, lowest first, each solved exactly while reduced-cost
+  // fixing with its LP's duals leaves at most max_exact_slots slots free
+  // (max_exact_leaf_slots; OpenLeaf::free_slots): the MILP with the leaf's totals restricted to
+  // them, with the cutoff, as step 4 does for the whole MILP. A leaf that
+  // holds no better schedule is closed at the incumbent; the bound is the
+  // lowest of the leaves' bounds after their solves (those not solved keep
+  // their LP's). Stops at the first leaf with too many free slots (the bound
+  // cannot pass it). True if the lowest leaf was solved.
+  bool CloseLeaves(const TotalBranching& t) {
+    double lowest = kInf;
+    size_t k = 0;
+    for (; k < t.open.size() && !Stopped(); ++k) {
+      const OpenLeaf& leaf = t.open[k];
+      if (leaf.free_slots.size() == 0) break;
+      if (Count(leaf.free_slots) > search_.max_exact_leaf_slots) {
+        Step("the leaf " + LeafText(t, leaf) + ": " + std::to_string(Count(leaf.free_slots)) +
+             " slots can still improve on the incumbent (more than " +
+             std::to_string(search_.max_exact_leaf_slots) + ")");
+        break;
+      }
+      lowest = std::min(lowest, std::max(leaf.bound, SolveLeaf(t, leaf)));
+      if (Done()) return true;
+    }
+    for (size_t rest = k; rest < t.open.size(); ++rest)
+      lowest = std::min(lowest, t.open[rest].bound);
+    if (k > 0) RaiseBound(lowest);
+    return k > 0;
+  }
+
+  // One leaf's exact MILP; returns a bound for the leaf.
+  double SolveLeaf(const TotalBranching& t, const OpenLeaf& leaf) {
+    const double before = objective_;
+    Restriction r = Restrict(leaf.free_slots);
+    milp::SolveResult s;
+    const double t0 = Elapsed();
+    if (r.feasible) {
+      AddObjectiveCutoff(&r.small, Cutoff());
+      milp::AppendRows(&r.small, TotalRows(r, t.groups, leaf.lower, leaf.upper));
+      s = SolveRestricted(r.small, RestrictedOptions());
+      nodes_ += s.nodes;
+    }
+    const std::string what = "exact MILP of the leaf " + LeafText(t, leaf) + " over the " +
+                             std::to_string(Count(leaf.free_slots)) +
+                             " slots reduced-cost fixing with its LP leaves free: ";
+    if (!r.feasible || s.status == milp::SolveStatus::kInfeasible) {
+      Step(what + "no better schedule (" + FormatG(Elapsed() - t0, 3) + " s)" + lazy_note_);
+      return before;
+    }
+    Step(what + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) + " s" +
+         lazy_note_);
+    if (s.has_solution()) Offer(Lift(r, s.x), "an exact leaf MILP");
+    if (s.status == milp::SolveStatus::kOptimal) return std::min(before, s.objective);
+    return std::isfinite(s.best_bound) ? std::min(before, s.best_bound) : -kInf;
+  }
+
+  // "+N and -N <= 9, -T >= 2": the leaf's bounds on the totals it bounds.
+  std::string LeafText(const TotalBranching& t, const OpenLeaf& leaf) const {
+    std::string text;
+    const int n = milp_.encoding().num_intervals;
+    for (size_t g = 0; g < t.groups.size(); ++g) {
+      if (!TotalIsBounded(leaf.lower[g], leaf.upper[g], t.groups[g], n)) continue;
+      std::string range = leaf.lower[g] > 0.0 ? FormatG(leaf.lower[g], 6) + " <= " : "";
+      range += t.groups[g].name;
+      if (leaf.upper[g] < t.groups[g].MaxTotal(n)) range += " <= " + FormatG(leaf.upper[g], 6);
+      text += (text.empty() ? "" : ", ") + range;
+    }
+    return text;
+  }
+
+  // SearchOptions::total_branching_lp_nonzeros: the tree's LPs are the
+  // whole MILP's with a few rows, so their size is the MILP's.
+  int TreeLpBudget() const {
+    const int lps = search_.total_branching_lps;
+    const double size = std::max(1, lp_.num_nonzeros());
+    if (search_.total_branching_lp_nonzeros <= 0 || size >= search_.total_branching_lp_nonzeros)
+      return lps;
+    const double scale = std::min<double>(SearchOptions::kTreeLpScaleMax,
+                                          search_.total_branching_lp_nonzeros / size);
+    return static_cast<int>(std::floor(lps * scale));
   }
 
   // The lowest leaf is where a better schedule would be: the MILP with the
@@ -671,6 +753,13 @@ bool SearchOptions::IsValid(std::string* error) const {
   }
   if (total_branching_lps < 0) {
     return fail("total_branching_lps must be >= 0, got " + std::to_string(total_branching_lps));
+  }
+  if (max_exact_leaf_slots < 0) {
+    return fail("max_exact_leaf_slots must be >= 0, got " + std::to_string(max_exact_leaf_slots));
+  }
+  if (total_branching_lp_nonzeros < 0) {
+    return fail("total_branching_lp_nonzeros must be >= 0, got " +
+                std::to_string(total_branching_lp_nonzeros));
   }
   if (improvement_rounds < 0)
     return fail("improvement_rounds must be >= 0, got " + std::to_string(improvement_rounds));

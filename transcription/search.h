@@ -40,13 +40,17 @@
 //     the first net, then
 //  4b. branching on each thruster's number of on slots (an integer in every
 //     schedule; first the sum over thrusters that stand in for each other,
-//     +N and -N) over a few LPs, until the gap closes: a better bound, often
-//     the proof
+//     +N and -N) over a budget of LP work, until the gap closes: a better
+//     bound, often the proof
 //     (transcription/total_branching.h; each leaf's LP holds its totals
-//     elastically, so it is never infeasible); then the MILP with the lowest
-//     leaf's bounds on the totals, restricted to every slot of the
-//     thrusters its LP fires (or, if too many, the slots it uses), then the
-//     wider nets, then step 4 again if the incumbent improved.
+//     elastically, so it is never infeasible); then step 4 for each open
+//     leaf, lowest first, while reduced-cost fixing with the leaf's LP duals
+//     leaves at most `max_exact_leaf_slots` slots free (the MILP with the leaf's
+//     totals restricted to them is exact for the leaf: it closes the leaf or
+//     improves the incumbent); otherwise the MILP with the lowest leaf's
+//     bounds on the totals, restricted to every slot of the thrusters its LP
+//     fires (or, if too many, the slots it uses); then the wider nets, then
+//     step 4 again if the incumbent improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -93,6 +97,15 @@ struct SearchOptions {
   /// Largest number of slots left free by reduced-cost fixing for the exact
   /// restricted solve (step 4); above it, the whole MILP (step 5).
   int max_exact_slots = 3000;
+  /// The same for an open leaf of the tree (step 4b). Its MILP carries the
+  /// leaf's bounds on the totals as rows, which tie its slots together, and
+  /// a leaf's lower bound on a total weakens its reduced-cost fixing (the
+  /// row's dual lowers the reduced cost of every slot of the group). Week 41
+  /// of the six-thruster year (2034-10-08): the lowest leaf (+N and -N >= 10,
+  /// -T >= 2, -N <= 4) left 3037 slots free; their exact MILP found a
+  /// 12-step schedule in 4 s (100 nodes), proving it optimal (13 steps and
+  /// 7.69 % with 3000).
+  int max_exact_leaf_slots = 6000;
   /// Hand the incumbent to the solver of the whole MILP (step 5) as its MIP
   /// start and cutoff. Off: measured on a six-thruster week of the year
   /// (week 2), CBC given the search's 0.1475 m/s plan found nothing better in
@@ -107,6 +120,18 @@ struct SearchOptions {
   /// side by side with two threads): two splits prove week 39 of
   /// data/scenarios/hard/ optimal (0.377 m/s; the rounded relaxation 0.3606).
   int total_branching_lps = 6;
+  /// The tree's budget is in LP work: total_branching_lps LPs of this many
+  /// nonzeros (an interior-point iteration costs about in proportion; a
+  /// six-thruster GEO week at 5 min steps has 289 k). A smaller MILP's LPs
+  /// are cheaper, so its tree may solve more of them: total_branching_lps x
+  /// (this / the MILP's nonzeros), at most kTreeLpScaleMax times as many.
+  /// 0: a count of LPs whatever their size (the previous release's tree,
+  /// kept for comparison in the bench). The one-day last cycle of the
+  /// six-thruster year (2034-12-31, 41 k nonzeros): 6 LPs (14.5 s) left it
+  /// at 11.1 % (8 steps against 9), 10 LPs prove the 9-step schedule
+  /// optimal.
+  int total_branching_lp_nonzeros = 300000;
+  static constexpr int kTreeLpScaleMax = 8;
   /// The tree splits the summed total of thrusters that stand in for each
   /// other (+N and -N) before their own (TotalGroups). Off: single thrusters
   /// only, the previous release's tree, kept for comparison in the bench. On

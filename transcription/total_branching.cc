@@ -44,9 +44,10 @@ constexpr double kElasticFactor = 100.0;
 struct Leaf {
   std::vector<double> lower, upper;  // per group: bounds on its total
   double bound = -milp::kInfinity;
-  Eigen::VectorXd x;  // its LP point; empty when it has none (not split)
-  int order = 0;      // creation order, for ties
-  std::string note;   // why it has no point, for the detail
+  Eigen::VectorXd x;           // its LP point; empty when it has none (not split)
+  int order = 0;               // creation order, for ties
+  std::string note;            // why it has no point, for the detail
+  Eigen::MatrixXi free_slots;  // OpenLeaf::free_slots
 };
 
 // The group to split: the one whose total is nearest to half a slot from an
@@ -109,8 +110,13 @@ class Tree {
     std::vector<double> upper;
     for (const ThrusterGroup& g : groups_)
       upper.push_back(g.MaxTotal(milp_.encoding().num_intervals));
-    leaves_.push_back(
-        {std::vector<double>(groups_.size(), 0.0), std::move(upper), root_bound, root_x, 0, {}});
+    leaves_.push_back({std::vector<double>(groups_.size(), 0.0),
+                       std::move(upper),
+                       root_bound,
+                       root_x,
+                       0,
+                       {},
+                       {}});
     const std::string why = Search(max_lps);
     TotalBranching out;
     out.groups = groups_;
@@ -123,6 +129,7 @@ class Tree {
       out.lowest_leaf_upper = lowest.upper;
     }
     for (const Leaf& leaf : leaves_) out.open_leaves += Below(leaf.bound) ? 1 : 0;
+    if (lps_ > 0) out.open = OpenLeaves();
     std::string splits;
     for (const std::string& line : splits_) splits += (splits.empty() ? " (" : "; ") + line;
     if (!splits.empty()) splits += ")";
@@ -203,10 +210,39 @@ class Tree {
         // Its point is not in the leaf: bound kept, not split further.
         leaf->x.resize(0);
         leaf->note = "its LP needs " + FormatG(outside, 3) + " slots outside its totals";
+      } else if (Below(leaf->bound)) {
+        leaf->free_slots = FreeSlots(lp, b);
       }
     } else {
       leaf->note = "LP stopped, parent's bound";
     }
+  }
+
+  // The leaves below the incumbent, lowest first.
+  std::vector<OpenLeaf> OpenLeaves() const {
+    std::vector<const Leaf*> below;
+    for (const Leaf& leaf : leaves_)
+      if (Below(leaf.bound)) below.push_back(&leaf);
+    std::sort(below.begin(), below.end(), [](const Leaf* a, const Leaf* b) {
+      return a->bound < b->bound || (a->bound == b->bound && a->order < b->order);
+    });
+    std::vector<OpenLeaf> open;
+    for (const Leaf* leaf : below)
+      open.push_back({leaf->lower, leaf->upper, leaf->bound, leaf->free_slots});
+    return open;
+  }
+
+  // OpenLeaf::free_slots of a leaf below the incumbent from its LP's bound.
+  Eigen::MatrixXi FreeSlots(const milp::LpData& lp, const milp::DualBound& b) const {
+    const OperationalEncoding& enc = milp_.encoding();
+    if (!std::isfinite(incumbent_) || !b.finite()) return {};
+    const milp::LpData fixed = milp::FixByReducedCost(lp, b, incumbent_, step_);
+    Eigen::MatrixXi mask(enc.num_thrusters, enc.num_intervals);
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      for (int j = 0; j < enc.num_intervals; ++j)
+        mask(i, j) = fixed.col_upper[enc.on[i][j].index()] > 0.5 ? 1 : 0;
+    }
+    return mask;
   }
 
   // Slots by which totals y lie outside the leaf's bounds, summed.

@@ -83,6 +83,19 @@ struct ThrusterGroup {
 /// bench).
 std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups = true);
 
+/// A leaf of the tree whose bound is below the incumbent when it stopped.
+struct OpenLeaf {
+  std::vector<double> lower, upper;  // per group (TotalBranching::groups): bounds on its total
+  double bound = -milp::kInfinity;   // its LP's safe bound, rounded to the step
+  /// Slots (thrusters x intervals, 1 = free) that can be on in a schedule of
+  /// this leaf better than the incumbent by a step: reduced-cost fixing
+  /// (milp::FixByReducedCost) with the duals of the leaf's LP, valid for the
+  /// leaf as the root's is for the MILP. The MILP with the leaf's totals,
+  /// restricted to these slots, is exact for the leaf. Empty when its LP gave
+  /// no point (or there is no incumbent).
+  Eigen::MatrixXi free_slots;
+};
+
 struct TotalBranching {
   double bound = -milp::kInfinity;  // in the MILP's objective, rounded to the step
   int lps = 0;                      // LPs solved
@@ -95,6 +108,10 @@ struct TotalBranching {
   /// group's number of on slots (empty with lowest_leaf_x).
   std::vector<ThrusterGroup> groups;
   std::vector<double> lowest_leaf_lower, lowest_leaf_upper;
+  /// Every leaf below the incumbent, lowest bound first (ties: creation
+  /// order); the tree's bound is the first one's. Empty when the root is the
+  /// only leaf.
+  std::vector<OpenLeaf> open;
 };
 
 /// As above. `root_x` and `root_bound` are the relaxation's point and its

@@ -182,7 +182,9 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     c.variant = "search (this release)";
     b->Add(c, suffix + "-search");
     c.search_previous = true;
-    c.variant = "search as the previous release ran it (the tree with hard bounds in its leaves)";
+    c.variant =
+        "search as the previous release ran it (the tree's budget a count of LPs whatever their "
+        "size)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

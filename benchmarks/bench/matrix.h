@@ -68,9 +68,9 @@ struct CaseSpec {
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
   /// With `search`: the search as the previous release ran it, its branching
-  /// on thruster totals (transcription/total_branching.h) with hard bounds in
-  /// the leaves' LPs (SearchOptions::total_branching_elastic off), for the
-  /// side-by-side ratio.
+  /// on thruster totals (transcription/total_branching.h) limited to a count
+  /// of LPs whatever their size (SearchOptions::total_branching_lp_nonzeros
+  /// 0), for the side-by-side ratio.
   bool search_previous = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within

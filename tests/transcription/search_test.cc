@@ -107,6 +107,31 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
   }
 }
 
+// Step 4 on the tree's open leaves: with max_exact_slots below the whole
+// MILP's free slots (782) and max_exact_leaf_slots above every slot (864),
+// the search goes through the tree and then solves its open leaves exactly; it still ends at CBC's
+// proven optimum (47 slots here; the tree alone stops at 45, total_branching_test.cc) with a bound
+// never above it.
+TEST(SearchSchedule, SolvesTheTreesOpenLeavesExactly) {
+  auto solver = milp::MakeCbcSolver();
+  ScheduleProblem p = SmallHcwDay();
+  p.initial_state[0] = 6000.0;
+  p.initial_state[4] = 0.05;
+  const ScheduleResult ref = CbcAlone(p, *solver);
+  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
+  SolveScheduleOptions o;
+  o.milp = Exact();
+  o.search.max_exact_slots = 700;
+  o.search.max_exact_leaf_slots = 900;
+  const ScheduleResult r = SolveSchedule(p, *solver, o);
+  std::string steps;
+  for (const std::string& step : r.search.steps) steps += step + "\n";
+  EXPECT_NE(steps.find("exact MILP of the leaf"), std::string::npos) << steps;
+  EXPECT_NEAR(r.solve.objective, ref.solve.objective, 1e-9 * ref.solve.objective) << steps;
+  EXPECT_LE(r.solve.best_bound, ref.solve.objective + 1e-9) << steps;
+  EXPECT_TRUE(r.check.operational_ok) << r.check.Summary();
+}
+
 // The restricted MILP (condensed, only the free slots' columns) has the same
 // optimum as the full sparse MILP with the other slots' on-columns fixed at 0.
 TEST(FreeSlots, RestrictedCondensedMilpEqualsTheFullMilpWithSlotsForbidden) {
@@ -198,10 +223,10 @@ TEST(SearchSchedule, KeepsAGivenStartAndHonoursAnInterrupt) {
   EXPECT_LE(s.best_bound, ref.solve.objective + 1e-9);
 }
 
-// Step 5, CBC on the whole MILP (forced: no exact restricted solve, no
-// improvement, no objective step): on its own (the default) or from the search's incumbent, it
-// ends at CBC alone's optimum; with no node for it, the incumbent of the
-// restricted MILP is kept, never a worse or missing schedule.
+// Step 5, CBC on the whole MILP (forced: no exact restricted solve, of the
+// MILP or of the tree's leaves, no improvement, no objective step): on its own (the default) or
+// from the search's incumbent, it ends at CBC alone's optimum; with no node for it, the incumbent
+// of the restricted MILP is kept, never a worse or missing schedule.
 TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
   auto solver = milp::MakeCbcSolver();
   ScheduleProblem p = SmallHcwDay();
@@ -214,6 +239,7 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
   const ScheduleMilp milp(p, BuildOptions{});
   SearchOptions forced;
   forced.max_exact_slots = 0;
+  forced.max_exact_leaf_slots = 0;
   forced.improvement_rounds = 0;
   forced.neighbourhood = 0;
   for (bool from_incumbent : {false, true}) {
@@ -253,6 +279,15 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   s.improvement_rounds = -2;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("improvement_rounds must be >= 0, got -2"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.max_exact_leaf_slots = -5;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("max_exact_leaf_slots must be >= 0, got -5"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.total_branching_lp_nonzeros = -1;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("total_branching_lp_nonzeros must be >= 0, got -1"), std::string::npos)
+      << error;
 }
 
 }  // namespace

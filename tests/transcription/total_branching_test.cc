@@ -130,6 +130,63 @@ TEST(BranchOnThrusterTotals, StopsAtItsLpLimit) {
   EXPECT_LE(two.lps, 2);
 }
 
+// Each open leaf's free slots (reduced-cost fixing with its LP's duals and
+// the incumbent) hold every schedule of the leaf better than the incumbent
+// by a step. With the proven optimum plus one slot as the incumbent, the
+// optimum lies in one of the open leaves (the others are at the incumbent or
+// above) and within its free slots: CBC on the MILP with the leaf's totals
+// as hard rows and every other slot off finds it; no leaf's MILP beats it
+// or its leaf's bound.
+TEST(BranchOnThrusterTotals, OpenLeavesFreeSlotsHoldTheOptimum) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.05);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const OperationalEncoding& enc = milp.encoding();
+  const double slot = milp.objective_step();
+  const double optimum = CbcOptimum(p, *solver);
+  const Root root = Relaxation(milp, *solver);
+  const TotalBranching t = BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound,
+                                                  optimum + slot, slot, 4);
+  ASSERT_FALSE(t.open.empty()) << t.detail;
+  EXPECT_EQ(t.open.front().bound, t.bound) << t.detail;
+  milp::SolveOptions exact;
+  exact.relative_gap = 1e-9;
+  exact.absolute_gap = 1e-9;
+  exact.threads = 1;
+  exact.max_nodes = 200000;
+  double best = kInf;
+  int best_free = 0;
+  for (size_t k = 0; k < t.open.size(); ++k) {
+    const OpenLeaf& leaf = t.open[k];
+    SCOPED_TRACE("open leaf " + std::to_string(k) + " of " + t.detail);
+    if (k > 0) {
+      EXPECT_GE(leaf.bound, t.open[k - 1].bound);
+    }
+    ASSERT_EQ(leaf.free_slots.rows(), enc.num_thrusters);
+    ASSERT_EQ(leaf.free_slots.cols(), enc.num_intervals);
+    const int free = leaf.free_slots.sum();
+    EXPECT_GT(free, 0);
+    milp::LpData restricted = WithGroupTotals(milp, t.groups, leaf.lower, leaf.upper);
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      for (int j = 0; j < enc.num_intervals; ++j) {
+        if (leaf.free_slots(i, j) == 0) restricted.col_upper[enc.on[i][j].index()] = 0.0;
+      }
+    }
+    const milp::SolveResult r = solver->Solve(restricted, exact);
+    if (r.status == milp::SolveStatus::kInfeasible) continue;
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
+    EXPECT_GE(r.objective, leaf.bound - 1e-9);
+    EXPECT_GE(r.objective, optimum - 1e-9);
+    if (r.objective < best) {
+      best = r.objective;
+      best_free = free;
+    }
+  }
+  EXPECT_NEAR(best, optimum, 1e-9);
+  // Found in a leaf where the fixing left slots out (a real restriction).
+  EXPECT_LT(best_free, enc.num_thrusters * enc.num_intervals);
+}
+
 // With two threads the children of each split are solved side by side: the
 // same tree, split for split, as one after the other.
 TEST(BranchOnThrusterTotals, TwoThreadsGiveTheSameTree) {
