@@ -518,10 +518,13 @@ class Search {
   // cannot pass it). True if the lowest leaf was solved.
   bool CloseLeaves(const TotalBranching& t) {
     double lowest = kInf;
-    size_t k = 0;
+    size_t k = 0;  // leaves solved
     for (; k < t.open.size() && !Stopped(); ++k) {
       const OpenLeaf& leaf = t.open[k];
-      if (leaf.free_slots.size() == 0) break;
+      if (leaf.free_slots.size() == 0) {
+        Step("the leaf " + LeafText(t, leaf) + ": no LP duals to fix its slots with");
+        break;
+      }
       if (Count(leaf.free_slots) > search_.max_exact_leaf_slots) {
         Step("the leaf " + LeafText(t, leaf) + ": " + std::to_string(Count(leaf.free_slots)) +
              " slots can still improve on the incumbent (more than " +
@@ -529,7 +532,10 @@ class Search {
         break;
       }
       lowest = std::min(lowest, std::max(leaf.bound, SolveLeaf(t, leaf)));
-      if (Done()) return true;
+      if (Done()) {
+        ++k;
+        break;
+      }
     }
     for (size_t rest = k; rest < t.open.size(); ++rest)
       lowest = std::min(lowest, t.open[rest].bound);
