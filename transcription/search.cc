@@ -509,9 +509,9 @@ class Search {
   }
 
   // The open leaves, lowest first, each solved exactly while reduced-cost
-  // fixing with its LP's duals leaves at most max_exact_slots slots free
-  // (max_exact_leaf_slots; OpenLeaf::free_slots): the MILP with the leaf's totals restricted to
-  // them, with the cutoff, as step 4 does for the whole MILP. A leaf that
+  // fixing with its LP's duals leaves at most max_exact_leaf_slots slots
+  // free (OpenLeaf::free_slots): the MILP with the leaf's totals restricted
+  // to them, with the cutoff, as step 4 does for the whole MILP. A leaf that
   // holds no better schedule is closed at the incumbent; the bound is the
   // lowest of the leaves' bounds after their solves (those not solved keep
   // their LP's). Stops at the first leaf with too many free slots (the bound
@@ -522,7 +522,8 @@ class Search {
     for (; k < t.open.size() && !Stopped(); ++k) {
       const OpenLeaf& leaf = t.open[k];
       if (leaf.free_slots.size() == 0) {
-        Step("the leaf " + LeafText(t, leaf) + ": no LP duals to fix its slots with");
+        Step("the leaf " + LeafText(t, leaf) +
+             ": no reduced-cost fixing (its LP gave no point within its totals)");
         break;
       }
       if (Count(leaf.free_slots) > search_.max_exact_leaf_slots) {
