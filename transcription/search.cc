@@ -420,17 +420,7 @@ class Search {
 
   // Slots that may be on in a schedule better than the incumbent (by a step).
   Eigen::MatrixXi FreeByReducedCost() const {
-    int fixed = 0;
-    const milp::LpData reduced = milp::FixByReducedCost(lp_, dual_, objective_, step_, &fixed);
-    const OperationalEncoding& enc = milp_.encoding();
-    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
-    for (int i = 0; i < enc.num_thrusters; ++i) {
-      for (int j = 0; j < enc.num_intervals; ++j) {
-        const int c = enc.on[i][j].index();
-        mask(i, j) = reduced.col_upper[c] > 0.5 ? 1 : 0;
-      }
-    }
-    return mask;
+    return SlotsFreeByReducedCost(milp_.encoding(), lp_, dual_, objective_, step_);
   }
 
   // Step 4. Returns false when it cannot help (too many free slots).

@@ -210,8 +210,8 @@ class Tree {
         // Its point is not in the leaf: bound kept, not split further.
         leaf->x.resize(0);
         leaf->note = "its LP needs " + FormatG(outside, 3) + " slots outside its totals";
-      } else if (Below(leaf->bound)) {
-        leaf->free_slots = FreeSlots(lp, b);
+      } else if (Below(leaf->bound) && std::isfinite(incumbent_) && b.finite()) {
+        leaf->free_slots = SlotsFreeByReducedCost(milp_.encoding(), lp, b, incumbent_, step_);
       }
     } else {
       leaf->note = "LP stopped, parent's bound";
@@ -223,26 +223,12 @@ class Tree {
     std::vector<const Leaf*> below;
     for (const Leaf& leaf : leaves_)
       if (Below(leaf.bound)) below.push_back(&leaf);
-    std::sort(below.begin(), below.end(), [](const Leaf* a, const Leaf* b) {
-      return a->bound < b->bound || (a->bound == b->bound && a->order < b->order);
-    });
+    std::sort(below.begin(), below.end(),
+              [](const Leaf* a, const Leaf* b) { return LowerThan(*a, *b); });
     std::vector<OpenLeaf> open;
     for (const Leaf* leaf : below)
       open.push_back({leaf->lower, leaf->upper, leaf->bound, leaf->free_slots});
     return open;
-  }
-
-  // OpenLeaf::free_slots of a leaf below the incumbent from its LP's bound.
-  Eigen::MatrixXi FreeSlots(const milp::LpData& lp, const milp::DualBound& b) const {
-    const OperationalEncoding& enc = milp_.encoding();
-    if (!std::isfinite(incumbent_) || !b.finite()) return {};
-    const milp::LpData fixed = milp::FixByReducedCost(lp, b, incumbent_, step_);
-    Eigen::MatrixXi mask(enc.num_thrusters, enc.num_intervals);
-    for (int i = 0; i < enc.num_thrusters; ++i) {
-      for (int j = 0; j < enc.num_intervals; ++j)
-        mask(i, j) = fixed.col_upper[enc.on[i][j].index()] > 0.5 ? 1 : 0;
-    }
-    return mask;
   }
 
   // Slots by which totals y lie outside the leaf's bounds, summed.
@@ -259,13 +245,15 @@ class Tree {
     return FormatG(leaf.bound, 6) + (leaf.note.empty() ? "" : " (" + leaf.note + ")");
   }
 
+  // Leaves in best-first order: lower bound first, then creation order.
+  static bool LowerThan(const Leaf& a, const Leaf& b) {
+    return a.bound < b.bound || (a.bound == b.bound && a.order < b.order);
+  }
+
   int Lowest() const {
     int best = 0;
     for (size_t k = 1; k < leaves_.size(); ++k) {
-      const Leaf& a = leaves_[k];
-      const Leaf& b = leaves_[static_cast<size_t>(best)];
-      if (a.bound < b.bound || (a.bound == b.bound && a.order < b.order))
-        best = static_cast<int>(k);
+      if (LowerThan(leaves_[k], leaves_[static_cast<size_t>(best)])) best = static_cast<int>(k);
     }
     return best;
   }
@@ -303,6 +291,18 @@ std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::
       y[static_cast<size_t>(i)] += x[enc.on[i][j].index()];
   }
   return y;
+}
+
+Eigen::MatrixXi SlotsFreeByReducedCost(const OperationalEncoding& enc, const milp::LpData& lp,
+                                       const milp::DualBound& bound, double incumbent,
+                                       double step) {
+  const milp::LpData fixed = milp::FixByReducedCost(lp, bound, incumbent, step);
+  Eigen::MatrixXi mask(enc.num_thrusters, enc.num_intervals);
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    for (int j = 0; j < enc.num_intervals; ++j)
+      mask(i, j) = fixed.col_upper[enc.on[i][j].index()] > 0.5 ? 1 : 0;
+  }
+  return mask;
 }
 
 namespace {

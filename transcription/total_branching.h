@@ -53,6 +53,7 @@
 
 #include <Eigen/Core>
 
+#include "milp/lp_bound.h"
 #include "milp/solver.h"
 #include "transcription/schedule_milp.h"
 
@@ -137,6 +138,13 @@ inline bool TotalIsBounded(double lower, double upper, const ThrusterGroup& grou
 /// Each thruster's number of on slots at x, a column vector of milp.lp()
 /// (fractional at a relaxation's point).
 std::vector<double> ThrusterTotals(const OperationalEncoding& enc, const Eigen::VectorXd& x);
+
+/// The slots (thrusters x intervals, 1 = free) that can be on in a schedule
+/// better than `incumbent` by `step`: milp::FixByReducedCost with `bound`, the
+/// safe dual bound of `lp` (the MILP's relaxation, or a leaf's LP: its first
+/// columns are the MILP's, in order).
+Eigen::MatrixXi SlotsFreeByReducedCost(const OperationalEncoding& enc, const milp::LpData& lp,
+                                       const milp::DualBound& bound, double incumbent, double step);
 
 /// The LP of a leaf: the relaxation of `milp` (its columns first, in order)
 /// with thruster i's number of on slots within [lower[i], upper[i]] (one
