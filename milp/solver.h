@@ -220,7 +220,9 @@ struct LpRelaxationResult {
 
 /// A continuous relaxation kept between solves, for searches that change
 /// column bounds and solve again from the last basis (dual simplex), e.g. a
-/// dive. Not thread-safe; one per thread.
+/// dive or a tree. The first Solve starts from scratch: by the dual simplex,
+/// or (options.lp_algorithm kBarrier or kBarrierNoCrossover) by the interior
+/// point with its crossover to a basis. Not thread-safe; one per thread.
 ///
 ///   std::unique_ptr<LpSession> s = solver->OpenLpSession(lp, options);
 ///   LpRelaxationResult r = s->Solve();          // from scratch
@@ -237,6 +239,12 @@ class LpSession {
   /// session's opening) or on options.interrupt (status kNoSolutionFound).
   /// dual_bound is not computed here (SafeDualBound on the result's duals).
   virtual LpRelaxationResult Solve() = 0;
+  /// The basis the last Solve left (opaque), to start a later Solve from it
+  /// (RestoreBasis), e.g. a tree's child from its parent's basis rather than
+  /// its sibling's. Empty when the session keeps none (every Solve from
+  /// scratch); RestoreBasis of an empty one does nothing.
+  virtual std::vector<unsigned char> SaveBasis() const { return {}; }
+  virtual void RestoreBasis(const std::vector<unsigned char>& basis) { (void)basis; }
 };
 
 class Solver {

@@ -114,6 +114,15 @@ class Search {
     return o;
   }
 
+  // An incumbent-only restricted MILP: RestrictedOptions within the node
+  // limit and its share of the time left (SearchOptions::heuristic_time_share).
+  milp::SolveOptions HeuristicOptions() const {
+    milp::SolveOptions o = RestrictedOptions();
+    o.max_nodes = NodeLimit();
+    if (std::isfinite(o.time_limit_s)) o.time_limit_s *= search_.heuristic_time_share;
+    return o;
+  }
+
   void Report(milp::SolvePhase phase, bool new_incumbent) const {
     if (!options_.progress) return;
     milp::SolveProgress p;
@@ -307,10 +316,8 @@ class Search {
       const Restriction r = Restrict(mask);
       if (report_ != nullptr) report_->candidate_slots = Count(mask);
       const double t0 = Elapsed();
-      milp::SolveOptions o = RestrictedOptions();
-      o.max_nodes = NodeLimit();
       milp::SolveResult s;
-      if (r.feasible) s = SolveRestricted(r.small, o);
+      if (r.feasible) s = SolveRestricted(r.small, HeuristicOptions());
       nodes_ += s.nodes;
       const std::string what = "MILP restricted to " + std::to_string(Count(mask)) +
                                " candidate slots (" + std::to_string(r.small.num_cols()) +
@@ -376,9 +383,7 @@ class Search {
     AddObjectiveCutoff(&r.small, Cutoff());
     if (extra_rows) milp::AppendRows(&r.small, extra_rows(r));
     const double t0 = Elapsed();
-    milp::SolveOptions o = RestrictedOptions();
-    o.max_nodes = NodeLimit();
-    const milp::SolveResult s = SolveRestricted(r.small, o);
+    const milp::SolveResult s = SolveRestricted(r.small, HeuristicOptions());
     nodes_ += s.nodes;
     Step(what + std::to_string(Count(mask)) + " slots: " + std::string(milp::ToString(s.status)) +
          " in " + FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
@@ -488,9 +493,10 @@ class Search {
     milp::SolveOptions o = SubOptions(true);
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
-    const TotalBranching t = BranchOnThrusterTotals(
-        milp_, solver_, o, relaxation_.x, bound_, objective_, step_, TreeLpBudget(),
-        search_.total_branching_axis_groups, search_.total_branching_elastic);
+    const TotalBranching t =
+        BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_, objective_, step_,
+                               TreeLpBudget(), search_.total_branching_axis_groups,
+                               search_.total_branching_elastic, search_.total_branching_warm);
     RaiseBound(t.bound);
     Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);
@@ -577,6 +583,7 @@ class Search {
   // SearchOptions::total_branching_lp_nonzeros: the tree's LPs are the
   // whole MILP's with a few rows, so their size is the MILP's.
   int TreeLpBudget() const {
+    if (search_.total_branching_warm) return search_.total_branching_warm_lps;
     const int lps = search_.total_branching_lps;
     const double size = std::max(1, lp_.num_nonzeros());
     if (search_.total_branching_lp_nonzeros <= 0 || size >= search_.total_branching_lp_nonzeros)
@@ -751,12 +758,19 @@ bool SearchOptions::IsValid(std::string* error) const {
   if (total_branching_lps < 0) {
     return fail("total_branching_lps must be >= 0, got " + std::to_string(total_branching_lps));
   }
+  if (total_branching_warm_lps < 0) {
+    return fail("total_branching_warm_lps must be >= 0, got " +
+                std::to_string(total_branching_warm_lps));
+  }
   if (max_exact_leaf_slots < 0) {
     return fail("max_exact_leaf_slots must be >= 0, got " + std::to_string(max_exact_leaf_slots));
   }
   if (total_branching_lp_nonzeros < 0) {
     return fail("total_branching_lp_nonzeros must be >= 0, got " +
                 std::to_string(total_branching_lp_nonzeros));
+  }
+  if (!(heuristic_time_share > 0.0 && heuristic_time_share <= 1.0)) {
+    return fail("heuristic_time_share must be in (0, 1], got " + FormatG(heuristic_time_share, 6));
   }
   if (improvement_rounds < 0)
     return fail("improvement_rounds must be >= 0, got " + std::to_string(improvement_rounds));

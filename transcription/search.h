@@ -37,11 +37,13 @@
 //  4a. When too many slots stay free for step 4: local improvement, the MILP
 //     restricted to wider nets around the relaxation's and the incumbent's
 //     slots with a cutoff one step below the incumbent (incumbents only):
-//     the first net, then
+//     the first net (under a time limit, each incumbent-only MILP gets a
+//     share of the time left: `heuristic_time_share`), then
 //  4b. branching on each thruster's number of on slots (an integer in every
 //     schedule; first the sum over thrusters that stand in for each other,
-//     +N and -N) over a budget of LP work, until the gap closes: a better
-//     bound, often the proof
+//     +N and -N), its leaves dual simplex solves from their parent's basis,
+//     within a budget of LPs, until the gap closes: a better bound, often the
+//     proof
 //     (transcription/total_branching.h; each leaf's LP holds its totals
 //     elastically, so it is never infeasible); then step 4 for each open
 //     leaf, lowest first, while reduced-cost fixing with the leaf's LP duals
@@ -87,6 +89,13 @@ struct SearchOptions {
   Formulation restricted_formulation = Formulation::kCondensed;
   /// Node limit of each restricted MILP solve.
   long long restricted_max_nodes = 20000;
+  /// Under a time limit, the largest share of the time left that one
+  /// incumbent-only restricted MILP (steps 2 and 3, the lowest leaf's) may
+  /// use; the rest is kept for the bound (the tree, the exact solves). 1: no
+  /// cap. Weeks 10, 47 and 52 of data/scenarios/hard/ with 60 s: the first
+  /// improvement MILP alone took 47-50 s of its 20,000 nodes (finding
+  /// nothing on two of them) and left the tree no time.
+  double heuristic_time_share = 0.25;
   /// Restricted MILPs solved by row generation over their dense rows
   /// (milp::SolveWithLazyRows): on GEO weeks ~1/4 of the condensed window
   /// rows bind at the LP optimum, and CBC's node LPs on the rest cost 10x.
@@ -132,6 +141,18 @@ struct SearchOptions {
   /// optimal.
   int total_branching_lp_nonzeros = 300000;
   static constexpr int kTreeLpScaleMax = 8;
+  /// The tree's leaves as dual simplex solves in one LP session, each from
+  /// its parent's basis (a leaf only changes bounds), after one interior
+  /// point with crossover for the root's basis; its budget is then
+  /// total_branching_warm_lps LPs. Off: each leaf LP an interior point from
+  /// scratch, budgeted as above (the previous release's tree, kept for
+  /// comparison in the bench). Week 52 of data/scenarios/hard/ (six
+  /// thrusters, 60 s, one thread): 8 leaf LPs in 3.5 s after the root's
+  /// 11 s raised the bound from 80 to 82 steps and the lowest leaf's MILP
+  /// found an 82-step schedule (proven optimal), where the previous tree's
+  /// first two leaf LPs ran out of the minute.
+  bool total_branching_warm = true;
+  int total_branching_warm_lps = 200;
   /// The tree splits the summed total of thrusters that stand in for each
   /// other (+N and -N) before their own (TotalGroups). Off: single thrusters
   /// only, the previous release's tree, kept for comparison in the bench. On

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -40,14 +41,24 @@ constexpr double kStandInTolerance = 1e-3;
 // is valid for the leaf whatever the penalty; a leaf whose LP needs a
 // hundredth of a slot outside its bounds costs more than the incumbent.
 constexpr double kElasticFactor = 100.0;
+// The same in the warm tree, whose leaves are dual simplex solves from a
+// neighbour's basis: there the penalty sets the work. On week 52 of
+// data/scenarios/hard/ (six thrusters), the leaf +N and -N <= 77 of a root at
+// 77.51 (no schedule fires them fewer times) took 3176 pivots (6.8 s) at
+// 100 times the incumbent, 80 at 10 times and 9 (0.07 s) at once the
+// incumbent, where its 0.49 slots outside cost 0.68 m/s, above the 1.41 m/s
+// incumbent with the root's 1.31. A leaf that needs so little outside that
+// its bound stays below the incumbent is not split (Take).
+constexpr double kWarmElasticFactor = 1.0;
 
 struct Leaf {
   std::vector<double> lower, upper;  // per group: bounds on its total
   double bound = -milp::kInfinity;
-  Eigen::VectorXd x;           // its LP point; empty when it has none (not split)
-  int order = 0;               // creation order, for ties
-  std::string note;            // why it has no point, for the detail
-  Eigen::MatrixXi free_slots;  // OpenLeaf::free_slots
+  Eigen::VectorXd x;                 // its LP point; empty when it has none (not split)
+  int order = 0;                     // creation order, for ties
+  std::string note;                  // why it has no point, for the detail
+  Eigen::MatrixXi free_slots;        // OpenLeaf::free_slots
+  std::vector<unsigned char> basis;  // its LP's final basis (warm tree), its children's start
 };
 
 // The group to split: the one whose total is nearest to half a slot from an
@@ -95,8 +106,9 @@ std::vector<double> GroupTotals(const std::vector<ThrusterGroup>& groups,
 class Tree {
  public:
   Tree(const ScheduleMilp& milp, const milp::Solver& solver, const milp::SolveOptions& options,
-       double incumbent, double step, bool axis_groups, double elastic_cost_per_slot)
-      : milp_(milp),
+       double incumbent, double step, bool axis_groups, double elastic_cost_per_slot, bool warm)
+      : warm_(warm),
+        milp_(milp),
         solver_(solver),
         options_(options),
         incumbent_(incumbent),
@@ -115,6 +127,7 @@ class Tree {
                        root_bound,
                        root_x,
                        0,
+                       {},
                        {},
                        {}});
     const std::string why = Search(max_lps);
@@ -135,11 +148,44 @@ class Tree {
     if (!splits.empty()) splits += ")";
     out.detail = "branching on thruster totals: " + std::to_string(lps_) + " LPs" + splits +
                  ", bound " + FormatG(out.bound, 8) + " (root " + FormatG(root_bound, 8) + "), " +
-                 std::to_string(out.open_leaves) + " leaves below the incumbent; " + why;
+                 std::to_string(out.open_leaves) + " leaves below the incumbent; " + why +
+                 (warm_ && session_ ? "; " + session_note_ : "");
     return out;
   }
 
  private:
+  // The warm tree's LP session and its root basis (interior point and
+  // crossover), before the first split. False if the root stops short (time
+  // limit, interrupt): no leaf then.
+  bool OpenSession() {
+    totals_lp_ = WithGroupTotalColumns(milp_, groups_, elastic_cost_);
+    milp::SolveOptions o = options_;
+    o.time_limit_s = std::max(0.0, Remaining());
+    o.lp_algorithm = milp::LpAlgorithm::kBarrier;
+    const double t0 = Elapsed();
+    // The root without its elastic slots (at the root every total is free,
+    // so they are zero anyway): their penalty, four orders of magnitude above
+    // the slots' costs, slowed CLP's interior point from 11 s to minutes on a
+    // six-thruster GEO week. Restored for the leaves, whose dual simplex
+    // minds no cost scale.
+    milp::LpData root_lp = totals_lp_.lp;
+    for (int column : totals_lp_.elastic_column) root_lp.col_upper[column] = 0.0;
+    session_ = solver_.OpenLpSession(root_lp, o);
+    const milp::LpRelaxationResult root = session_->Solve();
+    for (int column : totals_lp_.elastic_column) {
+      session_->SetColumnBounds(column, totals_lp_.lp.col_lower[column],
+                                totals_lp_.lp.col_upper[column]);
+    }
+    session_note_ =
+        "leaves by dual simplex from their parent's basis, the root's by interior "
+        "point and crossover in " +
+        FormatG(Elapsed() - t0, 3) + " s";
+    if (root.status == milp::SolveStatus::kOptimal) return true;
+    session_note_ = "the root basis was not found (" + root.detail + ")";
+    session_.reset();
+    return false;
+  }
+
   std::string Search(int max_lps) {
     for (;;) {
       const int k = Lowest();
@@ -151,6 +197,10 @@ class Tree {
       if (lps_ + 2 > max_lps) return "LP limit (" + std::to_string(max_lps) + ")";
       if (Interrupted()) return "interrupted";
       if (Remaining() <= 0.0) return "time limit";
+      if (warm_ && !session_) {
+        if (!OpenSession()) return session_note_;
+        leaves_[static_cast<size_t>(k)].basis = session_->SaveBasis();
+      }
       Leaf parent = std::move(leaves_[static_cast<size_t>(k)]);
       leaves_.erase(leaves_.begin() + k);
       const std::vector<double> y =
@@ -184,6 +234,11 @@ class Tree {
   // The two children of a split, side by side when the caller allows two
   // threads (milp::Solver::SolveLpRelaxations: each LP in its own process).
   void SolvePair(Leaf* down, Leaf* up) {
+    if (warm_) {
+      SolveWarm(down);
+      SolveWarm(up);
+      return;
+    }
     const milp::LpData down_lp =
         WithGroupTotals(milp_, groups_, down->lower, down->upper, elastic_cost_);
     const milp::LpData up_lp = WithGroupTotals(milp_, groups_, up->lower, up->upper, elastic_cost_);
@@ -193,6 +248,30 @@ class Tree {
         solver_.SolveLpRelaxations({&down_lp, &up_lp}, o);
     Take(down_lp, r[0], down);
     Take(up_lp, r[1], up);
+  }
+
+  // A leaf's LP in the session: its bounds on the totals' columns, then the
+  // dual simplex from its parent's basis (a leaf changes bounds, not costs,
+  // so that basis stays dual feasible). From the sibling's basis instead,
+  // the leaf +N and -N >= 48 of week 47 of data/scenarios/hard/ (six
+  // thrusters) ran out of the minute after its sibling <= 47 needed the
+  // elastic slots.
+  void SolveWarm(Leaf* leaf) {
+    session_->RestoreBasis(leaf->basis);
+    const int n = milp_.encoding().num_intervals;
+    milp::LpData& lp = totals_lp_.lp;
+    for (size_t g = 0; g < groups_.size(); ++g) {
+      const int column = totals_lp_.bound_column[g];
+      const double lo = std::max(0.0, leaf->lower[g]);
+      const double hi = std::min<double>(groups_[g].MaxTotal(n), leaf->upper[g]);
+      lp.col_lower[column] = lo;
+      lp.col_upper[column] = hi;
+      session_->SetColumnBounds(column, lo, hi);
+    }
+    const milp::LpRelaxationResult r = session_->Solve();
+    leaf->basis = r.status == milp::SolveStatus::kOptimal ? session_->SaveBasis()
+                                                          : std::vector<unsigned char>{};
+    Take(lp, r, leaf);
   }
 
   void Take(const milp::LpData& lp, const milp::LpRelaxationResult& r, Leaf* leaf) {
@@ -268,6 +347,10 @@ class Tree {
     return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
   }
 
+  bool warm_;
+  GroupTotalsLp totals_lp_;  // the warm tree's LP, with the last leaf's bounds
+  std::unique_ptr<milp::LpSession> session_;
+  std::string session_note_;
   const ScheduleMilp& milp_;
   const milp::Solver& solver_;
   const milp::SolveOptions& options_;
@@ -379,65 +462,130 @@ std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_group
   return groups;
 }
 
+namespace {
+
+// Appends group g's running totals p_j = p_{j-1} + sum over the group of
+// on[i][j] (columns, bounded by [0, (j + 1) x its thrusters], and their
+// defining rows to `rows`); returns the column of p_last, its total.
+int AppendGroupTotal(milp::LpData* lp, const OperationalEncoding& enc, const ThrusterGroup& group,
+                     const std::string& tag, std::vector<milp::SparseRow>* rows) {
+  const int n = enc.num_intervals;
+  const int size = static_cast<int>(group.thrusters.size());
+  std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    sums[static_cast<size_t>(j)] = {0.0, (j + 1.0) * size, 0.0, milp::VarType::kContinuous,
+                                    tag + "_" + std::to_string(j)};
+  }
+  const int first = milp::AppendColumns(lp, sums);
+  for (int j = 0; j < n; ++j) {
+    milp::SparseRow row;  // p_j - p_{j-1} - sum over the group of on[i][j] = 0
+    row.columns = {first + j};
+    row.coefficients = {1.0};
+    for (int i : group.thrusters) {
+      row.columns.push_back(enc.on[i][j].index());
+      row.coefficients.push_back(-1.0);
+    }
+    if (j > 0) {
+      row.columns.push_back(first + j - 1);
+      row.coefficients.push_back(-1.0);
+    }
+    row.lower = row.upper = 0.0;
+    row.name = tag + "_" + std::to_string(j);
+    rows->push_back(std::move(row));
+  }
+  return first + n - 1;
+}
+
+// Appends the elastic slots of a group's total `total_column`: the short and
+// over columns, each costing `cost` (in the LP's sense) per slot, and the row
+// that puts total + short - over within [lower, upper].
+void AppendElasticSlots(milp::LpData* lp, int total_column, double most, double cost, double lower,
+                        double upper, const std::string& tag, std::vector<milp::SparseRow>* rows) {
+  const int slack =
+      milp::AppendColumns(lp, {{0.0, most, cost, milp::VarType::kContinuous, tag + "_short"},
+                               {0.0, most, cost, milp::VarType::kContinuous, tag + "_over"}});
+  milp::SparseRow row;
+  row.columns = std::vector<int>{total_column, slack, slack + 1};
+  row.coefficients = {1.0, 1.0, -1.0};
+  row.lower = lower;
+  row.upper = upper;
+  row.name = tag + "_bounds";
+  rows->push_back(std::move(row));
+}
+
+double ObjectiveSign(const milp::LpData& lp) {
+  return lp.sense == milp::ObjectiveSense::kMaximize ? -1.0 : 1.0;
+}
+
+}  // namespace
+
 milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<ThrusterGroup>& groups,
                              const std::vector<double>& lower, const std::vector<double>& upper,
                              double elastic_cost_per_slot) {
   milp::LpData lp = milp.lp();
   const OperationalEncoding& enc = milp.encoding();
   const int n = enc.num_intervals;
-  const bool elastic = elastic_cost_per_slot > 0.0;
-  const double sign = lp.sense == milp::ObjectiveSense::kMaximize ? -1.0 : 1.0;
   std::vector<milp::SparseRow> rows;
   for (size_t g = 0; g < groups.size(); ++g) {
-    const int size = static_cast<int>(groups[g].thrusters.size());
     const int most = groups[g].MaxTotal(n);
     if (!TotalIsBounded(lower[g], upper[g], groups[g], n)) continue;
     const double lo = std::max(0.0, lower[g]), hi = std::min(static_cast<double>(most), upper[g]);
     const std::string tag = "total_" + std::to_string(g);
-    std::vector<milp::ColumnSpec> sums(static_cast<size_t>(n));
-    for (int j = 0; j < n; ++j) {
-      sums[static_cast<size_t>(j)] = {0.0, (j + 1.0) * size, 0.0, milp::VarType::kContinuous,
-                                      tag + "_" + std::to_string(j)};
-    }
-    if (!elastic) {
-      sums.back().lower = lo;
-      sums.back().upper = hi;
-    }
-    const int first = milp::AppendColumns(&lp, sums);
-    for (int j = 0; j < n; ++j) {
-      milp::SparseRow row;  // p_j - p_{j-1} - sum over the group of on[i][j] = 0
-      row.columns = {first + j};
-      row.coefficients = {1.0};
-      for (int i : groups[g].thrusters) {
-        row.columns.push_back(enc.on[i][j].index());
-        row.coefficients.push_back(-1.0);
-      }
-      if (j > 0) {
-        row.columns.push_back(first + j - 1);
-        row.coefficients.push_back(-1.0);
-      }
-      row.lower = row.upper = 0.0;
-      row.name = tag + "_" + std::to_string(j);
-      rows.push_back(std::move(row));
-    }
-    if (elastic) {
-      // lower <= p_last + short - over <= upper, each slot short or over
-      // costing elastic_cost_per_slot: never infeasible.
-      const double cost = sign * elastic_cost_per_slot;
-      const int slack = milp::AppendColumns(
-          &lp, {{0.0, static_cast<double>(most), cost, milp::VarType::kContinuous, tag + "_short"},
-                {0.0, static_cast<double>(most), cost, milp::VarType::kContinuous, tag + "_over"}});
-      milp::SparseRow row;
-      row.columns = std::vector<int>{first + n - 1, slack, slack + 1};
-      row.coefficients = {1.0, 1.0, -1.0};
-      row.lower = lo;
-      row.upper = hi;
-      row.name = tag + "_bounds";
-      rows.push_back(std::move(row));
+    const int total = AppendGroupTotal(&lp, enc, groups[g], tag, &rows);
+    if (elastic_cost_per_slot > 0.0) {
+      // lower <= total + short - over <= upper: never infeasible.
+      AppendElasticSlots(&lp, total, most, ObjectiveSign(lp) * elastic_cost_per_slot, lo, hi, tag,
+                         &rows);
+    } else {
+      lp.col_lower[total] = lo;
+      lp.col_upper[total] = hi;
     }
   }
   milp::AppendRows(&lp, rows);
   return lp;
+}
+
+GroupTotalsLp WithGroupTotalColumns(const ScheduleMilp& milp,
+                                    const std::vector<ThrusterGroup>& groups,
+                                    double elastic_cost_per_slot) {
+  GroupTotalsLp out{milp.lp(), {}, {}};
+  milp::LpData& lp = out.lp;
+  const OperationalEncoding& enc = milp.encoding();
+  const double sign = ObjectiveSign(lp);
+  std::vector<milp::SparseRow> rows;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const double most = groups[g].MaxTotal(enc.num_intervals);
+    const std::string tag = "total_" + std::to_string(g);
+    // One row per group (the interior point runs once, on the root, whose
+    // totals are free; with crossover it took 11 s on a six-thruster GEO
+    // week with these seven rows).
+    const int bound =
+        milp::AppendColumns(&lp, {{0.0, most, 0.0, milp::VarType::kContinuous, tag + "_bounded"}});
+    milp::SparseRow row;  // sum over the group of on[i][j] (+ short - over) - bounded = 0
+    for (int i : groups[g].thrusters) {
+      for (int j = 0; j < enc.num_intervals; ++j) {
+        row.columns.push_back(enc.on[i][j].index());
+        row.coefficients.push_back(1.0);
+      }
+    }
+    if (elastic_cost_per_slot > 0.0) {
+      const double cost = sign * elastic_cost_per_slot;
+      const int slack =
+          milp::AppendColumns(&lp, {{0.0, most, cost, milp::VarType::kContinuous, tag + "_short"},
+                                    {0.0, most, cost, milp::VarType::kContinuous, tag + "_over"}});
+      row.columns.insert(row.columns.end(), {slack, slack + 1});
+      row.coefficients.insert(row.coefficients.end(), {1.0, -1.0});
+      out.elastic_column.insert(out.elastic_column.end(), {slack, slack + 1});
+    }
+    row.columns.push_back(bound);
+    row.coefficients.push_back(-1.0);
+    row.lower = row.upper = 0.0;
+    row.name = tag;
+    rows.push_back(std::move(row));
+    out.bound_column.push_back(bound);
+  }
+  milp::AppendRows(&lp, rows);
+  return out;
 }
 
 milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
@@ -451,14 +599,15 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps, bool axis_groups,
-                                      bool elastic) {
+                                      bool elastic, bool warm) {
   double elastic_cost = 0.0;  // hard bounds
   if (elastic) {
-    elastic_cost = kElasticFactor * std::max(step, std::abs(root_bound));
+    const double factor = warm ? kWarmElasticFactor : kElasticFactor;
+    elastic_cost = factor * std::max(step, std::abs(root_bound));
     if (std::isfinite(incumbent))
-      elastic_cost = std::max(elastic_cost, kElasticFactor * std::abs(incumbent));
+      elastic_cost = std::max(elastic_cost, factor * std::abs(incumbent));
   }
-  return Tree(milp, solver, lp_options, incumbent, step, axis_groups, elastic_cost)
+  return Tree(milp, solver, lp_options, incumbent, step, axis_groups, elastic_cost, warm)
       .Run(root_x, root_bound, max_lps);
 }
 

@@ -28,15 +28,21 @@
 // raised it to 81).
 //
 // The tree is searched best first: the open leaf with the lowest bound is
-// split on its most fractional total, its two children's LPs
-// (WithGroupTotals) solved side by side when lp_options.threads >= 2
-// (milp::Solver::SolveLpRelaxations: one child process each, both forked
-// from the calling thread).
+// split on its most fractional total. Its two children's LPs are dual
+// simplex solves in one LP session (milp::LpSession; WithGroupTotalColumns:
+// a leaf only changes the bounds of one column per group), each from its
+// parent's basis; the root's basis comes from CLP's interior point with its
+// crossover (11 s on a six-thruster GEO week, then 0.1-3 s per leaf, where
+// each leaf LP from scratch took 10-20 s). Without `warm`, the previous
+// release's tree: each leaf LP from scratch by lp_options' algorithm
+// (WithGroupTotals), the two of a split side by side when
+// lp_options.threads >= 2 (milp::Solver::SolveLpRelaxations: one child
+// process each, both forked from the calling thread).
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
 // its parent's. The LP's bounds on the totals are elastic (a penalty per
-// slot outside them, 100 times the objective's scale), so an infeasible
-// leaf is cut off by a high bound: CLP takes minutes to call a leaf LP of a
+// slot outside them, 100 times the objective's scale, once it in the warm
+// tree), so an infeasible leaf is cut off by a high bound: CLP takes minutes to call a leaf LP of a
 // GEO week infeasible, seconds to solve its elastic one. The leaves cover every
 // schedule, so the lowest leaf bound is a bound of the MILP. Stops when
 // that bound reaches the incumbent (proof) or is within lp_options' gap of
@@ -120,13 +126,18 @@ struct TotalBranching {
 /// (+inf if none); `lp_options` the LP options (algorithm, threads, time
 /// limit from the call, interrupt). On-off mode only; without an objective
 /// step (<= 0) the bound is not rounded. `axis_groups`: as in TotalGroups.
-/// `elastic` off: the leaves' bounds on the totals are hard (the previous
-/// release's tree; an infeasible leaf LP then takes CLP minutes).
+/// `elastic` off: the leaves' bounds on the totals are hard (an earlier
+/// release's tree; an infeasible leaf LP then takes CLP minutes). `warm` off:
+/// each leaf's LP from scratch by lp_options' algorithm, two side by side
+/// (the previous release's tree), instead of one LP session whose root basis
+/// comes from the interior point and its crossover and whose leaves are
+/// dual simplex solves from the last leaf's basis.
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps,
-                                      bool axis_groups = true, bool elastic = true);
+                                      bool axis_groups = true, bool elastic = true,
+                                      bool warm = true);
 
 /// Whether bounds [lower, upper] on a group's total cut anything: a total
 /// lies in [0, group.MaxTotal(num_intervals)] anyway.
@@ -168,6 +179,20 @@ milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<doub
 milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<ThrusterGroup>& groups,
                              const std::vector<double>& lower, const std::vector<double>& upper,
                              double elastic_cost_per_slot = 0.0);
+
+/// The LP of the warm tree: every group's total present, its bounds on one
+/// column per group (`bound_column[g]`, free at [0, the group's MaxTotal]),
+/// so that a leaf is a change of column bounds (milp::LpSession). Elastic as
+/// above when `elastic_cost_per_slot` > 0: total + short - over equals that
+/// column; otherwise the column is the total itself.
+struct GroupTotalsLp {
+  milp::LpData lp;
+  std::vector<int> bound_column;
+  std::vector<int> elastic_column;  // the short and over slots' columns (elastic only)
+};
+GroupTotalsLp WithGroupTotalColumns(const ScheduleMilp& milp,
+                                    const std::vector<ThrusterGroup>& groups,
+                                    double elastic_cost_per_slot = 0.0);
 
 }  // namespace thrustsched::transcription
 

@@ -183,8 +183,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (the tree's budget a count of LPs whatever their "
-        "size)";
+        "search as the previous release ran it (each leaf LP of the tree from scratch; the "
+        "heuristic MILPs free to use all the time left)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

@@ -237,8 +237,12 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search: its tree's budget a count of LPs (matrix.h).
-    if (spec.search_previous) search.total_branching_lp_nonzeros = 0;
+    // The previous release's search (matrix.h): each leaf LP of its tree an
+    // interior point from scratch, no time share for the heuristic MILPs.
+    if (spec.search_previous) {
+      search.total_branching_warm = false;
+      search.heuristic_time_share = 1.0;
+    }
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

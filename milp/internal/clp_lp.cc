@@ -482,18 +482,36 @@ class ClpSession final : public LpSession {
   double column_lower(int j) const override { return lp_.col_lower[j]; }
   double column_upper(int j) const override { return lp_.col_upper[j]; }
 
+  // CLP's status of each column and row (basic, at a bound, ...): the dual
+  // simplex factorises the basis it names at its start.
+  std::vector<unsigned char> SaveBasis() const override {
+    if (first_ || model_.statusExists() == false) return {};
+    const unsigned char* status = const_cast<ClpSimplex&>(model_).statusArray();
+    return {status, status + model_.numberColumns() + model_.numberRows()};
+  }
+  void RestoreBasis(const std::vector<unsigned char>& basis) override {
+    if (basis.size() != static_cast<size_t>(model_.numberColumns() + model_.numberRows())) return;
+    model_.copyinStatus(basis.data());
+  }
+
   LpRelaxationResult Solve() override {
     const double start = clock_.Elapsed();
     const int iterations_before = model_.numberIterations();
     const double remaining = clock_.Remaining();
     if (std::isfinite(remaining)) model_.setMaximumWallSeconds(std::max(remaining, 1e-3));
     if (first_) {
-      // From scratch: presolve and dual simplex leave an optimal basis on
-      // the original model, the warm start of the next solves.
+      // From scratch: presolve and dual simplex (or an interior point and
+      // its crossover) leave an optimal basis on the original model, the warm
+      // start of the next solves. The interior point on request: on a
+      // six-thruster GEO week (289 k nonzeros) barrier and crossover take
+      // 11 s where the dual simplex from scratch takes minutes.
       ClpSolve how;
-      how.setSolveType(ClpSolve::useDual);
+      const bool barrier = options_.lp_algorithm == LpAlgorithm::kBarrier ||
+                           options_.lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
+      how.setSolveType(barrier ? ClpSolve::useBarrier : ClpSolve::useDual);
       how.setPresolveType(options_.presolve ? ClpSolve::presolveOn : ClpSolve::presolveOff);
       model_.initialSolve(how);
+      if (barrier && model_.status() == 0) model_.dual();  // clean-up (usually no pivots)
       first_ = false;
     } else {
       model_.dual();

@@ -184,5 +184,42 @@ TEST(LpSession, WarmSolvesMatchColdOnes) {
   EXPECT_NEAR(r.objective, cold.objective, 1e-7 * std::abs(cold.objective));
 }
 
+// A tree's child solved from its parent's basis (SaveBasis, RestoreBasis),
+// after a sibling moved the session elsewhere, gives the cold solve's
+// optimum; so does a first solve by interior point and crossover.
+TEST(LpSession, ChildFromItsParentsBasisMatchesAColdSolve) {
+  auto solver = MakeCbcSolver();
+  const LpData lp = RandomKnapsack(200, 10, 5);
+  for (const LpAlgorithm first : {LpAlgorithm::kDual, LpAlgorithm::kBarrier}) {
+    SolveOptions o;
+    o.lp_algorithm = first;
+    std::unique_ptr<LpSession> s = solver->OpenLpSession(lp, o);
+    const LpRelaxationResult root = s->Solve();
+    ASSERT_EQ(root.status, SolveStatus::kOptimal);
+    const LpRelaxationResult cold_root = solver->SolveLpRelaxation(lp);
+    EXPECT_NEAR(root.objective, cold_root.objective, 1e-7 * std::abs(cold_root.objective));
+    const std::vector<unsigned char> parent = s->SaveBasis();
+    EXPECT_EQ(parent.size(), static_cast<size_t>(lp.num_cols() + lp.num_rows()));
+    int fractional = 0;  // a column the root uses in part
+    while (fractional < lp.num_cols() &&
+           (root.x[fractional] < 1e-6 || root.x[fractional] > 1.0 - 1e-6)) {
+      ++fractional;
+    }
+    ASSERT_LT(fractional, lp.num_cols());
+    for (const double fixed : {0.0, 1.0}) {  // the sibling, then the child
+      s->RestoreBasis(parent);
+      s->SetColumnBounds(fractional, fixed, fixed);
+      const LpRelaxationResult warm = s->Solve();
+      LpData child = lp;
+      child.col_lower[fractional] = child.col_upper[fractional] = fixed;
+      const LpRelaxationResult cold = solver->SolveLpRelaxation(child);
+      ASSERT_EQ(warm.status, cold.status);
+      if (cold.status == SolveStatus::kOptimal) {
+        EXPECT_NEAR(warm.objective, cold.objective, 1e-7 * std::abs(cold.objective));
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace thrustsched::milp

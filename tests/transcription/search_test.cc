@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/format.h"
 #include "dynamics/discretisation.h"
 #include "milp/cbc_solver.h"
 #include "milp/lazy_rows.h"
@@ -288,6 +289,20 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("total_branching_lp_nonzeros must be >= 0, got -1"), std::string::npos)
       << error;
+  s = SearchOptions{};
+  s.total_branching_warm_lps = -3;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("total_branching_warm_lps must be >= 0, got -3"), std::string::npos)
+      << error;
+  for (const double share : {0.0, 1.5}) {
+    s = SearchOptions{};
+    s.heuristic_time_share = share;
+    EXPECT_FALSE(s.IsValid(&error));
+    EXPECT_NE(
+        error.find("heuristic_time_share must be in (0, 1], got " + common::FormatG(share, 6)),
+        std::string::npos)
+        << error;
+  }
 }
 
 }  // namespace

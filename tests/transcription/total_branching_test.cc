@@ -94,14 +94,21 @@ TEST(BranchOnThrusterTotals, NeverAboveTheProvenOptimumAndRaisesTheRelaxationsBo
     const Root root = Relaxation(milp, *solver);
     EXPECT_NEAR(root.bound / slot, c.root_slots, 1e-6);
     // Without an incumbent: the tree only raises the bound, never above the
-    // proven optimum, by whole slots.
+    // proven optimum, by whole slots; the same bounds with each leaf LP from
+    // scratch (interior point) as from its parent's basis (dual simplex).
     for (const bool axis_groups : {false, true}) {
-      const TotalBranching t = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
-                                                      root.bound, kInf, slot, 12, axis_groups);
-      EXPECT_LE(t.lps, 12);
-      EXPECT_GE(t.bound, root.bound - 1e-12) << t.detail;
-      EXPECT_LE(t.bound, optimum + 1e-9) << t.detail;
-      EXPECT_NEAR(t.bound / slot, axis_groups ? c.axis_slots : c.single_slots, 1e-6) << t.detail;
+      for (const bool warm : {false, true}) {
+        const TotalBranching t =
+            BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound, kInf, slot, 12,
+                                   axis_groups, true, warm);
+        EXPECT_LE(t.lps, 12);
+        EXPECT_GE(t.bound, root.bound - 1e-12) << t.detail;
+        EXPECT_LE(t.bound, optimum + 1e-9) << t.detail;
+        EXPECT_NEAR(t.bound / slot, axis_groups ? c.axis_slots : c.single_slots, 1e-6) << t.detail;
+        if (warm && t.lps > 0) {
+          EXPECT_NE(t.detail.find("from their parent's basis"), std::string::npos) << t.detail;
+        }
+      }
     }
     // With the optimum as incumbent: still never above it; where the
     // relaxation already reaches it nothing is solved.
