@@ -496,25 +496,14 @@ int AppendGroupTotal(milp::LpData* lp, const OperationalEncoding& enc, const Thr
   return first + n - 1;
 }
 
-// Appends the elastic slots of a group's total `total_column`: the short and
-// over columns, each costing `cost` (in the LP's sense) per slot, and the row
-// that puts total + short - over within [lower, upper].
-void AppendElasticSlots(milp::LpData* lp, int total_column, double most, double cost, double lower,
-                        double upper, const std::string& tag, std::vector<milp::SparseRow>* rows) {
-  const int slack =
-      milp::AppendColumns(lp, {{0.0, most, cost, milp::VarType::kContinuous, tag + "_short"},
-                               {0.0, most, cost, milp::VarType::kContinuous, tag + "_over"}});
-  milp::SparseRow row;
-  row.columns = std::vector<int>{total_column, slack, slack + 1};
-  row.coefficients = {1.0, 1.0, -1.0};
-  row.lower = lower;
-  row.upper = upper;
-  row.name = tag + "_bounds";
-  rows->push_back(std::move(row));
-}
-
-double ObjectiveSign(const milp::LpData& lp) {
-  return lp.sense == milp::ObjectiveSense::kMaximize ? -1.0 : 1.0;
+// Appends a group's elastic slots: the columns short and over, each in
+// [0, most] and costing `cost_per_slot` (in the LP's sense); returns the
+// first one's index (over is the next).
+int AppendShortAndOver(milp::LpData* lp, double most, double cost_per_slot,
+                       const std::string& tag) {
+  const double cost = (lp->sense == milp::ObjectiveSense::kMaximize ? -1.0 : 1.0) * cost_per_slot;
+  return milp::AppendColumns(lp, {{0.0, most, cost, milp::VarType::kContinuous, tag + "_short"},
+                                  {0.0, most, cost, milp::VarType::kContinuous, tag + "_over"}});
 }
 
 }  // namespace
@@ -534,8 +523,14 @@ milp::LpData WithGroupTotals(const ScheduleMilp& milp, const std::vector<Thruste
     const int total = AppendGroupTotal(&lp, enc, groups[g], tag, &rows);
     if (elastic_cost_per_slot > 0.0) {
       // lower <= total + short - over <= upper: never infeasible.
-      AppendElasticSlots(&lp, total, most, ObjectiveSign(lp) * elastic_cost_per_slot, lo, hi, tag,
-                         &rows);
+      const int slack = AppendShortAndOver(&lp, most, elastic_cost_per_slot, tag);
+      milp::SparseRow row;
+      row.columns = std::vector<int>{total, slack, slack + 1};
+      row.coefficients = {1.0, 1.0, -1.0};
+      row.lower = lo;
+      row.upper = hi;
+      row.name = tag + "_bounds";
+      rows.push_back(std::move(row));
     } else {
       lp.col_lower[total] = lo;
       lp.col_upper[total] = hi;
@@ -551,7 +546,6 @@ GroupTotalsLp WithGroupTotalColumns(const ScheduleMilp& milp,
   GroupTotalsLp out{milp.lp(), {}, {}};
   milp::LpData& lp = out.lp;
   const OperationalEncoding& enc = milp.encoding();
-  const double sign = ObjectiveSign(lp);
   std::vector<milp::SparseRow> rows;
   for (size_t g = 0; g < groups.size(); ++g) {
     const double most = groups[g].MaxTotal(enc.num_intervals);
@@ -569,10 +563,7 @@ GroupTotalsLp WithGroupTotalColumns(const ScheduleMilp& milp,
       }
     }
     if (elastic_cost_per_slot > 0.0) {
-      const double cost = sign * elastic_cost_per_slot;
-      const int slack =
-          milp::AppendColumns(&lp, {{0.0, most, cost, milp::VarType::kContinuous, tag + "_short"},
-                                    {0.0, most, cost, milp::VarType::kContinuous, tag + "_over"}});
+      const int slack = AppendShortAndOver(&lp, most, elastic_cost_per_slot, tag);
       row.columns.insert(row.columns.end(), {slack, slack + 1});
       row.coefficients.insert(row.coefficients.end(), {1.0, -1.0});
       out.elastic_column.insert(out.elastic_column.end(), {slack, slack + 1});
