@@ -493,10 +493,12 @@ class Search {
     milp::SolveOptions o = SubOptions(true);
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
-    const TotalBranching t =
-        BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_, objective_, step_,
-                               TreeLpBudget(), search_.total_branching_axis_groups,
-                               search_.total_branching_elastic, search_.total_branching_warm);
+    TreeOptions tree;
+    tree.axis_groups = search_.total_branching_axis_groups;
+    tree.elastic = search_.total_branching_elastic;
+    tree.warm = search_.total_branching_warm;
+    const TotalBranching t = BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_,
+                                                    objective_, step_, TreeLpBudget(), tree);
     RaiseBound(t.bound);
     Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);

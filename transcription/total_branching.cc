@@ -589,16 +589,16 @@ milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<doub
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
-                                      double incumbent, double step, int max_lps, bool axis_groups,
-                                      bool elastic, bool warm) {
+                                      double incumbent, double step, int max_lps,
+                                      const TreeOptions& tree) {
   double elastic_cost = 0.0;  // hard bounds
-  if (elastic) {
-    const double factor = warm ? kWarmElasticFactor : kElasticFactor;
+  if (tree.elastic) {
+    const double factor = tree.warm ? kWarmElasticFactor : kElasticFactor;
     elastic_cost = factor * std::max(step, std::abs(root_bound));
     if (std::isfinite(incumbent))
       elastic_cost = std::max(elastic_cost, factor * std::abs(incumbent));
   }
-  return Tree(milp, solver, lp_options, incumbent, step, axis_groups, elastic_cost, warm)
+  return Tree(milp, solver, lp_options, incumbent, step, tree.axis_groups, elastic_cost, tree.warm)
       .Run(root_x, root_bound, max_lps);
 }
 

@@ -121,23 +121,31 @@ struct TotalBranching {
   std::vector<OpenLeaf> open;
 };
 
+/// The tree's shape; each off gives an earlier release's tree, kept for
+/// comparison in the bench.
+struct TreeOptions {
+  /// As in TotalGroups.
+  bool axis_groups = true;
+  /// Off: the leaves' bounds on the totals are hard (an infeasible leaf LP
+  /// then takes CLP minutes).
+  bool elastic = true;
+  /// Off: each leaf's LP from scratch by lp_options' algorithm, two side by
+  /// side, instead of one LP session whose root basis comes from the
+  /// interior point and its crossover and whose leaves are dual simplex
+  /// solves from their parent's basis.
+  bool warm = true;
+};
+
 /// As above. `root_x` and `root_bound` are the relaxation's point and its
 /// (safe, rounded) bound; `incumbent` the best known schedule's objective
 /// (+inf if none); `lp_options` the LP options (algorithm, threads, time
 /// limit from the call, interrupt). On-off mode only; without an objective
-/// step (<= 0) the bound is not rounded. `axis_groups`: as in TotalGroups.
-/// `elastic` off: the leaves' bounds on the totals are hard (an earlier
-/// release's tree; an infeasible leaf LP then takes CLP minutes). `warm` off:
-/// each leaf's LP from scratch by lp_options' algorithm, two side by side
-/// (the previous release's tree), instead of one LP session whose root basis
-/// comes from the interior point and its crossover and whose leaves are
-/// dual simplex solves from the last leaf's basis.
+/// step (<= 0) the bound is not rounded.
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps,
-                                      bool axis_groups = true, bool elastic = true,
-                                      bool warm = true);
+                                      const TreeOptions& tree = {});
 
 /// Whether bounds [lower, upper] on a group's total cut anything: a total
 /// lies in [0, group.MaxTotal(num_intervals)] anyway.

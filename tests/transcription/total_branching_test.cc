@@ -98,9 +98,11 @@ TEST(BranchOnThrusterTotals, NeverAboveTheProvenOptimumAndRaisesTheRelaxationsBo
     // scratch (interior point) as from its parent's basis (dual simplex).
     for (const bool axis_groups : {false, true}) {
       for (const bool warm : {false, true}) {
-        const TotalBranching t =
-            BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound, kInf, slot, 12,
-                                   axis_groups, true, warm);
+        TreeOptions tree;
+        tree.axis_groups = axis_groups;
+        tree.warm = warm;
+        const TotalBranching t = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
+                                                        root.bound, kInf, slot, 12, tree);
         EXPECT_LE(t.lps, 12);
         EXPECT_GE(t.bound, root.bound - 1e-12) << t.detail;
         EXPECT_LE(t.bound, optimum + 1e-9) << t.detail;
