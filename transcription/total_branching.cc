@@ -41,8 +41,8 @@ constexpr double kStandInTolerance = 1e-3;
 // is valid for the leaf whatever the penalty; a leaf whose LP needs a
 // hundredth of a slot outside its bounds costs more than the incumbent.
 constexpr double kElasticFactor = 100.0;
-// The same in the warm tree, whose leaves are dual simplex solves from a
-// neighbour's basis: there the penalty sets the work. On week 52 of
+// The same in the warm tree, whose leaves are dual simplex solves from their
+// parent's basis: there the penalty sets the work. On week 52 of
 // data/scenarios/hard/ (six thrusters), the leaf +N and -N <= 77 of a root at
 // 77.51 (no schedule fires them fewer times) took 3176 pivots (6.8 s) at
 // 100 times the incumbent, 80 at 10 times and 9 (0.07 s) at once the

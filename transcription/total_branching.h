@@ -41,14 +41,14 @@
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
 // its parent's. The LP's bounds on the totals are elastic (a penalty per
-// slot outside them, 100 times the objective's scale, once it in the warm
-// tree), so an infeasible leaf is cut off by a high bound: CLP takes minutes to call a leaf LP of a
-// GEO week infeasible, seconds to solve its elastic one. The leaves cover every
-// schedule, so the lowest leaf bound is a bound of the MILP. Stops when
-// that bound reaches the incumbent (proof) or is within lp_options' gap of
-// it, after max_lps LPs, on the time limit or interrupt of lp_options (the
-// bound of what was solved stays valid), or when the lowest leaf has
-// integral totals.
+// slot outside them: 100 times the objective's scale, once it in the warm
+// tree), so an infeasible leaf is cut off by a high bound: CLP takes minutes
+// to call a leaf LP of a GEO week infeasible, seconds to solve its elastic
+// one. The leaves cover every schedule, so the lowest leaf bound is a bound
+// of the MILP. Stops when that bound reaches the incumbent (proof) or is
+// within lp_options' gap of it, after max_lps LPs, on the time limit or
+// interrupt of lp_options (the bound of what was solved stays valid), or
+// when the lowest leaf has integral totals.
 // Deterministic for the same input (no wall-clock decision) unless a time
 // limit or an interrupt cuts it.
 #ifndef THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_

@@ -485,7 +485,7 @@ class ClpSession final : public LpSession {
   // CLP's status of each column and row (basic, at a bound, ...): the dual
   // simplex factorises the basis it names at its start.
   std::vector<unsigned char> SaveBasis() const override {
-    if (first_ || model_.statusExists() == false) return {};
+    if (first_ || !model_.statusExists()) return {};
     const unsigned char* status = const_cast<ClpSimplex&>(model_).statusArray();
     return {status, status + model_.numberColumns() + model_.numberRows()};
   }
