@@ -51,8 +51,16 @@
 //     totals restricted to them is exact for the leaf: it closes the leaf or
 //     improves the incumbent); otherwise the MILP with the lowest leaf's
 //     bounds on the totals, restricted to every slot of the thrusters its LP
-//     fires (or, if too many, the slots it uses); then the wider nets, then
-//     step 4 again if the incumbent improved.
+//     fires (or, if too many, the slots it uses);
+//  4c. the exchange along an axis: the MILP restricted to every slot of the
+//     thrusters on one axis (+T and -T, say) and to the incumbent's slots of
+//     the others, with the cutoff, for the axes the incumbent fires a slot
+//     or more above the relaxation, again while one improves (step 4 after
+//     each better schedule), and only when the on-off rules alone tie the
+//     MILP's blocks (the orbit plane and its normal); an axis' firings can
+//     move anywhere in the week, out of every net around the relaxation's
+//     slots; then the wider nets, then step 4 again if the incumbent
+//     improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -169,6 +177,21 @@ struct SearchOptions {
   /// bound (the interior point stops at an infeasible point), 5.26 % after
   /// 723 s; elastic, one split proves the 19-step schedule optimal in 96 s.
   bool total_branching_elastic = true;
+  /// Step 4c's exchange along an axis: the MILP restricted to every slot of
+  /// the thrusters on one axis (directions parallel or opposite) and the
+  /// incumbent's slots of the others, with the cutoff, axis after axis. Off:
+  /// the previous release's search, kept for comparison in the bench. Week
+  /// 10 of data/scenarios/hard/ (six thrusters): the nets around the
+  /// relaxation's slots held no schedule below 19 steps (bound 17); the
+  /// exchange along +T and -T moved their firings (one +T slot to the last
+  /// day) for 18 steps in 9 s, which step 4 then proved optimal in 5 s:
+  /// proven at 99 s with 150 s (10.5 % without it). Within 60 s the tree
+  /// leaves it no time; run before the tree it proved week 10 in 37 s but
+  /// cost weeks 14 and 47 their minute.
+  bool axis_exchange = true;
+  /// Largest net of the exchange (an axis' slots and the incumbent's): a
+  /// GEO week's two thrusters on one axis have 4032.
+  int max_exchange_slots = 6000;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those
   /// thrusters out of the heuristic nets. On thesis Table 4.2 (t1 = 2 d), an

@@ -429,6 +429,24 @@ bool StandsIn(const std::vector<Eigen::MatrixXd>& effects, int a, int b) {
 
 }  // namespace
 
+std::vector<std::vector<int>> ThrusterAxes(const dynamics::ThrusterSet& thrusters) {
+  std::vector<std::vector<int>> axes;
+  for (int i = 0; i < thrusters.size(); ++i) {
+    auto same = [&](const std::vector<int>& axis) {
+      const double cosine =
+          thrusters.thruster(i).direction.dot(thrusters.thruster(axis.front()).direction);
+      return std::abs(cosine) > 1.0 - kSameAxisTolerance;
+    };
+    const auto axis = std::find_if(axes.begin(), axes.end(), same);
+    if (axis == axes.end()) {
+      axes.push_back({i});
+    } else {
+      axis->push_back(i);
+    }
+  }
+  return axes;
+}
+
 std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups) {
   const dynamics::ThrusterSet& thrusters = milp.problem().thrusters;
   if (milp.discrete().gamma.empty()) axis_groups = false;  // no slots to compare

@@ -77,6 +77,11 @@ struct ThrusterGroup {
   }
 };
 
+/// Thrusters on one axis (directions parallel or opposite), in order of
+/// their first thruster: the ideal six's {+R, -R}, {+T, -T}, {+N, -N}; each
+/// of the thesis' four Anzel thrusters alone.
+std::vector<std::vector<int>> ThrusterAxes(const dynamics::ThrusterSet& thrusters);
+
 /// The groups the tree splits on: each set of two or more thrusters on one
 /// axis (directions parallel or opposite) that stand in for each other, then
 /// each thruster alone. Two thrusters stand in for each other when for every

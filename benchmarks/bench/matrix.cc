@@ -183,8 +183,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (each leaf LP of the tree from scratch; the "
-        "heuristic MILPs free to use all the time left)";
+        "search as the previous release ran it (without the exchange along axes: one axis' "
+        "firings moved anywhere in the week, the other axes' kept)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

@@ -67,11 +67,9 @@ struct CaseSpec {
   /// The problem-aware search (transcription::SearchSchedule, what `solve`
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
-  /// With `search`: the search as the previous release ran it, each leaf LP
-  /// of its branching on thruster totals (transcription/total_branching.h)
-  /// an interior point from scratch (SearchOptions::total_branching_warm
-  /// off) and its incumbent-only MILPs free to use all the time left
-  /// (heuristic_time_share 1), for the side-by-side ratio.
+  /// With `search`: the search as the previous release ran it, without the
+  /// exchange along axes (SearchOptions::axis_exchange off), for the
+  /// side-by-side ratio.
   bool search_previous = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within

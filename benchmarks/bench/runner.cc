@@ -237,12 +237,8 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): each leaf LP of its tree an
-    // interior point from scratch, no time share for the heuristic MILPs.
-    if (spec.search_previous) {
-      search.total_branching_warm = false;
-      search.heuristic_time_share = 1.0;
-    }
+    // The previous release's search (matrix.h): no exchange along axes.
+    if (spec.search_previous) search.axis_exchange = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -6,6 +6,8 @@
 //  - the restricted MILP (BuildOptions::free_slots, condensed), solved whole
 //    and by row generation, against the full sparse MILP with the same slots
 //    forbidden by column bounds;
+//  - the exchange along an axis reaching CBC alone's optimum from a start
+//    whose in-plane firings lie away from it;
 //  - determinism, a given start kept, an interrupt honoured.
 // Every solve has a node limit or is small enough that CBC needs a handful of
 // nodes; none depends on the wall clock.
@@ -24,8 +26,10 @@
 #include "milp/lazy_rows.h"
 #include "milp/lp_data.h"
 #include "tests/transcription/thesis_cases.h"
+#include "transcription/dormant.h"
 #include "transcription/search.h"
 #include "transcription/solve.h"
+#include "transcription/total_branching.h"
 
 namespace thrustsched::transcription {
 namespace {
@@ -242,6 +246,7 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
   forced.max_exact_slots = 0;
   forced.max_exact_leaf_slots = 0;
   forced.improvement_rounds = 0;
+  forced.axis_exchange = false;
   forced.neighbourhood = 0;
   for (bool from_incumbent : {false, true}) {
     forced.whole_milp_from_incumbent = from_incumbent;
@@ -264,6 +269,64 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
   EXPECT_LE(milp.lp().MaxViolation(r.x), 1e-6);
 }
 
+// Step 4c, the exchange along an axis. Ideal six in Hill-Clohessy-Wiltshire:
+// three axes, and the rows split into the orbit plane's block and its
+// normal's, tied only by the rules; Anzel's four thrusters, one axis each.
+// From the restricted MILP's schedule the exchange along one axis reaches
+// CBC alone's proven optimum, where without it the search only gets there
+// by CBC on the whole MILP (step 5).
+TEST(SearchSchedule, ExchangeAlongAnAxisReachesCbcAlonesOptimum) {
+  const std::vector<std::vector<int>> six = ThrusterAxes(dynamics::ThrusterSet::Ideal6(1, 1, 1));
+  EXPECT_EQ(six, (std::vector<std::vector<int>>{{0, 3}, {1, 4}, {2, 5}}));
+  EXPECT_EQ(ThrusterAxes(dynamics::ThrusterSet::Anzel4(1, 1, 1)).size(), 4u);
+
+  auto solver = milp::MakeCbcSolver();
+  ScheduleProblem p = SmallHcwDay();
+  p.initial_state[5] = 3.0;  // out of plane: 41 km amplitude, the window 36.8 km
+  const ScheduleResult ref = CbcAlone(p, *solver);
+  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
+  const ScheduleMilp milp(p, BuildOptions{});
+  EXPECT_EQ(FindDormantThrusters(milp).num_blocks, 2);  // the plane, its normal
+  // The start: a schedule whose in-plane firings (+-R, +-T) keep 6 slots
+  // away from the optimum's (CBC with those slots forbidden).
+  const OperationalEncoding& enc = milp.encoding();
+  milp::LpData away = milp.lp();
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    if (i == 2 || i == 5) continue;  // +N, -N
+    for (int j = 0; j < enc.num_intervals; ++j) {
+      for (int d = -6; d <= 6; ++d) {
+        if (j + d >= 0 && j + d < enc.num_intervals && ref.schedule.pattern(i, j + d) != 0)
+          away.col_upper[enc.on[i][j].index()] = 0.0;
+      }
+    }
+  }
+  milp::SolveOptions loose = Exact();
+  loose.relative_gap = 0.2;
+  const milp::SolveResult start = solver->Solve(away, loose);
+  ASSERT_TRUE(start.has_solution()) << start.detail;
+  SearchOptions only;  // the heuristic's first net, then the exchange, then step 5
+  only.max_exact_slots = 0;
+  only.improvement_rounds = 0;
+  only.total_branching_lps = 0;
+  only.neighbourhood = 0;
+  only.max_widenings = 0;
+  for (const bool exchange : {true, false}) {
+    only.axis_exchange = exchange;
+    SearchReport report;
+    const milp::SolveResult r = SearchSchedule(milp, *solver, Exact(), only, {start.x}, &report);
+    std::string steps;
+    for (const std::string& step : report.steps) steps += step + "\n";
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << steps;
+    EXPECT_NEAR(r.objective, ref.solve.objective, 1e-9) << steps;
+    const std::string optimum = "incumbent " + common::FormatG(ref.solve.objective, 6) + " from ";
+    const bool by_exchange =
+        steps.find(optimum + "the exchange along an axis") != std::string::npos;
+    const bool by_cbc = steps.find(optimum + "cbc on the whole MILP") != std::string::npos;
+    EXPECT_EQ(by_exchange, exchange) << steps;
+    EXPECT_EQ(by_cbc, !exchange) << steps;
+  }
+}
+
 TEST(SearchOptions, InvalidValuesAreNamed) {
   SearchOptions s;
   std::string error;
@@ -284,6 +347,10 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   s.max_exact_leaf_slots = -5;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("max_exact_leaf_slots must be >= 0, got -5"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.max_exchange_slots = -4;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("max_exchange_slots must be >= 0, got -4"), std::string::npos) << error;
   s = SearchOptions{};
   s.total_branching_lp_nonzeros = -1;
   EXPECT_FALSE(s.IsValid(&error));
