@@ -144,12 +144,7 @@ Eigen::VectorXd SolveFixedFaces(const ScheduleMilp& m, const Eigen::VectorXd& pl
   // the solver's columns hold only to its tolerances).
   Eigen::VectorXd x_model = lp.col_lower;  // the fixed columns' values
   for (size_t k = 0; k < kept.size(); ++k) x_model[kept[k]] = r.x[static_cast<Eigen::Index>(k)];
-  const OperationalEncoding& enc = model->encoding();
-  Eigen::MatrixXi pattern(enc.num_thrusters, enc.num_intervals);
-  for (int i = 0; i < enc.num_thrusters; ++i) {
-    for (int j = 0; j < enc.num_intervals; ++j) pattern(i, j) = x_model[enc.on[i][j].index()] > 0.5;
-  }
-  return m.StartFromPattern(pattern);
+  return m.StartFromPattern(model->encoding().OnPattern(x_model));
 }
 
 // On-off mode: the plan of the problem without its conjunction (the

@@ -514,6 +514,14 @@ int IntervalsSpanning(const std::vector<double>& grid, int a, double duration_s)
   return n - a + 1;
 }
 
+Eigen::MatrixXi OperationalEncoding::OnPattern(const Eigen::VectorXd& x) const {
+  Eigen::MatrixXi pattern(num_thrusters, num_intervals);
+  for (int i = 0; i < num_thrusters; ++i) {
+    for (int j = 0; j < num_intervals; ++j) pattern(i, j) = x[on[i][j].index()] > 0.5 ? 1 : 0;
+  }
+  return pattern;
+}
+
 void OperationalEncoding::Complete(const Eigen::MatrixXi& pattern, Eigen::VectorXd* x) const {
   if (pattern.rows() != num_thrusters || pattern.cols() != num_intervals) {
     throw std::invalid_argument(

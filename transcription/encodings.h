@@ -90,6 +90,9 @@ struct OperationalEncoding {
   /// for start/stop/gamma (and the smallest for thesis start indicators), so
   /// `pattern` is accepted iff the rows hold at x. Used for MIP starts.
   void Complete(const Eigen::MatrixXi& pattern, Eigen::VectorXd* x) const;
+  /// The on-off pattern (num_thrusters x num_intervals, 0/1) of a point of
+  /// the MILP: slot (i, j) is on when on[i][j] > 0.5.
+  Eigen::MatrixXi OnPattern(const Eigen::VectorXd& x) const;
 };
 
 /// Adds the on/off variables (named "<prefix>on[i][j]" etc.) and the rows of

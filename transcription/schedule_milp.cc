@@ -634,10 +634,7 @@ Schedule ScheduleMilp::Decode(const Eigen::VectorXd& x) const {
   Schedule s;
   Eigen::MatrixXd impulses = Eigen::MatrixXd::Zero(m, nn + 1);
   if (p.input_mode == InputMode::kOnOff) {
-    s.pattern.resize(m, nn);
-    for (int i = 0; i < m; ++i) {
-      for (int j = 0; j < nn; ++j) s.pattern(i, j) = x[encoding_.on[i][j].index()] > 0.5 ? 1 : 0;
-    }
+    s.pattern = encoding_.OnPattern(x);
     s.burns = BurnsFromPattern(s.pattern, p.grid);
   } else {
     for (int j = 0; j <= nn; ++j) {

@@ -185,7 +185,7 @@ struct SearchOptions {
   /// relaxation's slots held no schedule below 19 steps (bound 17); the
   /// exchange along +T and -T moved their firings (one +T slot to the last
   /// day) for 18 steps in 9 s, which step 4 then proved optimal in 5 s:
-  /// proven at 99 s with 150 s (10.5 % without it). Within 60 s the tree
+  /// proven at 99-120 s with 150 s (10.5 % without it). Within 60 s the tree
   /// leaves it no time; run before the tree it proved week 10 in 37 s but
   /// cost weeks 14 and 47 their minute.
   bool axis_exchange = true;

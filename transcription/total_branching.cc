@@ -429,19 +429,20 @@ bool StandsIn(const std::vector<Eigen::MatrixXd>& effects, int a, int b) {
 
 }  // namespace
 
-std::vector<std::vector<int>> ThrusterAxes(const dynamics::ThrusterSet& thrusters) {
-  std::vector<std::vector<int>> axes;
+std::vector<ThrusterGroup> ThrusterAxes(const dynamics::ThrusterSet& thrusters) {
+  std::vector<ThrusterGroup> axes;
   for (int i = 0; i < thrusters.size(); ++i) {
-    auto same = [&](const std::vector<int>& axis) {
+    auto same = [&](const ThrusterGroup& axis) {
       const double cosine =
-          thrusters.thruster(i).direction.dot(thrusters.thruster(axis.front()).direction);
+          thrusters.thruster(i).direction.dot(thrusters.thruster(axis.thrusters.front()).direction);
       return std::abs(cosine) > 1.0 - kSameAxisTolerance;
     };
     const auto axis = std::find_if(axes.begin(), axes.end(), same);
     if (axis == axes.end()) {
-      axes.push_back({i});
+      axes.push_back({{i}, thrusters.thruster(i).name});
     } else {
-      axis->push_back(i);
+      axis->thrusters.push_back(i);
+      axis->name += " and " + thrusters.thruster(i).name;
     }
   }
   return axes;
@@ -452,17 +453,21 @@ std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_group
   if (milp.discrete().gamma.empty()) axis_groups = false;  // no slots to compare
   const int m = thrusters.size();
   std::vector<Eigen::MatrixXd> effects;
-  std::vector<int> axis(static_cast<size_t>(m));  // the first thruster on i's axis
-  for (int i = 0; i < m; ++i) {
-    axis[static_cast<size_t>(i)] = i;
-    for (int k = 0; k < i; ++k) {
-      const double cosine = thrusters.thruster(i).direction.dot(thrusters.thruster(k).direction);
-      if (!axis_groups || std::abs(cosine) <= 1.0 - kSameAxisTolerance) continue;
-      if (effects.empty()) effects = FinalStateEffects(milp);
-      const int first = axis[static_cast<size_t>(k)];
-      if (StandsIn(effects, first, i) && StandsIn(effects, i, first)) {
-        axis[static_cast<size_t>(i)] = first;
-        break;
+  // The first thruster of i's group: an earlier one on its axis (ThrusterAxes)
+  // that stands in for it both ways, else i.
+  std::vector<int> axis(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) axis[static_cast<size_t>(i)] = i;
+  for (const ThrusterGroup& on_axis :
+       axis_groups ? ThrusterAxes(thrusters) : std::vector<ThrusterGroup>{}) {
+    const std::vector<int>& t = on_axis.thrusters;
+    for (size_t b = 1; b < t.size(); ++b) {
+      for (size_t a = 0; a < b; ++a) {
+        if (effects.empty()) effects = FinalStateEffects(milp);
+        const int first = axis[static_cast<size_t>(t[a])];
+        if (StandsIn(effects, first, t[b]) && StandsIn(effects, t[b], first)) {
+          axis[static_cast<size_t>(t[b])] = first;
+          break;
+        }
       }
     }
   }

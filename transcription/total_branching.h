@@ -78,9 +78,9 @@ struct ThrusterGroup {
 };
 
 /// Thrusters on one axis (directions parallel or opposite), in order of
-/// their first thruster: the ideal six's {+R, -R}, {+T, -T}, {+N, -N}; each
-/// of the thesis' four Anzel thrusters alone.
-std::vector<std::vector<int>> ThrusterAxes(const dynamics::ThrusterSet& thrusters);
+/// their first thruster: the ideal six's "+R and -R", "+T and -T", "+N and
+/// -N"; each of the thesis' four Anzel thrusters alone.
+std::vector<ThrusterGroup> ThrusterAxes(const dynamics::ThrusterSet& thrusters);
 
 /// The groups the tree splits on: each set of two or more thrusters on one
 /// axis (directions parallel or opposite) that stand in for each other, then

@@ -276,8 +276,12 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
 // CBC alone's proven optimum, where without it the search only gets there
 // by CBC on the whole MILP (step 5).
 TEST(SearchSchedule, ExchangeAlongAnAxisReachesCbcAlonesOptimum) {
-  const std::vector<std::vector<int>> six = ThrusterAxes(dynamics::ThrusterSet::Ideal6(1, 1, 1));
-  EXPECT_EQ(six, (std::vector<std::vector<int>>{{0, 3}, {1, 4}, {2, 5}}));
+  const std::vector<ThrusterGroup> six = ThrusterAxes(dynamics::ThrusterSet::Ideal6(1, 1, 1));
+  ASSERT_EQ(six.size(), 3u);
+  EXPECT_EQ(six[0].thrusters, (std::vector<int>{0, 3}));
+  EXPECT_EQ(six[1].thrusters, (std::vector<int>{1, 4}));
+  EXPECT_EQ(six[2].thrusters, (std::vector<int>{2, 5}));
+  EXPECT_EQ(six[1].name, "+T and -T");
   EXPECT_EQ(ThrusterAxes(dynamics::ThrusterSet::Anzel4(1, 1, 1)).size(), 4u);
 
   auto solver = milp::MakeCbcSolver();
