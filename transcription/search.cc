@@ -128,11 +128,14 @@ class Search {
 
   // An incumbent-only restricted MILP: RestrictedOptions within the node
   // limit and its share of the time left (SearchOptions::heuristic_time_share).
-  milp::SolveOptions HeuristicOptions() const {
+  milp::SolveOptions HeuristicOptions(double time_share) const {
     milp::SolveOptions o = RestrictedOptions();
     o.max_nodes = NodeLimit();
-    if (std::isfinite(o.time_limit_s)) o.time_limit_s *= search_.heuristic_time_share;
+    if (std::isfinite(o.time_limit_s)) o.time_limit_s *= time_share;
     return o;
+  }
+  milp::SolveOptions HeuristicOptions() const {
+    return HeuristicOptions(search_.heuristic_time_share);
   }
 
   void Report(milp::SolvePhase phase, bool new_incumbent) const {
@@ -384,13 +387,15 @@ class Search {
   // solved).
   bool ImproveWithin(
       const Eigen::MatrixXi& mask, const std::string& what, const std::string& source,
-      const std::function<std::vector<milp::SparseRow>(const Restriction&)>& extra_rows = {}) {
+      const std::function<std::vector<milp::SparseRow>(const Restriction&)>& extra_rows = {},
+      double time_share = 0.0) {  // 0: heuristic_time_share
     Restriction r = Restrict(mask);
     if (!r.feasible) return false;
     AddObjectiveCutoff(&r.small, Cutoff());
     if (extra_rows) milp::AppendRows(&r.small, extra_rows(r));
     const double t0 = Elapsed();
-    const milp::SolveResult s = SolveRestricted(r.small, HeuristicOptions());
+    const milp::SolveResult s = SolveRestricted(
+        r.small, HeuristicOptions(time_share > 0.0 ? time_share : search_.heuristic_time_share));
     nodes_ += s.nodes;
     Step(what + std::to_string(Count(mask)) + " slots: " + std::string(milp::ToString(s.status)) +
          " in " + FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
@@ -428,7 +433,7 @@ class Search {
       const Eigen::MatrixXi mask = AxisMask(exchange_axes_[a]);
       if (Count(mask) <= search_.max_exchange_slots) {
         ImproveWithin(mask, "exchange along " + exchange_axes_[a].name + " over ",
-                      "the exchange along an axis");
+                      "the exchange along an axis", {}, search_.exchange_time_share);
       }
       exchanged_at_[a] = objective_;
       if (objective_ < before) return true;
@@ -588,8 +593,9 @@ class Search {
     tree.axis_groups = search_.total_branching_axis_groups;
     tree.elastic = search_.total_branching_elastic;
     tree.warm = search_.total_branching_warm;
-    const TotalBranching t = BranchOnThrusterTotals(milp_, solver_, o, relaxation_.x, bound_,
-                                                    objective_, step_, TreeLpBudget(), tree);
+    const TotalBranching t = BranchOnThrusterTotals(
+        milp_, solver_, o, relaxation_.x, bound_, objective_, step_, TreeLpBudget(), tree,
+        search_.tree_root_from_relaxation ? relaxation_.row_duals : Eigen::VectorXd());
     RaiseBound(t.bound);
     Step(t.detail + " (" + FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);
@@ -870,6 +876,9 @@ bool SearchOptions::IsValid(std::string* error) const {
   }
   if (!(heuristic_time_share > 0.0 && heuristic_time_share <= 1.0)) {
     return fail("heuristic_time_share must be in (0, 1], got " + FormatG(heuristic_time_share, 6));
+  }
+  if (!(exchange_time_share > 0.0 && exchange_time_share <= 1.0)) {
+    return fail("exchange_time_share must be in (0, 1], got " + FormatG(exchange_time_share, 6));
   }
   if (improvement_rounds < 0)
     return fail("improvement_rounds must be >= 0, got " + std::to_string(improvement_rounds));

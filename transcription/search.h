@@ -41,9 +41,9 @@
 //     share of the time left: `heuristic_time_share`), then
 //  4b. branching on each thruster's number of on slots (an integer in every
 //     schedule; first the sum over thrusters that stand in for each other,
-//     +N and -N), its leaves dual simplex solves from their parent's basis,
-//     within a budget of LPs, until the gap closes: a better bound, often the
-//     proof
+//     +N and -N), its leaves dual simplex solves from their parent's basis
+//     (the root's by the crossover from step 1's interior point), within a
+//     budget of LPs, until the gap closes: a better bound, often the proof
 //     (transcription/total_branching.h; each leaf's LP holds its totals
 //     elastically, so it is never infeasible); then step 4 for each open
 //     leaf, lowest first, while reduced-cost fixing with the leaf's LP duals
@@ -59,8 +59,9 @@
 //     each better schedule), and only when the on-off rules alone tie the
 //     MILP's blocks (the orbit plane and its normal); an axis' firings can
 //     move anywhere in the week, out of every net around the relaxation's
-//     slots; then the wider nets, then step 4 again if the incumbent
-//     improved.
+//     slots (each MILP with up to half the time left: after the tree, the
+//     bound's work left is step 4's proof); then the wider nets, then step 4
+//     again if the incumbent improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -192,6 +193,21 @@ struct SearchOptions {
   /// Largest net of the exchange (an axis' slots and the incumbent's): a
   /// GEO week's two thrusters on one axis have 4032.
   int max_exchange_slots = 6000;
+  /// heuristic_time_share for the exchange's MILPs. They run after the tree,
+  /// when what is left of the bound's work is step 4's proof after a better
+  /// schedule (seconds), so they may take more of the time left than the
+  /// MILPs before the tree. Week 10 of data/scenarios/hard/ (six thrusters,
+  /// 60 s): the exchange along +T and -T found the 18-step schedule in
+  /// 5.2 s once and nothing in its 4.9 s (a quarter of the time left) the
+  /// next run.
+  double exchange_time_share = 0.5;
+  /// The warm tree's root basis by the crossover from step 1's interior
+  /// point (milp::LpSession::CrossOverFrom with the relaxation's duals).
+  /// Off: by a second interior point with its crossover, the previous
+  /// release's search, kept for comparison in the bench. Week 10 of
+  /// data/scenarios/hard/ (six thrusters, 60 s): the root basis in 2 s
+  /// instead of 13 s, which leaves the exchange along +T and -T its time.
+  bool tree_root_from_relaxation = true;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those
   /// thrusters out of the heuristic nets. On thesis Table 4.2 (t1 = 2 d), an

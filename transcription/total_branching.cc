@@ -106,18 +106,21 @@ std::vector<double> GroupTotals(const std::vector<ThrusterGroup>& groups,
 class Tree {
  public:
   Tree(const ScheduleMilp& milp, const milp::Solver& solver, const milp::SolveOptions& options,
-       double incumbent, double step, bool axis_groups, double elastic_cost_per_slot, bool warm)
-      : warm_(warm),
+       double incumbent, double step, const TreeOptions& tree, double elastic_cost_per_slot,
+       const Eigen::VectorXd& root_duals)
+      : warm_(tree.warm),
+        root_duals_(root_duals),
         milp_(milp),
         solver_(solver),
         options_(options),
         incumbent_(incumbent),
         step_(step),
         elastic_cost_(elastic_cost_per_slot),
-        groups_(TotalGroups(milp, axis_groups)),
+        groups_(TotalGroups(milp, tree.axis_groups)),
         start_(Clock::now()) {}
 
   TotalBranching Run(const Eigen::VectorXd& root_x, double root_bound, int max_lps) {
+    root_x_ = root_x;
     // Every group's total free: [0, intervals x its thrusters].
     std::vector<double> upper;
     for (const ThrusterGroup& g : groups_)
@@ -154,9 +157,10 @@ class Tree {
   }
 
  private:
-  // The warm tree's LP session and its root basis (interior point and
-  // crossover), before the first split. False if the root stops short (time
-  // limit, interrupt): no leaf then.
+  // The warm tree's LP session and its root basis, before the first split:
+  // the crossover from the relaxation's interior point when the caller gave
+  // its duals, or else an interior point and its crossover. False if the
+  // root stops short (time limit, interrupt): no leaf then.
   bool OpenSession() {
     totals_lp_ = WithGroupTotalColumns(milp_, groups_, elastic_cost_);
     milp::SolveOptions o = options_;
@@ -171,15 +175,27 @@ class Tree {
     milp::LpData root_lp = totals_lp_.lp;
     for (int column : totals_lp_.elastic_column) root_lp.col_upper[column] = 0.0;
     session_ = solver_.OpenLpSession(root_lp, o);
+    std::string how = "interior point and crossover";
+    if (root_duals_.size() == milp_.lp().num_rows()) {
+      // The relaxation's point with each group's total at it (its slots
+      // short and over 0), the groups' rows' duals 0.
+      const int n = milp_.lp().num_cols(), m = milp_.lp().num_rows();
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(root_lp.num_cols());
+      Eigen::VectorXd duals = Eigen::VectorXd::Zero(root_lp.num_rows());
+      x.head(n) = root_x_;
+      duals.head(m) = root_duals_;
+      const std::vector<double> y = GroupTotals(groups_, ThrusterTotals(milp_.encoding(), root_x_));
+      for (size_t g = 0; g < groups_.size(); ++g) x[totals_lp_.bound_column[g]] = y[g];
+      session_->CrossOverFrom(x, duals);
+      how = "crossover from the relaxation's interior point";
+    }
     const milp::LpRelaxationResult root = session_->Solve();
     for (int column : totals_lp_.elastic_column) {
       session_->SetColumnBounds(column, totals_lp_.lp.col_lower[column],
                                 totals_lp_.lp.col_upper[column]);
     }
-    session_note_ =
-        "leaves by dual simplex from their parent's basis, the root's by interior "
-        "point and crossover in " +
-        FormatG(Elapsed() - t0, 3) + " s";
+    session_note_ = "leaves by dual simplex from their parent's basis, the root's by " + how +
+                    " in " + FormatG(Elapsed() - t0, 3) + " s";
     if (root.status == milp::SolveStatus::kOptimal) return true;
     session_note_ = "the root basis was not found (" + root.detail + ")";
     session_.reset();
@@ -348,6 +364,8 @@ class Tree {
   }
 
   bool warm_;
+  Eigen::VectorXd root_duals_;  // the relaxation's row duals, if the caller gave them
+  Eigen::VectorXd root_x_;
   GroupTotalsLp totals_lp_;  // the warm tree's LP, with the last leaf's bounds
   std::unique_ptr<milp::LpSession> session_;
   std::string session_note_;
@@ -613,7 +631,7 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps,
-                                      const TreeOptions& tree) {
+                                      const TreeOptions& tree, const Eigen::VectorXd& root_duals) {
   double elastic_cost = 0.0;  // hard bounds
   if (tree.elastic) {
     const double factor = tree.warm ? kWarmElasticFactor : kElasticFactor;
@@ -621,7 +639,7 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
     if (std::isfinite(incumbent))
       elastic_cost = std::max(elastic_cost, factor * std::abs(incumbent));
   }
-  return Tree(milp, solver, lp_options, incumbent, step, tree.axis_groups, elastic_cost, tree.warm)
+  return Tree(milp, solver, lp_options, incumbent, step, tree, elastic_cost, root_duals)
       .Run(root_x, root_bound, max_lps);
 }
 

@@ -31,9 +31,11 @@
 // split on its most fractional total. Its two children's LPs are dual
 // simplex solves in one LP session (milp::LpSession; WithGroupTotalColumns:
 // a leaf only changes the bounds of one column per group), each from its
-// parent's basis; the root's basis comes from CLP's interior point with its
-// crossover (11 s on a six-thruster GEO week, then 0.1-3 s per leaf, where
-// each leaf LP from scratch took 10-20 s). Without `warm`, the previous
+// parent's basis; the root's basis comes from the crossover from the
+// relaxation's interior point when the caller gives its duals (2 s on a
+// six-thruster GEO week), or else from CLP's interior point with its
+// crossover (11-13 s), then 0.1-3 s per leaf, where each leaf LP from
+// scratch took 10-20 s. Without `warm`, the previous
 // release's tree: each leaf LP from scratch by lp_options' algorithm
 // (WithGroupTotals), the two of a split side by side when
 // lp_options.threads >= 2 (milp::Solver::SolveLpRelaxations: one child
@@ -145,12 +147,18 @@ struct TreeOptions {
 /// (safe, rounded) bound; `incumbent` the best known schedule's objective
 /// (+inf if none); `lp_options` the LP options (algorithm, threads, time
 /// limit from the call, interrupt). On-off mode only; without an objective
-/// step (<= 0) the bound is not rounded.
+/// step (<= 0) the bound is not rounded. `root_duals` (warm tree; optional):
+/// the relaxation's row duals at root_x (an interior point without
+/// crossover, say). The tree's root basis then comes from the crossover
+/// from that point (milp::LpSession::CrossOverFrom, each group's total at
+/// root_x), not from a second interior point with its crossover: on the
+/// six-thruster week 10 of data/scenarios/hard/, 2 s against 13 s.
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
                                       double incumbent, double step, int max_lps,
-                                      const TreeOptions& tree = {});
+                                      const TreeOptions& tree = {},
+                                      const Eigen::VectorXd& root_duals = Eigen::VectorXd());
 
 /// Whether bounds [lower, upper] on a group's total cut anything: a total
 /// lies in [0, group.MaxTotal(num_intervals)] anyway.

@@ -183,8 +183,9 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (without the exchange along axes: one axis' "
-        "firings moved anywhere in the week, the other axes' kept)";
+        "search as the previous release ran it (the tree's root basis by a second interior "
+        "point and its crossover, not by the crossover from the relaxation's interior point; "
+        "the exchange's MILPs with a quarter of the time left, not half)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

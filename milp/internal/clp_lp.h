@@ -82,7 +82,9 @@ bool CompletePartial(const LpData& lp, const SolveOptions& options, Eigen::Vecto
 SolveResult SolveTrivial(const LpData& lp);
 
 /// The CLP LP session of Solver::OpenLpSession: the first Solve with presolve
-/// and dual simplex, later ones by dual simplex from the last basis.
+/// and dual simplex (or the interior point and its crossover), or by the
+/// crossover from a given point (CrossOverFrom), later ones by dual simplex
+/// from the last basis.
 std::unique_ptr<LpSession> OpenClpSession(const LpData& lp, const SolveOptions& options);
 
 }  // namespace thrustsched::milp::internal

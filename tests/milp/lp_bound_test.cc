@@ -4,9 +4,14 @@
 // and brute-force enumeration of the integer points of small knapsacks.
 #include "milp/lp_bound.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -218,6 +223,81 @@ TEST(LpSession, ChildFromItsParentsBasisMatchesAColdSolve) {
         EXPECT_NEAR(warm.objective, cold.objective, 1e-7 * std::abs(cold.objective));
       }
     }
+  }
+}
+
+// A session started from an interior point (CrossOverFrom with
+// SolveLpRelaxation's point and duals without crossover) crosses over to a
+// vertex with a basis: the cold simplex's optimum. So too for an LP grown by
+// a column and a row that restate a sum of old columns, started from the
+// point with the sum at its value (as the tree on thruster totals does), and
+// then with that sum bounded, from the crossover's basis.
+TEST(LpSession, CrossOverFromAnInteriorPointMatchesAColdSolve) {
+  auto solver = MakeCbcSolver();
+  const LpData lp = RandomKnapsack(200, 10, 9);
+  constexpr int kSummed = 50;  // sum = x_0 + ... + x_49
+  LpData grown = lp;
+  const int sum = AppendColumns(&grown, {{0.0, kSummed, 0.0, VarType::kContinuous, "sum"}});
+  SparseRow row;
+  for (int j = 0; j < kSummed; ++j) {
+    row.columns.push_back(j);
+    row.coefficients.push_back(1.0);
+  }
+  row.columns.push_back(sum);
+  row.coefficients.push_back(-1.0);
+  row.lower = row.upper = 0.0;
+  AppendRows(&grown, {row});
+  const LpRelaxationResult cold = solver->SolveLpRelaxation(lp);
+  ASSERT_EQ(cold.status, SolveStatus::kOptimal);
+  SolveOptions interior_point;
+  interior_point.lp_algorithm = LpAlgorithm::kBarrierNoCrossover;
+  const LpRelaxationResult interior = solver->SolveLpRelaxation(lp, interior_point);
+  ASSERT_EQ(interior.status, SolveStatus::kOptimal);
+  EXPECT_NEAR(interior.objective, cold.objective, 1e-6 * std::abs(cold.objective));
+  for (const bool with_sum : {false, true}) {
+    SCOPED_TRACE(with_sum ? "the LP grown by a sum" : "the interior point's LP");
+    const LpData& now = with_sum ? grown : lp;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(now.num_cols());
+    Eigen::VectorXd duals = Eigen::VectorXd::Zero(now.num_rows());
+    x.head(lp.num_cols()) = interior.x;
+    duals.head(lp.num_rows()) = interior.row_duals;
+    if (with_sum) x[sum] = interior.x.head(kSummed).sum();
+    std::unique_ptr<LpSession> s = solver->OpenLpSession(now);
+    s->CrossOverFrom(x, duals);
+    const LpRelaxationResult crossed = s->Solve();
+    ASSERT_EQ(crossed.status, SolveStatus::kOptimal);
+    EXPECT_EQ(s->SaveBasis().size(), static_cast<size_t>(now.num_cols() + now.num_rows()));
+    EXPECT_NEAR(crossed.objective, cold.objective, 1e-7 * std::abs(cold.objective));
+    LpData relaxed = now;  // MaxViolation counts integrality too
+    std::fill(relaxed.col_type.begin(), relaxed.col_type.end(), VarType::kContinuous);
+    EXPECT_LE(relaxed.MaxViolation(crossed.x), 1e-7);
+    // A vertex: at most one column strictly between its bounds per row.
+    int between = 0;
+    for (int j = 0; j < now.num_cols(); ++j)
+      between += crossed.x[j] > 1e-9 && crossed.x[j] < now.col_upper[j] - 1e-9 ? 1 : 0;
+    EXPECT_LE(between, now.num_rows());
+    if (!with_sum) continue;
+    // The sum bounded below its value: a dual simplex from that basis.
+    LpData bounded = grown;
+    bounded.col_upper[sum] = std::max(0.0, std::floor(crossed.x[sum]) - 1.0);
+    s->SetColumnBounds(sum, 0.0, bounded.col_upper[sum]);
+    const LpRelaxationResult warm = s->Solve();
+    const LpRelaxationResult cold_bounded = solver->SolveLpRelaxation(bounded);
+    ASSERT_EQ(warm.status, SolveStatus::kOptimal);
+    ASSERT_EQ(cold_bounded.status, SolveStatus::kOptimal);
+    EXPECT_NEAR(warm.objective, cold_bounded.objective, 1e-7 * std::abs(cold_bounded.objective));
+    EXPECT_GT(std::abs(cold_bounded.objective - cold.objective), 1e-6);  // the bound mattered
+  }
+  // A point of the wrong size is refused, naming the sizes.
+  std::unique_ptr<LpSession> s = solver->OpenLpSession(grown);
+  try {
+    s->CrossOverFrom(interior.x, interior.row_duals);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("200 values and 10 duals for an LP of 201 columns and "
+                                         "11 rows"),
+              std::string::npos)
+        << e.what();
   }
 }
 

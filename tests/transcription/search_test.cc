@@ -117,6 +117,8 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
 // the search goes through the tree and then solves its open leaves exactly; it still ends at CBC's
 // proven optimum (47 slots here; the tree alone stops at 45, total_branching_test.cc) with a bound
 // never above it.
+// The tree's root basis either by the crossover from step 1's interior point
+// in the tree's LP session or by a second interior point: the same optimum.
 TEST(SearchSchedule, SolvesTheTreesOpenLeavesExactly) {
   auto solver = milp::MakeCbcSolver();
   ScheduleProblem p = SmallHcwDay();
@@ -124,17 +126,26 @@ TEST(SearchSchedule, SolvesTheTreesOpenLeavesExactly) {
   p.initial_state[4] = 0.05;
   const ScheduleResult ref = CbcAlone(p, *solver);
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
-  SolveScheduleOptions o;
-  o.milp = Exact();
-  o.search.max_exact_slots = 700;
-  o.search.max_exact_leaf_slots = 900;
-  const ScheduleResult r = SolveSchedule(p, *solver, o);
-  std::string steps;
-  for (const std::string& step : r.search.steps) steps += step + "\n";
-  EXPECT_NE(steps.find("exact MILP of the leaf"), std::string::npos) << steps;
-  EXPECT_NEAR(r.solve.objective, ref.solve.objective, 1e-9 * ref.solve.objective) << steps;
-  EXPECT_LE(r.solve.best_bound, ref.solve.objective + 1e-9) << steps;
-  EXPECT_TRUE(r.check.operational_ok) << r.check.Summary();
+  for (const bool from_relaxation : {true, false}) {
+    SCOPED_TRACE(from_relaxation ? "root basis from the relaxation" : "second interior point");
+    SolveScheduleOptions o;
+    o.milp = Exact();
+    o.search.max_exact_slots = 700;
+    o.search.max_exact_leaf_slots = 900;
+    o.search.tree_root_from_relaxation = from_relaxation;
+    const ScheduleResult r = SolveSchedule(p, *solver, o);
+    std::string steps;
+    for (const std::string& step : r.search.steps) steps += step + "\n";
+    EXPECT_NE(steps.find("exact MILP of the leaf"), std::string::npos) << steps;
+    EXPECT_NE(steps.find(from_relaxation ? "the root's by crossover from the relaxation's "
+                                           "interior point"
+                                         : "the root's by interior point and crossover"),
+              std::string::npos)
+        << steps;
+    EXPECT_NEAR(r.solve.objective, ref.solve.objective, 1e-9 * ref.solve.objective) << steps;
+    EXPECT_LE(r.solve.best_bound, ref.solve.objective + 1e-9) << steps;
+    EXPECT_TRUE(r.check.operational_ok) << r.check.Summary();
+  }
 }
 
 // The restricted MILP (condensed, only the free slots' columns) has the same
@@ -355,6 +366,11 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   s.max_exchange_slots = -4;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("max_exchange_slots must be >= 0, got -4"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.exchange_time_share = 1.5;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("exchange_time_share must be in (0, 1], got 1.5"), std::string::npos)
+      << error;
   s = SearchOptions{};
   s.total_branching_lp_nonzeros = -1;
   EXPECT_FALSE(s.IsValid(&error));
