@@ -207,6 +207,8 @@ struct SearchOptions {
   /// release's search, kept for comparison in the bench. Week 10 of
   /// data/scenarios/hard/ (six thrusters, 60 s): the root basis in 2 s
   /// instead of 13 s, which leaves the exchange along +T and -T its time.
+  /// Week 33: that crossover did not end in the 26 s the tree had left,
+  /// where a second interior point with its crossover takes 14 s.
   bool tree_root_from_relaxation = true;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those
