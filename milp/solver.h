@@ -238,8 +238,10 @@ class LpSession {
   /// crossover to a basis, then the dual simplex, instead of a solve from
   /// scratch. For a near-optimal point, e.g. SolveLpRelaxation's interior
   /// point without crossover (kBarrierNoCrossover), extended to the
-  /// session's LP: on a six-thruster GEO week the crossover takes 2 s where
-  /// a second interior point with its crossover takes 13 s. Default:
+  /// session's LP: on week 10 of data/scenarios/hard/ (six thrusters) the
+  /// crossover takes 2 s where a second interior point with its crossover
+  /// takes 13 s, but on week 33, from a more central point, it took longer
+  /// than that interior point (tens of seconds). Default:
   /// ignored (the next Solve as without it); the CBC backend's session
   /// throws std::invalid_argument unless one value per column and one dual
   /// per row.

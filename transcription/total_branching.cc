@@ -120,7 +120,6 @@ class Tree {
         start_(Clock::now()) {}
 
   TotalBranching Run(const Eigen::VectorXd& root_x, double root_bound, int max_lps) {
-    root_x_ = root_x;
     // Every group's total free: [0, intervals x its thrusters].
     std::vector<double> upper;
     for (const ThrusterGroup& g : groups_)
@@ -161,7 +160,7 @@ class Tree {
   // the crossover from the relaxation's interior point when the caller gave
   // its duals, or else an interior point and its crossover. False if the
   // root stops short (time limit, interrupt): no leaf then.
-  bool OpenSession() {
+  bool OpenSession(const Eigen::VectorXd& root_x) {
     totals_lp_ = WithGroupTotalColumns(milp_, groups_, elastic_cost_);
     milp::SolveOptions o = options_;
     o.time_limit_s = std::max(0.0, Remaining());
@@ -182,9 +181,9 @@ class Tree {
       const int n = milp_.lp().num_cols(), m = milp_.lp().num_rows();
       Eigen::VectorXd x = Eigen::VectorXd::Zero(root_lp.num_cols());
       Eigen::VectorXd duals = Eigen::VectorXd::Zero(root_lp.num_rows());
-      x.head(n) = root_x_;
+      x.head(n) = root_x;
       duals.head(m) = root_duals_;
-      const std::vector<double> y = GroupTotals(groups_, ThrusterTotals(milp_.encoding(), root_x_));
+      const std::vector<double> y = GroupTotals(groups_, ThrusterTotals(milp_.encoding(), root_x));
       for (size_t g = 0; g < groups_.size(); ++g) x[totals_lp_.bound_column[g]] = y[g];
       session_->CrossOverFrom(x, duals);
       how = "crossover from the relaxation's interior point";
@@ -214,7 +213,8 @@ class Tree {
       if (Interrupted()) return "interrupted";
       if (Remaining() <= 0.0) return "time limit";
       if (warm_ && !session_) {
-        if (!OpenSession()) return session_note_;
+        // The lowest leaf is the root: no session before the first split.
+        if (!OpenSession(leaves_[static_cast<size_t>(k)].x)) return session_note_;
         leaves_[static_cast<size_t>(k)].basis = session_->SaveBasis();
       }
       Leaf parent = std::move(leaves_[static_cast<size_t>(k)]);
@@ -365,8 +365,7 @@ class Tree {
 
   bool warm_;
   Eigen::VectorXd root_duals_;  // the relaxation's row duals, if the caller gave them
-  Eigen::VectorXd root_x_;
-  GroupTotalsLp totals_lp_;  // the warm tree's LP, with the last leaf's bounds
+  GroupTotalsLp totals_lp_;     // the warm tree's LP, with the last leaf's bounds
   std::unique_ptr<milp::LpSession> session_;
   std::string session_note_;
   const ScheduleMilp& milp_;
