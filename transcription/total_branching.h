@@ -152,8 +152,8 @@ struct TreeOptions {
 /// crossover, say). The tree's root basis then comes from the crossover
 /// from that point (milp::LpSession::CrossOverFrom, each group's total at
 /// root_x), not from a second interior point with its crossover: on the
-/// six-thruster week 10 of data/scenarios/hard/, 2 s against 13 s; on week
-/// 33 the crossover did not end in the 26 s the tree had left.
+/// six-thruster weeks 10 and 33 of data/scenarios/hard/, 1.2-2 s against
+/// 13-14 s.
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,

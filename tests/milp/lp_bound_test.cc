@@ -301,5 +301,38 @@ TEST(LpSession, CrossOverFromAnInteriorPointMatchesAColdSolve) {
   }
 }
 
+// Columns the duals price out (reduced cost well above zero) go to their
+// bound before the crossover's pivots, however far the point holds them from
+// it: from a point halfway between the interior point and a point at 1e-3 in
+// every column (every priced-out column off its bounds), the crossover
+// still reaches the cold optimum, in fewer pivots than half those columns.
+TEST(LpSession, CrossOverPutsPricedOutColumnsAtTheirBounds) {
+  auto solver = MakeCbcSolver();
+  const LpData lp = RandomKnapsack(200, 10, 9);
+  const LpRelaxationResult cold = solver->SolveLpRelaxation(lp);
+  ASSERT_EQ(cold.status, SolveStatus::kOptimal);
+  SolveOptions interior_point;
+  interior_point.lp_algorithm = LpAlgorithm::kBarrierNoCrossover;
+  const LpRelaxationResult interior = solver->SolveLpRelaxation(lp, interior_point);
+  ASSERT_EQ(interior.status, SolveStatus::kOptimal);
+  const Eigen::VectorXd inside =
+      0.5 * interior.x + 0.5 * Eigen::VectorXd::Constant(lp.num_cols(), 1e-3);
+  LpData relaxed = lp;
+  std::fill(relaxed.col_type.begin(), relaxed.col_type.end(), VarType::kContinuous);
+  ASSERT_LE(relaxed.MaxViolation(inside), 1e-9);  // a feasible point, off every bound
+  std::unique_ptr<LpSession> s = solver->OpenLpSession(lp);
+  s->CrossOverFrom(inside, interior.row_duals);
+  const LpRelaxationResult crossed = s->Solve();
+  ASSERT_EQ(crossed.status, SolveStatus::kOptimal);
+  EXPECT_NEAR(crossed.objective, cold.objective, 1e-7 * std::abs(cold.objective));
+  EXPECT_LE(relaxed.MaxViolation(crossed.x), 1e-7);
+  // Columns the duals price out: left superbasic, each would cost at least a
+  // pivot (262 in all, measured with the rule off); at their bounds, 35.
+  const Eigen::VectorXd reduced_cost = lp.col_cost - lp.a_matrix.transpose() * interior.row_duals;
+  const int priced_out = static_cast<int>((reduced_cost.array().abs() > 1e-6).count());
+  ASSERT_GE(priced_out, 150);
+  EXPECT_LT(crossed.iterations, priced_out / 2);
+}
+
 }  // namespace
 }  // namespace thrustsched::milp
