@@ -226,6 +226,13 @@ TEST(LpSession, ChildFromItsParentsBasisMatchesAColdSolve) {
   }
 }
 
+// SolveLpRelaxation's interior point without crossover.
+LpRelaxationResult InteriorPoint(const Solver& solver, const LpData& lp) {
+  SolveOptions interior_point;
+  interior_point.lp_algorithm = LpAlgorithm::kBarrierNoCrossover;
+  return solver.SolveLpRelaxation(lp, interior_point);
+}
+
 // A session started from an interior point (CrossOverFrom with
 // SolveLpRelaxation's point and duals without crossover) crosses over to a
 // vertex with a basis: the cold simplex's optimum. So too for an LP grown by
@@ -249,9 +256,7 @@ TEST(LpSession, CrossOverFromAnInteriorPointMatchesAColdSolve) {
   AppendRows(&grown, {row});
   const LpRelaxationResult cold = solver->SolveLpRelaxation(lp);
   ASSERT_EQ(cold.status, SolveStatus::kOptimal);
-  SolveOptions interior_point;
-  interior_point.lp_algorithm = LpAlgorithm::kBarrierNoCrossover;
-  const LpRelaxationResult interior = solver->SolveLpRelaxation(lp, interior_point);
+  const LpRelaxationResult interior = InteriorPoint(*solver, lp);
   ASSERT_EQ(interior.status, SolveStatus::kOptimal);
   EXPECT_NEAR(interior.objective, cold.objective, 1e-6 * std::abs(cold.objective));
   for (const bool with_sum : {false, true}) {
@@ -311,9 +316,7 @@ TEST(LpSession, CrossOverPutsPricedOutColumnsAtTheirBounds) {
   const LpData lp = RandomKnapsack(200, 10, 9);
   const LpRelaxationResult cold = solver->SolveLpRelaxation(lp);
   ASSERT_EQ(cold.status, SolveStatus::kOptimal);
-  SolveOptions interior_point;
-  interior_point.lp_algorithm = LpAlgorithm::kBarrierNoCrossover;
-  const LpRelaxationResult interior = solver->SolveLpRelaxation(lp, interior_point);
+  const LpRelaxationResult interior = InteriorPoint(*solver, lp);
   ASSERT_EQ(interior.status, SolveStatus::kOptimal);
   const Eigen::VectorXd inside =
       0.5 * interior.x + 0.5 * Eigen::VectorXd::Constant(lp.num_cols(), 1e-3);
