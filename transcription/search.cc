@@ -376,7 +376,9 @@ class Search {
       }
       if (last_improvement_mask_.size() == mask.size() && last_improvement_mask_ == mask) continue;
       last_improvement_mask_ = mask;
-      if (ImproveWithin(mask, "improvement over ", "the improvement MILP")) ++solved;
+      if (ImproveWithin(mask, "improvement over ", "the improvement MILP", {},
+                        search_.improvement_time_share))
+        ++solved;
     }
     return objective_ < before;
   }
@@ -874,11 +876,13 @@ bool SearchOptions::IsValid(std::string* error) const {
     return fail("total_branching_lp_nonzeros must be >= 0, got " +
                 std::to_string(total_branching_lp_nonzeros));
   }
-  if (!(heuristic_time_share > 0.0 && heuristic_time_share <= 1.0)) {
-    return fail("heuristic_time_share must be in (0, 1], got " + FormatG(heuristic_time_share, 6));
-  }
-  if (!(exchange_time_share > 0.0 && exchange_time_share <= 1.0)) {
-    return fail("exchange_time_share must be in (0, 1], got " + FormatG(exchange_time_share, 6));
+  const std::pair<const char*, double> shares[] = {
+      {"heuristic_time_share", heuristic_time_share},
+      {"improvement_time_share", improvement_time_share},
+      {"exchange_time_share", exchange_time_share}};
+  for (const auto& [name, share] : shares) {
+    if (!(share > 0.0 && share <= 1.0))
+      return fail(std::string(name) + " must be in (0, 1], got " + FormatG(share, 6));
   }
   if (improvement_rounds < 0)
     return fail("improvement_rounds must be >= 0, got " + std::to_string(improvement_rounds));

@@ -38,7 +38,8 @@
 //     restricted to wider nets around the relaxation's and the incumbent's
 //     slots with a cutoff one step below the incumbent (incumbents only):
 //     the first net (under a time limit, each incumbent-only MILP gets a
-//     share of the time left: `heuristic_time_share`), then
+//     share of the time left: `heuristic_time_share`, the improvement
+//     MILPs `improvement_time_share`), then
 //  4b. branching on each thruster's number of on slots (an integer in every
 //     schedule; first the sum over thrusters that stand in for each other,
 //     +N and -N), its leaves dual simplex solves from their parent's basis
@@ -105,6 +106,12 @@ struct SearchOptions {
   /// improvement MILP alone took 47-50 s of its 20,000 nodes (finding
   /// nothing on two of them) and left the tree no time.
   double heuristic_time_share = 0.25;
+  /// heuristic_time_share for step 4a's improvement MILPs. On the hard weeks
+  /// of data/scenarios/hard/ (bench of 2026-11-28, 22 solves over 9 weeks)
+  /// they either found a better schedule within 2.1 s (10) or ran out their
+  /// quarter of the time left, 7.9-12 s, with nothing (11; once a better
+  /// schedule at 11.4 s): the time goes to the tree and the exchange.
+  double improvement_time_share = 0.1;
   /// Restricted MILPs solved by row generation over their dense rows
   /// (milp::SolveWithLazyRows): on GEO weeks ~1/4 of the condensed window
   /// rows bind at the LP optimum, and CBC's node LPs on the rest cost 10x.
@@ -207,8 +214,9 @@ struct SearchOptions {
   /// release's search, kept for comparison in the bench. Week 10 of
   /// data/scenarios/hard/ (six thrusters, 60 s): the root basis in 2 s
   /// instead of 13 s, which leaves the exchange along +T and -T its time.
-  /// Week 33: that crossover did not end in the 26 s the tree had left,
-  /// where a second interior point with its crossover takes 14 s.
+  /// Week 33: 1.8 s, where a second interior point with its crossover
+  /// takes 14 s (61-71 s before the crossover put the columns the duals
+  /// price out at their bounds first).
   bool tree_root_from_relaxation = true;
   /// Solve the LP relaxation without the blocks of the thrusters an optimal
   /// schedule can leave off (transcription/dormant.h), and keep those

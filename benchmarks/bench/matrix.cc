@@ -184,9 +184,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (the tree's root basis by a second interior "
-        "point and its crossover, not by the crossover from the relaxation's interior point; "
-        "the exchange's MILPs with a quarter of the time left, not half)";
+        "search as the previous release ran it (step 4a's improvement MILPs with a quarter of "
+        "the time left, not a tenth)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

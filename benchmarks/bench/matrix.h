@@ -67,10 +67,9 @@ struct CaseSpec {
   /// The problem-aware search (transcription::SearchSchedule, what `solve`
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
-  /// With `search`: the search as the previous release ran it, the tree's
-  /// root basis by a second interior point
-  /// (SearchOptions::tree_root_from_relaxation off) and the exchange's
-  /// MILPs with heuristic_time_share, for the side-by-side ratio.
+  /// With `search`: the search as the previous release ran it, step 4a's
+  /// improvement MILPs with heuristic_time_share
+  /// (SearchOptions::improvement_time_share), for the side-by-side ratio.
   bool search_previous = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within

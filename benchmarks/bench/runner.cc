@@ -237,12 +237,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): the tree's root basis by a
-    // second interior point, the exchange's MILPs with the others' share.
-    if (spec.search_previous) {
-      search.tree_root_from_relaxation = false;
-      search.exchange_time_share = search.heuristic_time_share;
-    }
+    // The previous release's search (matrix.h): step 4a's improvement MILPs
+    // with the other restricted MILPs' share.
+    if (spec.search_previous) search.improvement_time_share = search.heuristic_time_share;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -372,6 +372,11 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   EXPECT_NE(error.find("exchange_time_share must be in (0, 1], got 1.5"), std::string::npos)
       << error;
   s = SearchOptions{};
+  s.improvement_time_share = 0.0;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("improvement_time_share must be in (0, 1], got 0"), std::string::npos)
+      << error;
+  s = SearchOptions{};
   s.total_branching_lp_nonzeros = -1;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("total_branching_lp_nonzeros must be >= 0, got -1"), std::string::npos)
