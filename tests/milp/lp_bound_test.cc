@@ -331,8 +331,8 @@ TEST(LpSession, CrossOverPutsPricedOutColumnsAtTheirBounds) {
   EXPECT_LE(relaxed.MaxViolation(crossed.x), 1e-7);
   // Columns the duals price out: left superbasic, each would cost at least a
   // pivot (262 in all, measured with the rule off); at their bounds, 35.
-  const Eigen::VectorXd reduced_cost = lp.col_cost - lp.a_matrix.transpose() * interior.row_duals;
-  const int priced_out = static_cast<int>((reduced_cost.array().abs() > 1e-6).count());
+  const DualBound duals = SafeDualBound(lp, interior.row_duals);
+  const int priced_out = static_cast<int>((duals.reduced_costs.array().abs() > 1e-6).count());
   ASSERT_GE(priced_out, 150);
   EXPECT_LT(crossed.iterations, priced_out / 2);
 }
