@@ -250,6 +250,11 @@ class LpSession {
     (void)x;
     (void)row_duals;
   }
+  /// Each later Solve stops after this many simplex pivots (status
+  /// kNoSolutionFound, detail "pivot limit"): a deterministic cap, where a
+  /// time limit is not. < 0: none (the default). Default implementation:
+  /// ignored.
+  virtual void SetPivotLimit(long long pivots) { (void)pivots; }
   /// The current column bounds (as set, not the original ones).
   virtual double column_lower(int column) const = 0;
   virtual double column_upper(int column) const = 0;

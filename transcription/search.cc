@@ -541,7 +541,10 @@ class Search {
     AddObjectiveCutoff(&r.small, Cutoff());
     const double t0 = Elapsed();
     milp::SolveResult s;
-    if (r.feasible) s = SolveRestricted(r.small, RestrictedOptions());
+    milp::SolveOptions o = RestrictedOptions();
+    if (!tree_ran_ && search_.total_branching_lps >= 2 && std::isfinite(o.time_limit_s))
+      o.time_limit_s *= search_.exact_time_share;
+    if (r.feasible) s = SolveRestricted(r.small, o);
     nodes_ += s.nodes;
     const std::string what = "exact MILP over the " + std::to_string(Count(mask)) +
                              " slots reduced-cost fixing leaves free";
@@ -588,6 +591,7 @@ class Search {
   // (transcription/total_branching.h); bounds only.
   void BranchOnTotals() {
     if (search_.total_branching_lps < 2 || !relaxation_.x.size()) return;
+    tree_ran_ = true;
     milp::SolveOptions o = SubOptions(true);
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
     const double t0 = Elapsed();
@@ -595,6 +599,7 @@ class Search {
     tree.axis_groups = search_.total_branching_axis_groups;
     tree.elastic = search_.total_branching_elastic;
     tree.warm = search_.total_branching_warm;
+    tree.leaf_pivot_limit = search_.total_branching_leaf_pivot_limit;
     const TotalBranching t = BranchOnThrusterTotals(
         milp_, solver_, o, relaxation_.x, bound_, objective_, step_, TreeLpBudget(), tree,
         search_.tree_root_from_relaxation ? relaxation_.row_duals : Eigen::VectorXd());
@@ -823,6 +828,7 @@ class Search {
   int heuristic_level_ = 0;                   // widening level of the heuristic's incumbent
   int improvement_level_ = -1;                // next widening level of step 4a (-1: not started)
   Eigen::MatrixXi last_improvement_mask_;     // its last net, not solved twice
+  bool tree_ran_ = false;                     // step 4b started (exact_time_share)
   bool exchange_started_ = false;             // step 4c's axes chosen
   std::vector<ThrusterGroup> exchange_axes_;  // those axes (ExchangeAxes)
   std::vector<double> exchanged_at_;          // incumbent of each one's last exchange
@@ -879,6 +885,7 @@ bool SearchOptions::IsValid(std::string* error) const {
   const std::pair<const char*, double> shares[] = {
       {"heuristic_time_share", heuristic_time_share},
       {"improvement_time_share", improvement_time_share},
+      {"exact_time_share", exact_time_share},
       {"exchange_time_share", exchange_time_share}};
   for (const auto& [name, share] : shares) {
     if (!(share > 0.0 && share <= 1.0))

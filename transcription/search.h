@@ -112,6 +112,14 @@ struct SearchOptions {
   /// quarter of the time left, 7.9-12 s, with nothing (11; once a better
   /// schedule at 11.4 s): the time goes to the tree and the exchange.
   double improvement_time_share = 0.1;
+  /// Under a time limit, the largest share of the time left that step 4's
+  /// exact MILP may use before the tree (step 4b) has run; after it, all of
+  /// it. Week 13 of the six-thruster year (2034-03-26), 60 s, two threads:
+  /// the exact MILP over 2153 slots ran 43 s without a proof and the time
+  /// ran out at 2.44 %, where the tree proves the incumbent optimal in two
+  /// LPs (6 s in the year run). The exact solves of the hard weeks that
+  /// closed took 9.3 s at most.
+  double exact_time_share = 0.3;
   /// Restricted MILPs solved by row generation over their dense rows
   /// (milp::SolveWithLazyRows): on GEO weeks ~1/4 of the condensed window
   /// rows bind at the LP optimum, and CBC's node LPs on the rest cost 10x.
@@ -185,6 +193,14 @@ struct SearchOptions {
   /// bound (the interior point stops at an infeasible point), 5.26 % after
   /// 723 s; elastic, one split proves the 19-step schedule optimal in 96 s.
   bool total_branching_elastic = true;
+  /// The warm tree's leaves stop their dual simplex after as many pivots as
+  /// the root's basis took (at least 1000) and keep their parent's bound
+  /// (TreeOptions::leaf_pivot_limit). Off: the previous release's tree,
+  /// kept for comparison in the bench. Week 45 of the six-thruster year
+  /// (2034-11-05), 60 s, two threads: three leaves took 10-25 s each and
+  /// left it at 2.7 %; with the limit, 4.5-5 s each, and the lowest leaf's
+  /// MILP found the optimum, proven at 32 s.
+  bool total_branching_leaf_pivot_limit = true;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the
   /// incumbent's slots of the others, with the cutoff, axis after axis. Off:

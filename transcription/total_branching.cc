@@ -51,6 +51,17 @@ constexpr double kElasticFactor = 100.0;
 // its bound stays below the incumbent is not split (Take).
 constexpr double kWarmElasticFactor = 1.0;
 
+// The warm tree's pivot limit per leaf: as many as the root's basis took,
+// and at least this. Week 45 of the six-thruster year (2034-11-05): the
+// leaf -T <= 1 of a parent at 1.98 slots (its LP needs 0.29 slots outside
+// its totals, bound 1.13 against an incumbent of 0.61) took 10-25 s of
+// CLP's dual simplex, which passed the incumbent early but then went back
+// and forth with its primal clean-up (the states' fake bounds), where every
+// other leaf took under 0.7 s; three such leaves left the minute no time.
+constexpr long long kMinLeafPivots = 1000;
+
+long long LeafPivotLimit(long long root_pivots) { return std::max(kMinLeafPivots, root_pivots); }
+
 struct Leaf {
   std::vector<double> lower, upper;  // per group: bounds on its total
   double bound = -milp::kInfinity;
@@ -109,6 +120,7 @@ class Tree {
        double incumbent, double step, const TreeOptions& tree, double elastic_cost_per_slot,
        const Eigen::VectorXd& root_duals)
       : warm_(tree.warm),
+        leaf_pivot_limit_(tree.leaf_pivot_limit),
         root_duals_(root_duals),
         milp_(milp),
         solver_(solver),
@@ -193,6 +205,10 @@ class Tree {
       session_->SetColumnBounds(column, totals_lp_.lp.col_lower[column],
                                 totals_lp_.lp.col_upper[column]);
     }
+    // A leaf changes a bound or two of its parent: its dual simplex takes
+    // tens to hundreds of pivots. One that needs more than the root took
+    // keeps its parent's bound (LeafPivotLimit).
+    if (leaf_pivot_limit_) session_->SetPivotLimit(LeafPivotLimit(root.iterations));
     session_note_ = "leaves by dual simplex from their parent's basis, the root's by " + how +
                     " in " + FormatG(Elapsed() - t0, 3) + " s";
     if (root.status == milp::SolveStatus::kOptimal) return true;
@@ -309,7 +325,8 @@ class Tree {
         leaf->free_slots = SlotsFreeByReducedCost(milp_.encoding(), lp, b, incumbent_, step_);
       }
     } else {
-      leaf->note = "LP stopped, parent's bound";
+      leaf->note = r.detail == "pivot limit" ? "LP stopped at its pivot limit, parent's bound"
+                                             : "LP stopped, parent's bound";
     }
   }
 
@@ -340,9 +357,13 @@ class Tree {
     return FormatG(leaf.bound, 6) + (leaf.note.empty() ? "" : " (" + leaf.note + ")");
   }
 
-  // Leaves in best-first order: lower bound first, then creation order.
+  // Leaves in best-first order: lower bound first, then those with an LP
+  // point (a leaf without one cannot be split), then creation order.
   static bool LowerThan(const Leaf& a, const Leaf& b) {
-    return a.bound < b.bound || (a.bound == b.bound && a.order < b.order);
+    if (a.bound != b.bound) return a.bound < b.bound;
+    const bool a_point = a.x.size() > 0, b_point = b.x.size() > 0;
+    if (a_point != b_point) return a_point;
+    return a.order < b.order;
   }
 
   int Lowest() const {
@@ -364,6 +385,7 @@ class Tree {
   }
 
   bool warm_;
+  bool leaf_pivot_limit_;
   Eigen::VectorXd root_duals_;  // the relaxation's row duals, if the caller gave them
   GroupTotalsLp totals_lp_;     // the warm tree's LP, with the last leaf's bounds
   std::unique_ptr<milp::LpSession> session_;

@@ -141,6 +141,11 @@ struct TreeOptions {
   /// interior point and its crossover and whose leaves are dual simplex
   /// solves from their parent's basis.
   bool warm = true;
+  /// Warm tree: each leaf's dual simplex stops after as many pivots as the
+  /// root's basis took (at least 1000), the leaf keeping its parent's bound.
+  /// Off: no limit, the previous release's tree (kept for comparison in the
+  /// bench).
+  bool leaf_pivot_limit = true;
 };
 
 /// As above. `root_x` and `root_bound` are the relaxation's point and its

@@ -237,9 +237,13 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): step 4a's improvement MILPs
-    // with the other restricted MILPs' share.
-    if (spec.search_previous) search.improvement_time_share = search.heuristic_time_share;
+    // The previous release's search (matrix.h): step 4's exact MILP before
+    // the tree with all the time left, the tree's leaves without a pivot
+    // limit.
+    if (spec.search_previous) {
+      search.exact_time_share = 1.0;
+      search.total_branching_leaf_pivot_limit = false;
+    }
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <climits>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -481,6 +482,7 @@ class ClpSession final : public LpSession {
     model_.setColumnBounds(j, lower == -kInf ? -COIN_DBL_MAX : lower,
                            upper == kInf ? COIN_DBL_MAX : upper);
   }
+  void SetPivotLimit(long long pivots) override { pivot_limit_ = pivots; }
   double column_lower(int j) const override { return lp_.col_lower[j]; }
   double column_upper(int j) const override { return lp_.col_upper[j]; }
   void CrossOverFrom(const Eigen::VectorXd& x, const Eigen::VectorXd& row_duals) override {
@@ -528,7 +530,11 @@ class ClpSession final : public LpSession {
       pivots = model_.numberIterations();
       if (barrier && model_.status() == 0) pivots += Dual();  // clean-up (usually no pivots)
     } else {
+      // CLP counts each dual()'s pivots from zero.
+      if (pivot_limit_ >= 0)
+        model_.setMaximumIterations(static_cast<int>(std::min<long long>(pivot_limit_, INT_MAX)));
       pivots = Dual();
+      model_.setMaximumIterations(INT_MAX);
     }
     first_ = false;
     LpRelaxationResult r;
@@ -549,7 +555,9 @@ class ClpSession final : public LpSession {
       r.detail = "clp: dual infeasible";
     } else if (status == 3 || status == 5) {
       r.status = SolveStatus::kNoSolutionFound;
-      r.detail = clock_.stopped_by_interrupt() ? "interrupted" : "time limit";
+      r.detail = clock_.stopped_by_interrupt()                 ? "interrupted"
+                 : pivot_limit_ >= 0 && pivots >= pivot_limit_ ? "pivot limit"
+                                                               : "time limit";
     } else {
       r.status = SolveStatus::kError;
       r.detail = "clp status " + std::to_string(status);
@@ -642,6 +650,7 @@ class ClpSession final : public LpSession {
   ClpSimplex model_;
   double sign_ = 1.0;
   bool first_ = true;
+  long long pivot_limit_ = -1;             // SetPivotLimit, warm solves
   Eigen::VectorXd start_x_, start_duals_;  // CrossOverFrom's point, until the next Solve
 };
 

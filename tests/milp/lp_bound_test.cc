@@ -189,6 +189,42 @@ TEST(LpSession, WarmSolvesMatchColdOnes) {
   EXPECT_NEAR(r.objective, cold.objective, 1e-7 * std::abs(cold.objective));
 }
 
+// A warm solve stops at its pivot limit (SetPivotLimit) without an answer,
+// and within a limit above the pivots it needs gives the cold optimum.
+TEST(LpSession, PivotLimitStopsAWarmSolve) {
+  auto solver = MakeCbcSolver();
+  const LpData lp = RandomKnapsack(200, 10, 3);
+  std::unique_ptr<LpSession> s = solver->OpenLpSession(lp);
+  const LpRelaxationResult root = s->Solve();
+  ASSERT_EQ(root.status, SolveStatus::kOptimal);
+  const std::vector<unsigned char> root_basis = s->SaveBasis();
+  LpData changed = lp;
+  for (int j = 0; j < 40; ++j) {  // every one of them flipped: many pivots
+    const double v = root.x[j] > 0.5 ? 0.0 : 1.0;
+    s->SetColumnBounds(j, v, v);
+    changed.col_lower[j] = changed.col_upper[j] = v;
+  }
+  const LpRelaxationResult cold = solver->SolveLpRelaxation(changed);
+  ASSERT_EQ(cold.status, SolveStatus::kOptimal);
+  const LpRelaxationResult free_run = s->Solve();
+  ASSERT_EQ(free_run.status, SolveStatus::kOptimal);
+  EXPECT_NEAR(free_run.objective, cold.objective, 1e-7 * std::abs(cold.objective));
+  ASSERT_GT(free_run.iterations, 2);
+
+  s->RestoreBasis(root_basis);
+  s->SetPivotLimit(2);
+  const LpRelaxationResult stopped = s->Solve();
+  EXPECT_EQ(stopped.status, SolveStatus::kNoSolutionFound);
+  EXPECT_EQ(stopped.detail, "pivot limit");
+  EXPECT_LE(stopped.iterations, 2);
+
+  s->RestoreBasis(root_basis);
+  s->SetPivotLimit(2 * free_run.iterations);
+  const LpRelaxationResult within = s->Solve();
+  ASSERT_EQ(within.status, SolveStatus::kOptimal) << within.detail;
+  EXPECT_NEAR(within.objective, cold.objective, 1e-7 * std::abs(cold.objective));
+}
+
 // A tree's child solved from its parent's basis (SaveBasis, RestoreBasis),
 // after a sibling moved the session elsewhere, gives the cold solve's
 // optimum; so does a first solve by interior point and crossover.

@@ -377,6 +377,10 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   EXPECT_NE(error.find("improvement_time_share must be in (0, 1], got 0"), std::string::npos)
       << error;
   s = SearchOptions{};
+  s.exact_time_share = -0.5;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("exact_time_share must be in (0, 1], got -0.5"), std::string::npos) << error;
+  s = SearchOptions{};
   s.total_branching_lp_nonzeros = -1;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("total_branching_lp_nonzeros must be >= 0, got -1"), std::string::npos)
