@@ -32,6 +32,8 @@
 //     restricted to them is exact for any improvement: its solve proves the
 //     incumbent optimal or finds a better one (and then again), and the bound
 //     is min(incumbent, that solve's bound) and at least the LP bound.
+//     Before the tree (4b) has run, it gets at most `exact_time_share` of
+//     the time left: the tree often proves what it cannot.
 //     Restricted MILPs are solved by row generation over their dense window
 //     rows (milp/lazy_rows.h; exact): a few thousand of them bind.
 //  4a. When too many slots stay free for step 4: local improvement, the MILP
@@ -43,7 +45,9 @@
 //  4b. branching on each thruster's number of on slots (an integer in every
 //     schedule; first the sum over thrusters that stand in for each other,
 //     +N and -N), its leaves dual simplex solves from their parent's basis
-//     (the root's by the crossover from step 1's interior point), within a
+//     (the root's by the crossover from step 1's interior point; a leaf
+//     stops at as many pivots as the root took and keeps its parent's
+//     bound: `total_branching_leaf_pivot_limit`), within a
 //     budget of LPs, until the gap closes: a better bound, often the proof
 //     (transcription/total_branching.h; each leaf's LP holds its totals
 //     elastically, so it is never infeasible); then step 4 for each open
