@@ -250,10 +250,11 @@ class LpSession {
     (void)x;
     (void)row_duals;
   }
-  /// Each later Solve stops after this many simplex pivots (status
-  /// kNoSolutionFound, detail "pivot limit"): a deterministic cap, where a
-  /// time limit is not. < 0: none (the default). Default implementation:
-  /// ignored.
+  /// Each later warm Solve (the dual simplex from the current basis: not
+  /// the first solve, nor one after CrossOverFrom) stops after this many
+  /// pivots (status kNoSolutionFound, detail "pivot limit"): a
+  /// deterministic cap, where a time limit is not. < 0: none (the default).
+  /// Default implementation: ignored.
   virtual void SetPivotLimit(long long pivots) { (void)pivots; }
   /// The current column bounds (as set, not the original ones).
   virtual double column_lower(int column) const = 0;

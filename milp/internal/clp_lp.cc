@@ -567,6 +567,12 @@ class ClpSession final : public LpSession {
   }
 
  private:
+  // The dual simplex from the current basis; returns its pivots.
+  int Dual() {
+    model_.dual();
+    return model_.numberIterations();
+  }
+
   // From the start point (CrossOverFrom) to a basis, as CLP's own crossover
   // after its interior point (ClpSolve, useBarrier): columns within 10 primal
   // tolerances of a bound at it, the others superbasic, the farthest from
@@ -585,12 +591,6 @@ class ClpSession final : public LpSession {
   // off their bounds (CLP's own point on the exported model 12,274) and the
   // crossover took 15,400 pivots and 61-71 s; with those columns at their
   // bounds 3,840 pivots and 1.2 s (thresholds from 1e-8 to 1e-5: 1.2-2.1 s).
-  // The dual simplex from the current basis; returns its pivots.
-  int Dual() {
-    model_.dual();
-    return model_.numberIterations();
-  }
-
   // Returns the primal simplex's pivots.
   int CrossOver() {
     const int n = model_.numberColumns(), m = model_.numberRows();
