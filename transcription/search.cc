@@ -318,6 +318,14 @@ class Search {
 
   static int Count(const Eigen::MatrixXi& mask) { return mask.sum(); }
 
+  // A sub-solve's status for the step log; an error with its reason (the
+  // solver process died, say, with what it wrote).
+  static std::string StatusText(const milp::SolveResult& s) {
+    std::string text(milp::ToString(s.status));
+    if (s.status == milp::SolveStatus::kError && !s.detail.empty()) text += " (" + s.detail + ")";
+    return text;
+  }
+
   // Step 2: the MILP restricted to the candidate slots, widened while it is
   // infeasible.
   void Heuristic() {
@@ -333,14 +341,13 @@ class Search {
                                " candidate slots (" + std::to_string(r.small.num_cols()) +
                                " columns, " + std::to_string(r.small.num_rows()) + " rows)";
       if (s.has_solution()) {
-        Step(what + ": " + std::string(milp::ToString(s.status)) + " in " +
-             FormatG(Elapsed() - t0, 3) + " s, " + std::to_string(s.nodes) + " nodes" + lazy_note_);
+        Step(what + ": " + StatusText(s) + " in " + FormatG(Elapsed() - t0, 3) + " s, " +
+             std::to_string(s.nodes) + " nodes" + lazy_note_);
         Offer(Lift(r, s.x), "the restricted MILP");
         heuristic_level_ = widening;
         return;
       }
-      Step(what + ": " + (r.feasible ? std::string(milp::ToString(s.status)) : "infeasible") +
-           ", widened");
+      Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened");
     }
   }
 
@@ -399,8 +406,8 @@ class Search {
     const milp::SolveResult s = SolveRestricted(
         r.small, HeuristicOptions(time_share > 0.0 ? time_share : search_.heuristic_time_share));
     nodes_ += s.nodes;
-    Step(what + std::to_string(Count(mask)) + " slots: " + std::string(milp::ToString(s.status)) +
-         " in " + FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
+    Step(what + std::to_string(Count(mask)) + " slots: " + StatusText(s) + " in " +
+         FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
     if (s.has_solution()) Offer(Lift(r, s.x), source);
     return true;
   }
@@ -567,8 +574,8 @@ class Search {
       bound_ = std::max(bound_, std::min(before, restricted_bound));
     }
     if (bound_ > objective_) bound_ = objective_;
-    Step(what + ": " + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) +
-         " s, bound " + FormatG(bound_, 8) + lazy_note_);
+    Step(what + ": " + StatusText(s) + " in " + FormatG(Elapsed() - t0, 3) + " s, bound " +
+         FormatG(bound_, 8) + lazy_note_);
     return s.status != milp::SolveStatus::kOptimal && objective_ < before;
   }
 
@@ -665,8 +672,7 @@ class Search {
       Step(what + "no better schedule (" + FormatG(Elapsed() - t0, 3) + " s)" + lazy_note_);
       return before;
     }
-    Step(what + std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) + " s" +
-         lazy_note_);
+    Step(what + StatusText(s) + " in " + FormatG(Elapsed() - t0, 3) + " s" + lazy_note_);
     if (s.has_solution()) Offer(Lift(r, s.x), "an exact leaf MILP");
     if (s.status == milp::SolveStatus::kOptimal) return std::min(before, s.objective);
     return std::isfinite(s.best_bound) ? std::min(before, s.best_bound) : -kInf;
@@ -779,8 +785,8 @@ class Search {
     }
     solver_detail_ = s.detail;
     Step("whole MILP (" + std::string(solver_.name()) +
-         (o.initial_solution ? ", from the incumbent" : "") + "): " +
-         std::string(milp::ToString(s.status)) + " in " + FormatG(Elapsed() - t0, 3) + " s");
+         (o.initial_solution ? ", from the incumbent" : "") + "): " + StatusText(s) + " in " +
+         FormatG(Elapsed() - t0, 3) + " s");
   }
 
   // -------------------------------------------------------------- result

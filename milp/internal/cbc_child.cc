@@ -17,6 +17,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "CoinError.hpp"
+#include "milp/internal/child_stderr.h"
 #include "milp/internal/pipe_io.h"
 
 namespace thrustsched::milp::internal {
@@ -386,6 +388,7 @@ DriverOutcome RunDriverInChild(const DriverRequest& request, DriverListener* lis
     throw std::runtime_error(std::string("cannot create a pipe for the CBC process: ") +
                              std::strerror(errno));
   }
+  const ChildStderr child_stderr;
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
@@ -396,6 +399,7 @@ DriverOutcome RunDriverInChild(const DriverRequest& request, DriverListener* lis
   }
   if (pid == 0) {
     close(fds[0]);
+    child_stderr.AttachInChild();
     ChildMain(request, fds[1], parent, stop_grace_s);
   }
   close(fds[1]);
@@ -413,6 +417,14 @@ DriverOutcome RunDriverInChild(const DriverRequest& request, DriverListener* lis
     throw;
   }
   close(fds[0]);
+  // A child that died says why on stderr (an assertion of CBC or CLP): that
+  // goes with the detail; anything else it wrote is passed on.
+  const std::string said = child_stderr.Tail(kChildStderrTailBytes);
+  if (!said.empty() && !out.completed) {
+    out.detail += "; it wrote: " + said;
+  } else if (!said.empty()) {
+    std::fprintf(stderr, "%s\n", said.c_str());
+  }
   return out;
 }
 

@@ -18,7 +18,10 @@
 // deadline passes, the child is asked to stop (SIGUSR1: it stops at its next
 // check and sends its outcome); if it has not ended stop_grace_s later, it
 // is killed, and the outcome is made of what it had reported
-// (DriverOutcome::completed false). The child ignores the terminal's SIGINT,
+// (DriverOutcome::completed false). The child's stderr goes to a file of
+// this process (child_stderr.h): when the child dies (an assertion of CBC or
+// CLP aborts it), what it wrote ends the outcome's detail; otherwise it is
+// passed on to this process's stderr. The child ignores the terminal's SIGINT,
 // SIGTERM and SIGHUP (the caller decides what they mean) and dies with the
 // calling thread (PR_SET_PDEATHSIG).
 #ifndef THRUSTSCHED_MILP_INTERNAL_CBC_CHILD_H_

@@ -11,11 +11,14 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "milp/internal/child_stderr.h"
 #include "milp/internal/pipe_io.h"
 
 namespace thrustsched::milp::internal {
@@ -117,6 +120,7 @@ struct Child {
   double offset_s = 0.0;  // the parent's clock when the child's started
   bool in_outcome = false;
   LpChildOutcome result;
+  std::unique_ptr<ChildStderr> err;  // what the child writes to stderr
 };
 
 // Forks the child for `job`; on failure marks the result as died.
@@ -127,6 +131,7 @@ void Start(const LpCoreJob& job, const SolveOptions& options, SolveClock* clock,
     c->result.why = std::string("pipe: ") + std::strerror(errno);
     return;
   }
+  c->err = std::make_unique<ChildStderr>();
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]);
@@ -137,6 +142,7 @@ void Start(const LpCoreJob& job, const SolveOptions& options, SolveClock* clock,
   }
   if (pid == 0) {
     close(fds[0]);
+    c->err->AttachInChild();
     RunChild(fds[1], *job.lp, *job.arrays, options, clock->Remaining());
   }
   close(fds[1]);
@@ -174,6 +180,12 @@ void Finish(bool stopped, SolveClock* clock, Child* c) {
   c->fd = -1;
   const int wstatus = Reap(c->pid);
   LpChildOutcome& r = c->result;
+  // A child that died says why on stderr (an assertion of CLP): that goes
+  // with the reason; anything else it wrote is passed on.
+  const std::string said = c->err->Tail(kChildStderrTailBytes);
+  const bool ended_well =
+      !stopped && c->in_outcome && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0;
+  if (!said.empty() && ended_well) std::fprintf(stderr, "%s\n", said.c_str());
   if (stopped) {
     r.outcome.status = SolveStatus::kNoSolutionFound;
     r.outcome.detail = clock->stopped_by_interrupt() ? "interrupted" : "time limit";
@@ -190,6 +202,7 @@ void Finish(bool stopped, SolveClock* clock, Child* c) {
   } else {
     r.why = "exited with status " + std::to_string(WEXITSTATUS(wstatus)) + " without an outcome";
   }
+  if (!said.empty()) r.why += "; it wrote: " + said;
 }
 
 }  // namespace
