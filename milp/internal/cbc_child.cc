@@ -17,7 +17,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -417,14 +416,8 @@ DriverOutcome RunDriverInChild(const DriverRequest& request, DriverListener* lis
     throw;
   }
   close(fds[0]);
-  // A child that died says why on stderr (an assertion of CBC or CLP): that
-  // goes with the detail; anything else it wrote is passed on.
-  const std::string said = child_stderr.Tail(kChildStderrTailBytes);
-  if (!said.empty() && !out.completed) {
-    out.detail += "; it wrote: " + said;
-  } else if (!said.empty()) {
-    std::fprintf(stderr, "%s\n", said.c_str());
-  }
+  // A child that died says why on stderr (an assertion of CBC or CLP).
+  out.detail += child_stderr.AfterExit(!out.completed);
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 
 namespace thrustsched::milp::internal {
 
@@ -17,6 +18,15 @@ ChildStderr::~ChildStderr() {
 
 void ChildStderr::AttachInChild() const {
   if (fd_ >= 0) dup2(fd_, STDERR_FILENO);  // the copy does not close on exec
+}
+
+std::string ChildStderr::AfterExit(bool died) const {
+  constexpr size_t kMaxBytesInAReason = 2000;
+  const std::string said = Tail(kMaxBytesInAReason);
+  if (said.empty()) return {};
+  if (died) return "; it wrote: " + said;
+  std::fprintf(stderr, "%s\n", said.c_str());
+  return {};
 }
 
 std::string ChildStderr::Tail(size_t max_bytes) const {

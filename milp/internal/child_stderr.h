@@ -4,7 +4,7 @@
 //   ChildStderr err;                   // before fork()
 //   if (fork() == 0) { err.AttachInChild(); ... }
 //   ... waitpid ...
-//   std::string said = err.Tail(kChildStderrTailBytes);  // its last words, if any
+//   detail += err.AfterExit(/*died=*/true);  // "; it wrote: ..." or ""
 //
 // Why: CBC and CLP report broken internal invariants by assert(), which
 // prints to stderr and aborts. In the child that runs CBC's driver (see
@@ -21,9 +21,6 @@
 
 namespace thrustsched::milp::internal {
 
-/// At most this much of a dead child's stderr goes into a solve's detail.
-inline constexpr size_t kChildStderrTailBytes = 2000;
-
 class ChildStderr {
  public:
   /// Creates the file; without one (an old kernel), nothing is captured and
@@ -35,6 +32,11 @@ class ChildStderr {
 
   /// In the child after fork(): its stderr becomes the file.
   void AttachInChild() const;
+  /// After the child has ended. If it died: its last words (at most 2000
+  /// bytes) as "; it wrote: ...", to end the reason it died; "" if it wrote
+  /// nothing. Otherwise what it wrote is passed on to this process's stderr
+  /// and "" returned.
+  std::string AfterExit(bool died) const;
   /// The last `max_bytes` the child wrote (all, if fewer), then without
   /// trailing white space.
   std::string Tail(size_t max_bytes) const;

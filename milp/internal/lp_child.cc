@@ -11,7 +11,6 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -180,12 +179,6 @@ void Finish(bool stopped, SolveClock* clock, Child* c) {
   c->fd = -1;
   const int wstatus = Reap(c->pid);
   LpChildOutcome& r = c->result;
-  // A child that died says why on stderr (an assertion of CLP): that goes
-  // with the reason; anything else it wrote is passed on.
-  const std::string said = c->err->Tail(kChildStderrTailBytes);
-  const bool ended_well =
-      !stopped && c->in_outcome && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0;
-  if (!said.empty() && ended_well) std::fprintf(stderr, "%s\n", said.c_str());
   if (stopped) {
     r.outcome.status = SolveStatus::kNoSolutionFound;
     r.outcome.detail = clock->stopped_by_interrupt() ? "interrupted" : "time limit";
@@ -193,6 +186,7 @@ void Finish(bool stopped, SolveClock* clock, Child* c) {
   }
   if (c->in_outcome && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 &&
       Parse(c->buf, &r.outcome)) {
+    c->err->AfterExit(false);
     return;
   }
   r.died = true;
@@ -202,7 +196,7 @@ void Finish(bool stopped, SolveClock* clock, Child* c) {
   } else {
     r.why = "exited with status " + std::to_string(WEXITSTATUS(wstatus)) + " without an outcome";
   }
-  if (!said.empty()) r.why += "; it wrote: " + said;
+  r.why += c->err->AfterExit(true);  // an assertion of CLP, say
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // ChildStderr: what a forked child writes to stderr reaches its parent
-// through the file, not the parent's own stderr, and Tail keeps the end.
+// through the file, not the parent's own stderr; Tail keeps the end and
+// AfterExit makes it the end of a dead child's reason.
 #include "milp/internal/child_stderr.h"
 
 #include <sys/wait.h>
@@ -40,12 +41,15 @@ TEST(ChildStderr, KeepsWhatTheChildWroteForTheParent) {
   EXPECT_EQ(on_parents_stderr, "");
   EXPECT_EQ(err.Tail(2000), said.substr(0, said.size() - 1));  // trailing newline dropped
   EXPECT_EQ(err.Tail(13), "0.0' failed.");                     // the last 13 bytes, newline dropped
+  // A child that died: its words end the reason.
+  EXPECT_EQ(err.AfterExit(/*died=*/true), "; it wrote: " + said.substr(0, said.size() - 1));
 }
 
 TEST(ChildStderr, IsEmptyWhenTheChildSaysNothing) {
   const ChildStderr err;
   ASSERT_EQ(RunChildThatSays(err, ""), 3);
   EXPECT_EQ(err.Tail(2000), "");
+  EXPECT_EQ(err.AfterExit(/*died=*/true), "");
 }
 
 }  // namespace
