@@ -326,29 +326,75 @@ class Search {
     return text;
   }
 
-  // Step 2: the MILP restricted to the candidate slots, widened while it is
-  // infeasible.
+  // Step 2: the MILP restricted to the candidate slots, widened while it
+  // holds no schedule, until a net frees every slot or would exceed
+  // max_widened_slots (step 5's whole MILP is then the next try). After
+  // the first two widenings, the net of every slot of the thrusters the
+  // relaxation fires (SearchOptions::fired_thrusters_net).
   void Heuristic() {
+    int previous_slots = -1;
     for (int widening = 0; widening <= search_.max_widenings && !Stopped(); ++widening) {
-      const Eigen::MatrixXi mask = WideningMask(widening);
-      const Restriction r = Restrict(mask);
-      if (report_ != nullptr) report_->candidate_slots = Count(mask);
-      const double t0 = Elapsed();
-      milp::SolveResult s;
-      if (r.feasible) s = SolveRestricted(r.small, HeuristicOptions());
-      nodes_ += s.nodes;
-      const std::string what = "MILP restricted to " + std::to_string(Count(mask)) +
-                               " candidate slots (" + std::to_string(r.small.num_cols()) +
-                               " columns, " + std::to_string(r.small.num_rows()) + " rows)";
-      if (s.has_solution()) {
-        Step(what + ": " + StatusText(s) + " in " + FormatG(Elapsed() - t0, 3) + " s, " +
-             std::to_string(s.nodes) + " nodes" + lazy_note_);
-        Offer(Lift(r, s.x), "the restricted MILP");
-        heuristic_level_ = widening;
+      if (widening == kFiredThrustersNetAfter + 1 && search_.fired_thrusters_net &&
+          FiredThrustersNet(widening - 1)) {
         return;
       }
-      Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened");
+      const Eigen::MatrixXi mask = WideningMask(widening);
+      // From level 1 on every thruster is free near the candidates, so a net
+      // that did not grow already frees every slot: nothing new to try.
+      if (Count(mask) == previous_slots) return;
+      if (widening > 0 && Count(mask) > search_.max_widened_slots) {
+        Step("the next net has " + std::to_string(Count(mask)) + " slots (more than " +
+             std::to_string(search_.max_widened_slots) + "): not widened further");
+        return;
+      }
+      previous_slots = Count(mask);
+      if (HeuristicNet(mask, " candidate slots", widening)) return;
     }
+  }
+
+  // The MILP restricted to `mask` (incumbents only); true if it held a
+  // schedule, which is offered; `level` is the widening level step 4a's
+  // improvement nets continue from.
+  bool HeuristicNet(const Eigen::MatrixXi& mask, const std::string& slots, int level) {
+    const Restriction r = Restrict(mask);
+    if (report_ != nullptr) report_->candidate_slots = Count(mask);
+    const double t0 = Elapsed();
+    milp::SolveResult s;
+    if (r.feasible) s = SolveRestricted(r.small, HeuristicOptions());
+    nodes_ += s.nodes;
+    const std::string what = "MILP restricted to " + std::to_string(Count(mask)) + slots + " (" +
+                             std::to_string(r.small.num_cols()) + " columns, " +
+                             std::to_string(r.small.num_rows()) + " rows)";
+    if (s.has_solution()) {
+      Step(what + ": " + StatusText(s) + " in " + FormatG(Elapsed() - t0, 3) + " s, " +
+           std::to_string(s.nodes) + " nodes" + lazy_note_);
+      Offer(Lift(r, s.x), "the restricted MILP");
+      heuristic_level_ = level;
+      return true;
+    }
+    Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened");
+    return false;
+  }
+
+  // Every slot of the thrusters the relaxation fires (their total on-value
+  // at least candidate_threshold; not dormant), when that net has at most
+  // max_widened_slots slots and is not within the widening `level`'s. The
+  // nets widen in time around the relaxation's slots; on a week that needs
+  // a few slots of one thruster, its firings may have to move anywhere in
+  // the week (as for the lowest leaf's MILP of step 4b).
+  bool FiredThrustersNet(int level) {
+    const OperationalEncoding& enc = milp_.encoding();
+    const std::vector<double> totals = ThrusterTotals(enc, relaxation_.x);
+    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      if (totals[static_cast<size_t>(i)] < search_.candidate_threshold || Dormant(i)) continue;
+      for (int j = 0; j < enc.num_intervals; ++j) {
+        if (lp_.col_upper[enc.on[i][j].index()] >= 0.5) mask(i, j) = 1;
+      }
+    }
+    if (Count(mask) == 0 || Count(mask) > search_.max_widened_slots) return false;
+    if ((mask.array() <= WideningMask(level).array()).all()) return false;
+    return HeuristicNet(mask, " slots of the thrusters the relaxation fires", level);
   }
 
   // The candidate slots of widening level w: the relaxation's slots with
@@ -831,6 +877,9 @@ class Search {
   SearchReport* report_;
   Clock::time_point start_;
   double step_ = 0.0;
+  // The fired thrusters' net comes after this many widenings: the first
+  // nets are small and cheap (infeasible in 0.4-0.9 s on a GEO week).
+  static constexpr int kFiredThrustersNetAfter = 2;
   int heuristic_level_ = 0;                   // widening level of the heuristic's incumbent
   int improvement_level_ = -1;                // next widening level of step 4a (-1: not started)
   Eigen::MatrixXi last_improvement_mask_;     // its last net, not solved twice
@@ -880,6 +929,9 @@ bool SearchOptions::IsValid(std::string* error) const {
   }
   if (max_exact_leaf_slots < 0) {
     return fail("max_exact_leaf_slots must be >= 0, got " + std::to_string(max_exact_leaf_slots));
+  }
+  if (max_widened_slots < 0) {
+    return fail("max_widened_slots must be >= 0, got " + std::to_string(max_widened_slots));
   }
   if (max_exchange_slots < 0) {
     return fail("max_exchange_slots must be >= 0, got " + std::to_string(max_exchange_slots));

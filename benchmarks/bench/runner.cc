@@ -237,12 +237,13 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): step 4's exact MILP before
-    // the tree with all the time left, the tree's leaves without a pivot
-    // limit.
+    // The previous release's search (matrix.h): step 2 widened at most
+    // twice, whatever the size of its nets, without the fired thrusters'
+    // net.
     if (spec.search_previous) {
-      search.exact_time_share = 1.0;
-      search.total_branching_leaf_pivot_limit = false;
+      search.max_widenings = 2;
+      search.max_widened_slots = std::numeric_limits<int>::max();
+      search.fired_thrusters_net = false;
     }
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;

@@ -342,6 +342,45 @@ TEST(SearchSchedule, ExchangeAlongAnAxisReachesCbcAlonesOptimum) {
   }
 }
 
+// Step 2's widening ends at a net above max_widened_slots, with a step that
+// says so, and the search goes on to CBC on the whole MILP (its optimum).
+// With every slot of LP on-value above 0.99 and no neighbours, this day's
+// first net (8 slots) holds no schedule and its first widening has 48.
+TEST(SearchSchedule, TheCapOnTheNetsEndsTheWidening) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = SmallHcwDay();
+  const ScheduleResult ref = CbcAlone(p, *solver);
+  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
+  const ScheduleMilp milp(p, BuildOptions{});
+  SearchOptions only;
+  only.candidate_threshold = 0.99;
+  only.neighbourhood = 0;
+  only.max_exact_slots = 0;
+  only.improvement_rounds = 0;
+  only.total_branching_lps = 0;
+  only.axis_exchange = false;
+  for (const int cap : {40, 48}) {
+    only.max_widened_slots = cap;
+    SearchReport report;
+    const milp::SolveResult r = SearchSchedule(milp, *solver, Exact(), only, {}, &report);
+    std::string steps;
+    for (const std::string& step : report.steps) steps += step + "\n";
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << steps;
+    EXPECT_NEAR(r.objective, ref.solve.objective, 1e-9) << steps;
+    EXPECT_NE(steps.find("MILP restricted to 8 candidate slots (26 columns, 229 rows): infeasible, "
+                         "widened"),
+              std::string::npos)
+        << steps;
+    const bool capped =
+        steps.find("the next net has 48 slots (more than 40): not widened further") !=
+        std::string::npos;
+    EXPECT_EQ(capped, cap == 40) << steps;
+    EXPECT_EQ(report.whole_milp, cap == 40) << steps;
+    EXPECT_EQ(steps.find("MILP restricted to 48 candidate slots") != std::string::npos, cap == 48)
+        << steps;
+  }
+}
+
 TEST(SearchOptions, InvalidValuesAreNamed) {
   SearchOptions s;
   std::string error;
@@ -350,6 +389,10 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("candidate_threshold"), std::string::npos) << error;
   EXPECT_NE(error.find("1.5"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.max_widened_slots = -3;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("max_widened_slots must be >= 0, got -3"), std::string::npos) << error;
   s = SearchOptions{};
   s.neighbourhood = -1;
   EXPECT_FALSE(s.IsValid(&error));
