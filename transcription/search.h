@@ -23,7 +23,10 @@
 //     columns instead of tens of thousands), is solved by the solver with a
 //     node limit; its schedule is completed in the full MILP (states
 //     propagated) and verified there. A restriction without a schedule is
-//     widened, until a net frees every slot or exceeds `max_widened_slots`.
+//     widened, until a net frees every slot or exceeds `max_widened_slots`;
+//     after two widenings, every slot of the thrusters the relaxation fires
+//     is tried first (`fired_thrusters_net`: a week that needs a few slots
+//     of one thruster may have to fire them anywhere in the week).
 //  3. When the incumbent is within the requested gap of the bound: done,
 //     without a search over the whole MILP (the usual case on GEO weeks,
 //     where the rounded bound often proves the incumbent optimal).
