@@ -332,23 +332,24 @@ class Search {
   // the first two widenings, the net of every slot of the thrusters the
   // relaxation fires (SearchOptions::fired_thrusters_net).
   void Heuristic() {
-    int previous_slots = -1;
+    Eigen::MatrixXi previous;  // the last widening's net
     for (int widening = 0; widening <= search_.max_widenings && !Stopped(); ++widening) {
       if (widening == kFiredThrustersNetAfter + 1 && search_.fired_thrusters_net &&
-          FiredThrustersNet(widening - 1)) {
+          FiredThrustersNet(previous, widening - 1)) {
         return;
       }
       const Eigen::MatrixXi mask = WideningMask(widening);
+      const int slots = Count(mask);
       // From level 1 on every thruster is free near the candidates, so a net
       // that did not grow already frees every slot: nothing new to try.
-      if (Count(mask) == previous_slots) return;
-      if (widening > 0 && Count(mask) > search_.max_widened_slots) {
-        Step("the next net has " + std::to_string(Count(mask)) + " slots (more than " +
+      if (widening > 0 && slots == Count(previous)) return;
+      if (widening > 0 && slots > search_.max_widened_slots) {
+        Step("the next net has " + std::to_string(slots) + " slots (more than " +
              std::to_string(search_.max_widened_slots) + "): not widened further");
         return;
       }
-      previous_slots = Count(mask);
       if (HeuristicNet(mask, " candidate slots", widening)) return;
+      previous = mask;
     }
   }
 
@@ -376,25 +377,35 @@ class Search {
     return false;
   }
 
-  // Every slot of the thrusters the relaxation fires (their total on-value
-  // at least candidate_threshold; not dormant), when that net has at most
-  // max_widened_slots slots and is not within the widening `level`'s. The
-  // nets widen in time around the relaxation's slots; on a week that needs
-  // a few slots of one thruster, its firings may have to move anywhere in
-  // the week (as for the lowest leaf's MILP of step 4b).
-  bool FiredThrustersNet(int level) {
+  // Every slot of the thrusters the relaxation fires (not dormant) that the
+  // MILP leaves free, when that net has at most max_widened_slots slots and
+  // is not within `previous`, the net of the widening `level`. The nets
+  // widen in time around the relaxation's slots; on a week that needs a few
+  // slots of one thruster, its firings may have to move anywhere in the
+  // week (as for the lowest leaf's MILP of step 4b).
+  bool FiredThrustersNet(const Eigen::MatrixXi& previous, int level) {
+    Eigen::MatrixXi mask = FiredThrusterSlots(relaxation_.x);
     const OperationalEncoding& enc = milp_.encoding();
-    const std::vector<double> totals = ThrusterTotals(enc, relaxation_.x);
-    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
     for (int i = 0; i < enc.num_thrusters; ++i) {
-      if (totals[static_cast<size_t>(i)] < search_.candidate_threshold || Dormant(i)) continue;
       for (int j = 0; j < enc.num_intervals; ++j) {
-        if (lp_.col_upper[enc.on[i][j].index()] >= 0.5) mask(i, j) = 1;
+        if (Dormant(i) || lp_.col_upper[enc.on[i][j].index()] < 0.5) mask(i, j) = 0;
       }
     }
     if (Count(mask) == 0 || Count(mask) > search_.max_widened_slots) return false;
-    if ((mask.array() <= WideningMask(level).array()).all()) return false;
+    if ((mask.array() <= previous.array()).all()) return false;
     return HeuristicNet(mask, " slots of the thrusters the relaxation fires", level);
+  }
+
+  // Every slot of the thrusters a point `x` fires: their total on-value is
+  // at least candidate_threshold.
+  Eigen::MatrixXi FiredThrusterSlots(const Eigen::VectorXd& x) const {
+    const OperationalEncoding& enc = milp_.encoding();
+    const std::vector<double> totals = ThrusterTotals(enc, x);
+    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      if (totals[static_cast<size_t>(i)] >= search_.candidate_threshold) mask.row(i).setOnes();
+    }
+    return mask;
   }
 
   // The candidate slots of widening level w: the relaxation's slots with
@@ -759,12 +770,7 @@ class Search {
   // over the week; its slots and their neighbours (179) hold no 7-slot
   // schedule, all 2016 slots of -T hold the optimum.
   void LeafHeuristic(const TotalBranching& t) {
-    const OperationalEncoding& enc = milp_.encoding();
-    const std::vector<double> totals = ThrusterTotals(enc, t.lowest_leaf_x);
-    Eigen::MatrixXi mask = Eigen::MatrixXi::Zero(enc.num_thrusters, enc.num_intervals);
-    for (int i = 0; i < enc.num_thrusters; ++i) {
-      if (totals[static_cast<size_t>(i)] >= search_.candidate_threshold) mask.row(i).setOnes();
-    }
+    Eigen::MatrixXi mask = FiredThrusterSlots(t.lowest_leaf_x);
     if (Count(mask) > search_.max_exact_slots) {
       mask = CandidateSlots(t.lowest_leaf_x, search_.candidate_threshold, search_.neighbourhood,
                             false);
