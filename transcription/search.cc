@@ -664,6 +664,13 @@ class Search {
     tree.elastic = search_.total_branching_elastic;
     tree.warm = search_.total_branching_warm;
     tree.leaf_pivot_limit = search_.total_branching_leaf_pivot_limit;
+    tree.window_levels = search_.total_branching_window_levels;
+    // Before the windows' proof, step 4c's exchange (as after the tree:
+    // it skips the axes it has solved against the same incumbent).
+    tree.before_windows = [this]() {
+      while (!Done() && !Stopped() && search_.axis_exchange && ExchangeAlongAxes()) ExactRounds();
+      return objective_;
+    };
     const TotalBranching t = BranchOnThrusterTotals(
         milp_, solver_, o, relaxation_.x, bound_, objective_, step_, TreeLpBudget(), tree,
         search_.tree_root_from_relaxation ? relaxation_.row_duals : Eigen::VectorXd());
@@ -798,7 +805,7 @@ class Search {
       milp::SparseRow row;
       double fixed_on = 0.0;  // slots fixed on (removed with their value)
       for (int i : groups[g].thrusters) {
-        for (int j = 0; j < enc.num_intervals; ++j) {
+        for (int j = groups[g].first_interval; j < groups[g].End(enc.num_intervals); ++j) {
           const int column = enc.on[i][j].index();
           const int k = small_column[static_cast<size_t>(column)];
           if (k >= 0) {
@@ -932,6 +939,10 @@ bool SearchOptions::IsValid(std::string* error) const {
   if (total_branching_warm_lps < 0) {
     return fail("total_branching_warm_lps must be >= 0, got " +
                 std::to_string(total_branching_warm_lps));
+  }
+  if (total_branching_window_levels < 0 || total_branching_window_levels > 16) {
+    return fail("total_branching_window_levels must be in [0, 16], got " +
+                std::to_string(total_branching_window_levels));
   }
   if (max_exact_leaf_slots < 0) {
     return fail("max_exact_leaf_slots must be >= 0, got " + std::to_string(max_exact_leaf_slots));

@@ -52,7 +52,11 @@
 //     (the root's by the crossover from step 1's interior point; a leaf
 //     stops at as many pivots as the root took and keeps its parent's
 //     bound: `total_branching_leaf_pivot_limit`), within a
-//     budget of LPs, until the gap closes: a better bound, often the proof
+//     budget of LPs, until the gap closes: a better bound, often the proof;
+//     where the incumbent is one step above the lowest leaf and every total
+//     is whole, on the number of slots in each half, quarter, ... of the
+//     horizon (`total_branching_window_levels`: whether the leaf's whole
+//     slots can fall where its LP spreads them)
 //     (transcription/total_branching.h; each leaf's LP holds its totals
 //     elastically, so it is never infeasible); then step 4 for each open
 //     leaf, lowest first, while reduced-cost fixing with the leaf's LP duals
@@ -233,6 +237,12 @@ struct SearchOptions {
   /// left it at 2.7 %; with the limit, 4.5-5 s each, and the lowest leaf's
   /// MILP found the optimum, proven at 32 s.
   bool total_branching_leaf_pivot_limit = true;
+  /// Levels of windows the tree splits once every thruster's total is whole
+  /// (TreeOptions::window_levels, transcription/total_branching.h: the
+  /// number of slots of a fired thruster in each half, quarter, ... of the
+  /// horizon); 0 is the previous release's tree, kept for comparison in the
+  /// bench.
+  int total_branching_window_levels = 5;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the
   /// incumbent's slots of the others, with the cutoff, axis after axis. Off:

@@ -27,6 +27,17 @@
 // bound at the relaxation's 80 steps, one split of their sum at 77.51 slots
 // raised it to 81).
 //
+// Windows: where the incumbent is one step above the lowest leaf and every
+// total is whole, the tree goes on with the number of slots each fired
+// thruster is on in each half, quarter, ... of the horizon (WindowGroups),
+// an integer in every schedule too. A week that needs a few slots of one
+// thruster (75 deg E, 2031-09-08, data/scenarios/hard/: +T at 3.74 slots in
+// the relaxation) has a leaf +T >= 4 whose LP costs exactly 4 slots, and
+// no whole-horizon total can cut it; its exact MILP over +T's 2016 slots
+// neither found nor refuted a 4-slot schedule in 239 s (of a 400-s solve,
+// one thread). Splitting the
+// windows closed every leaf at 5 slots, the incumbent, in 274 LPs (27 s).
+//
 // The tree is searched best first: the open leaf with the lowest bound is
 // split on its most fractional total. Its two children's LPs are dual
 // simplex solves in one LP session (milp::LpSession; WithGroupTotalColumns:
@@ -48,14 +59,16 @@
 // to call a leaf LP of a GEO week infeasible, seconds to solve its elastic
 // one. The leaves cover every schedule, so the lowest leaf bound is a bound
 // of the MILP. Stops when that bound reaches the incumbent (proof) or is
-// within lp_options' gap of it, after max_lps LPs, on the time limit or
+// within lp_options' gap of it, after max_lps LPs (on the totals; window
+// splits have TreeOptions::max_window_lps more), on the time limit or
 // interrupt of lp_options (the bound of what was solved stays valid), or
-// when the lowest leaf has integral totals.
+// when the lowest leaf has integral totals (and windows, where split).
 // Deterministic for the same input (no wall-clock decision) unless a time
 // limit or an interrupt cuts it.
 #ifndef THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
 #define THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,14 +81,24 @@
 namespace thrustsched::transcription {
 
 /// Thrusters whose number of on slots the tree bounds together (their sum
-/// is an integer in every schedule too).
+/// is an integer in every schedule too), over the whole horizon or over a
+/// window of its slots.
 struct ThrusterGroup {
   std::vector<int> thrusters;  // indices in the ThrusterSet
-  std::string name;            // "+N and -N", or the thruster's name
+  std::string name;            // "+N and -N", the thruster's name, "+T in slots 0-1007"
+  /// The window: slots [first_interval, end_interval); end_interval < 0 is
+  /// the horizon's end.
+  int first_interval = 0;
+  int end_interval = -1;
+  /// 0 for the whole horizon; a window of level l is one of the 2^l equal
+  /// parts of the horizon (WindowGroups). The tree splits a level only once
+  /// every total of the levels above is whole.
+  int level = 0;
 
+  int End(int num_intervals) const { return end_interval < 0 ? num_intervals : end_interval; }
   /// The most slots the group can be on: its total lies in [0, this].
   int MaxTotal(int num_intervals) const {
-    return num_intervals * static_cast<int>(thrusters.size());
+    return (End(num_intervals) - first_interval) * static_cast<int>(thrusters.size());
   }
 };
 
@@ -96,6 +119,24 @@ std::vector<ThrusterGroup> ThrusterAxes(const dynamics::ThrusterSet& thrusters);
 /// thrusters only (the previous release's tree, kept for comparison in the
 /// bench).
 std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups = true);
+
+/// Windows of each thruster the point x fires (its total above a thousandth
+/// of a slot): for each level l = 1..levels, the horizon cut into 2^l equal
+/// windows (the last ones a slot longer when it does not divide). Why: a
+/// week that needs a few slots of one thruster has an LP that spreads them
+/// thin over the days; once the thruster's total is whole (k slots), the
+/// leaf's LP bound is k slots exactly, and whether k whole slots keep the
+/// satellite in its window is a question of where they fall. Bounding the
+/// number of slots in each half, quarter, ... of the week asks it by
+/// bisection, each window's total an integer in every schedule.
+std::vector<ThrusterGroup> WindowGroups(const OperationalEncoding& enc,
+                                        const dynamics::ThrusterSet& thrusters,
+                                        const Eigen::VectorXd& x, int levels);
+
+/// Each group's number of on slots at x (a column vector of milp.lp(),
+/// fractional at a relaxation's point), over its window.
+std::vector<double> GroupTotalsAt(const std::vector<ThrusterGroup>& groups,
+                                  const OperationalEncoding& enc, const Eigen::VectorXd& x);
 
 /// A leaf of the tree whose bound is below the incumbent when it stopped.
 struct OpenLeaf {
@@ -146,6 +187,21 @@ struct TreeOptions {
   /// Off: no limit, the previous release's tree (kept for comparison in the
   /// bench).
   bool leaf_pivot_limit = true;
+  /// Levels of windows (WindowGroups) the tree splits once every thruster's
+  /// total is whole, where the incumbent is one objective step above the
+  /// lowest leaf's bound; 0: whole-horizon totals only (the previous
+  /// release's tree, kept for comparison in the bench).
+  int window_levels = 5;
+  /// LPs of window splits, on top of the call's max_lps for the totals.
+  int max_window_lps = 1000;
+  /// Called once, before the first window split: the caller's last chance
+  /// to find a schedule at the lowest leaf's bound before the tree spends
+  /// its time on a proof; returns the incumbent then (at most the one it
+  /// was given). Windows only prove: on week 33 of data/scenarios/hard/ (an
+  /// incumbent one step above the bound after an unlucky restricted MILP)
+  /// they took the 28 s left, where the exchange along +T and -T
+  /// (search.h, step 4c) finds the optimum in 7 s.
+  std::function<double()> before_windows;
 };
 
 /// As above. `root_x` and `root_bound` are the relaxation's point and its

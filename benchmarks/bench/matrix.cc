@@ -184,8 +184,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (step 2 widened at most twice, without the net "
-        "of the fired thrusters' slots)";
+        "search as the previous release ran it (its tree splits whole-horizon totals only, "
+        "no windows)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

@@ -67,10 +67,10 @@ struct CaseSpec {
   /// The problem-aware search (transcription::SearchSchedule, what `solve`
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
-  /// With `search`: the search as the previous release ran it, step 2
-  /// widened at most twice (SearchOptions::max_widenings 2, no cap on its
-  /// nets) and without the net of every slot of the thrusters the
-  /// relaxation fires (fired_thrusters_net off), for the side-by-side ratio.
+  /// With `search`: the search as the previous release ran it, its tree
+  /// splitting whole-horizon totals only
+  /// (SearchOptions::total_branching_window_levels 0), for the side-by-side
+  /// ratio.
   bool search_previous = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within

@@ -237,14 +237,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): step 2 widened at most
-    // twice, whatever the size of its nets, without the fired thrusters'
-    // net.
-    if (spec.search_previous) {
-      search.max_widenings = 2;
-      search.max_widened_slots = std::numeric_limits<int>::max();
-      search.fired_thrusters_net = false;
-    }
+    // The previous release's search (matrix.h): the tree of step 4b splits
+    // whole-horizon totals only, never windows of them.
+    if (spec.search_previous) search.total_branching_window_levels = 0;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

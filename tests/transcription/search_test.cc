@@ -394,6 +394,12 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("max_widened_slots must be >= 0, got -3"), std::string::npos) << error;
   s = SearchOptions{};
+  s.total_branching_window_levels = 17;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("total_branching_window_levels must be in [0, 16], got 17"),
+            std::string::npos)
+      << error;
+  s = SearchOptions{};
   s.neighbourhood = -1;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("neighbourhood"), std::string::npos) << error;

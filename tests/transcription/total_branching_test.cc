@@ -475,5 +475,108 @@ TEST(WithThrusterTotals, IsTheRelaxationWithTheTotalsBounded) {
   EXPECT_GE(safe, b.objective - 1e-5 * b.objective);
 }
 
+// Windows: HcwDay(6000, 0) needs 36 slots (CBC alone proves it) where its
+// rounded relaxation needs 35. With the optimum as the incumbent, one step
+// above, the tree on whole-day totals stops at 35 with its lowest leaf firing
+// each thruster a whole number of slots; with windows down to one or two
+// slots (7 levels: 128 windows of the 144 slots) it proves 36, every leaf
+// at the incumbent or above, and never passes it. With 5 levels (windows of
+// 4-5 slots) it stops at 35, its lowest leaf whole in every window.
+TEST(BranchOnThrusterTotals, WindowsProveTheOptimumWholeTotalsCannot) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.0);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const double slot = milp.objective_step();
+  const double optimum = CbcOptimum(p, *solver);
+  ASSERT_NEAR(optimum / slot, 36.0, 1e-6);
+  const Root root = Relaxation(milp, *solver);
+  ASSERT_NEAR(root.bound / slot, 35.0, 1e-6);
+  auto tree = [&](int levels, double incumbent) {
+    TreeOptions o;
+    o.window_levels = levels;
+    return BranchOnThrusterTotals(milp, *solver, root.options, root.x, root.bound, incumbent, slot,
+                                  12, o);
+  };
+  const TotalBranching whole = tree(0, optimum);
+  EXPECT_NEAR(whole.bound / slot, 35.0, 1e-6) << whole.detail;
+  EXPECT_NE(whole.detail.find("the lowest leaf fires each thruster a whole number of slots"),
+            std::string::npos)
+      << whole.detail;
+  const TotalBranching fine = tree(7, optimum);
+  EXPECT_NEAR(fine.bound, optimum, 1e-9) << fine.detail;
+  EXPECT_EQ(fine.open_leaves, 0) << fine.detail;
+  EXPECT_NE(fine.detail.find("every leaf at the incumbent or above"), std::string::npos)
+      << fine.detail;
+  EXPECT_NE(fine.detail.find(" in slots "), std::string::npos) << fine.detail;
+  const TotalBranching coarse = tree(5, optimum);
+  EXPECT_NEAR(coarse.bound / slot, 35.0, 1e-6) << coarse.detail;
+  EXPECT_NE(coarse.detail.find("a whole number of slots in each window"), std::string::npos)
+      << coarse.detail;
+  // The caller's hook runs once, before the first window split; a schedule
+  // it finds at the leaf's bound ends the tree there, without a window.
+  int calls = 0;
+  TreeOptions hooked;
+  hooked.window_levels = 7;
+  hooked.before_windows = [&]() {
+    ++calls;
+    return optimum;  // nothing better
+  };
+  const TotalBranching same = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
+                                                     root.bound, optimum, slot, 12, hooked);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(same.lps, fine.lps) << same.detail;
+  EXPECT_NEAR(same.bound, optimum, 1e-9) << same.detail;
+  hooked.before_windows = [&]() {
+    ++calls;
+    return whole.bound;  // a schedule at the lowest leaf's bound
+  };
+  const TotalBranching found = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
+                                                      root.bound, optimum, slot, 12, hooked);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(found.lps, whole.lps) << found.detail;
+  EXPECT_EQ(found.detail.find(" in slots "), std::string::npos) << found.detail;
+  EXPECT_NE(found.detail.find("before the windows, a schedule at"), std::string::npos)
+      << found.detail;
+  EXPECT_EQ(found.open_leaves, 0) << found.detail;
+  // Two steps above the bound: no window is split (the leaves a step below
+  // the incumbent would stay open), the same tree as without windows.
+  const TotalBranching wide = tree(7, optimum + slot);
+  EXPECT_EQ(wide.detail.find(" in slots "), std::string::npos) << wide.detail;
+  EXPECT_EQ(wide.bound, tree(0, optimum + slot).bound) << wide.detail;
+}
+
+// The windows of each fired thruster: level l cuts the horizon into 2^l
+// windows that tile it; their totals at a point add up to the thruster's.
+TEST(WindowGroups, TileTheHorizonOfEachFiredThrusterAtEveryLevel) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleMilp milp(HcwDay(6000.0, 0.05), BuildOptions{});
+  const OperationalEncoding& enc = milp.encoding();
+  const Root root = Relaxation(milp, *solver);
+  const std::vector<double> totals = ThrusterTotals(enc, root.x);
+  const std::vector<ThrusterGroup> windows = WindowGroups(enc, milp.problem().thrusters, root.x, 3);
+  const std::vector<double> y = GroupTotalsAt(windows, enc, root.x);
+  int fired = 0;
+  for (int i = 0; i < enc.num_thrusters; ++i) {
+    if (totals[static_cast<size_t>(i)] <= 1e-3) continue;
+    ++fired;
+    for (int level = 1; level <= 3; ++level) {
+      int next = 0;  // the first slot the next window must start at
+      double sum = 0.0;
+      for (size_t g = 0; g < windows.size(); ++g) {
+        if (windows[g].thrusters != std::vector<int>{i} || windows[g].level != level) continue;
+        EXPECT_EQ(windows[g].first_interval, next) << windows[g].name;
+        next = windows[g].End(enc.num_intervals);
+        EXPECT_EQ(windows[g].MaxTotal(enc.num_intervals),
+                  windows[g].end_interval - windows[g].first_interval);
+        sum += y[g];
+      }
+      EXPECT_EQ(next, enc.num_intervals) << "level " << level;
+      EXPECT_NEAR(sum, totals[static_cast<size_t>(i)], 1e-9) << "level " << level;
+    }
+  }
+  EXPECT_GT(fired, 0);
+  EXPECT_EQ(windows.size(), static_cast<size_t>(fired * (2 + 4 + 8)));
+}
+
 }  // namespace
 }  // namespace thrustsched::transcription
