@@ -53,10 +53,11 @@
 //     stops at as many pivots as the root took and keeps its parent's
 //     bound: `total_branching_leaf_pivot_limit`), within a
 //     budget of LPs, until the gap closes: a better bound, often the proof;
-//     where the incumbent is one step above the lowest leaf and every total
-//     is whole, on the number of slots in each half, quarter, ... of the
-//     horizon (`total_branching_window_levels`: whether the leaf's whole
-//     slots can fall where its LP spreads them)
+//     optionally (`total_branching_window_levels`, off by default), where
+//     the incumbent is one step above the lowest leaf and every total is
+//     whole, on the number of slots in each half, quarter, ... of the
+//     horizon (whether the leaf's whole slots can fall where its LP spreads
+//     them)
 //     (transcription/total_branching.h; each leaf's LP holds its totals
 //     elastically, so it is never infeasible); then step 4 for each open
 //     leaf, lowest first, while reduced-cost fixing with the leaf's LP duals
@@ -240,9 +241,15 @@ struct SearchOptions {
   /// Levels of windows the tree splits once every thruster's total is whole
   /// (TreeOptions::window_levels, transcription/total_branching.h: the
   /// number of slots of a fired thruster in each half, quarter, ... of the
-  /// horizon); 0 is the previous release's tree, kept for comparison in the
-  /// bench.
-  int total_branching_window_levels = 5;
+  /// horizon). Off (0) by default, the previous release's tree: with 5, the
+  /// 75 deg E week of data/scenarios/hard/ is proven optimal in 110 s of a
+  /// 120-s solve (20 % from its bound without), but the six-thruster year
+  /// (data/scenarios/year/year_ideal6_fixed.json) ended week 41 at 6.67 %
+  /// (one step above its bound, stopped by a limit; every week within 2 %
+  /// without) and the four-thruster year week 42 at 0.83 % (proven optimal
+  /// without). The windows take the time the leaves' MILPs use to find a
+  /// schedule at the bound.
+  int total_branching_window_levels = 0;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the
   /// incumbent's slots of the others, with the cutoff, axis after axis. Off:
