@@ -70,11 +70,7 @@ class Search {
     // proved week 10 optimal (10.5 % without it).
     bool improved = !Done() && !Stopped() && has_incumbent() && Improve(1);
     if (!Done() && !Stopped() && has_incumbent()) BranchOnTotals();
-    // After each schedule of the exchange, step 4's proof.
-    while (!Done() && !Stopped() && has_incumbent() && search_.axis_exchange &&
-           ExchangeAlongAxes()) {
-      ExactRounds();
-    }
+    if (has_incumbent()) ExchangeWhileItImproves();
     if (!Done() && !Stopped() && has_incumbent() && Improve(search_.improvement_rounds)) {
       improved = true;
     }
@@ -486,6 +482,11 @@ class Search {
   // at the first improvement (for step 4 to try its proof); called again,
   // it solves the axes not yet solved against the new incumbent (block
   // coordinate descent), false once every axis has been. Incumbents only.
+  // Step 4c, after each schedule of the exchange step 4's proof.
+  void ExchangeWhileItImproves() {
+    while (!Done() && !Stopped() && search_.axis_exchange && ExchangeAlongAxes()) ExactRounds();
+  }
+
   bool ExchangeAlongAxes() {
     if (!exchange_started_) {
       exchange_axes_ = ExchangeAxes();
@@ -668,7 +669,7 @@ class Search {
     // Before the windows' proof, step 4c's exchange (as after the tree:
     // it skips the axes it has solved against the same incumbent).
     tree.before_windows = [this]() {
-      while (!Done() && !Stopped() && search_.axis_exchange && ExchangeAlongAxes()) ExactRounds();
+      ExchangeWhileItImproves();
       return objective_;
     };
     const TotalBranching t = BranchOnThrusterTotals(
