@@ -52,12 +52,7 @@
 //     (the root's by the crossover from step 1's interior point; a leaf
 //     stops at as many pivots as the root took and keeps its parent's
 //     bound: `total_branching_leaf_pivot_limit`), within a
-//     budget of LPs, until the gap closes: a better bound, often the proof;
-//     optionally (`total_branching_window_levels`, off by default), where
-//     the incumbent is one step above the lowest leaf and every total is
-//     whole, on the number of slots in each half, quarter, ... of the
-//     horizon (whether the leaf's whole slots can fall where its LP spreads
-//     them)
+//     budget of LPs, until the gap closes: a better bound, often the proof
 //     (transcription/total_branching.h; each leaf's LP holds its totals
 //     elastically, so it is never infeasible); then step 4 for each open
 //     leaf, lowest first, while reduced-cost fixing with the leaf's LP duals
@@ -74,8 +69,15 @@
 //     MILP's blocks (the orbit plane and its normal); an axis' firings can
 //     move anywhere in the week, out of every net around the relaxation's
 //     slots (each MILP with up to half the time left: after the tree, the
-//     bound's work left is step 4's proof); then the wider nets, then step 4
-//     again if the incumbent improved.
+//     bound's work left is step 4's proof);
+//  4d. when the incumbent is then one step above the bound: the tree of 4b
+//     again, on to the number of slots of each fired thruster in each half,
+//     quarter, ... of the horizon once every total is whole, the thruster
+//     with the fewest slots first (`total_branching_window_levels`): whether
+//     the lowest leaf's whole slots can fall where its LP spreads them. A
+//     proof only, so after the steps that find schedules; then 4b's leaves'
+//     MILPs on its leaves; then the wider nets, and step 4 again if the
+//     incumbent improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -238,18 +240,19 @@ struct SearchOptions {
   /// left it at 2.7 %; with the limit, 4.5-5 s each, and the lowest leaf's
   /// MILP found the optimum, proven at 32 s.
   bool total_branching_leaf_pivot_limit = true;
-  /// Levels of windows the tree splits once every thruster's total is whole
-  /// (TreeOptions::window_levels, transcription/total_branching.h: the
-  /// number of slots of a fired thruster in each half, quarter, ... of the
-  /// horizon). Off (0) by default, the previous release's tree: with 5, the
-  /// 75 deg E week of data/scenarios/hard/ is proven optimal in 110 s of a
-  /// 120-s solve (20 % from its bound without), but the six-thruster year
-  /// (data/scenarios/year/year_ideal6_fixed.json) ended week 41 at 6.67 %
-  /// (one step above its bound, stopped by a limit; every week within 2 %
-  /// without) and the four-thruster year week 42 at 0.83 % (proven optimal
-  /// without). The windows take the time the leaves' MILPs use to find a
-  /// schedule at the bound.
-  int total_branching_window_levels = 0;
+  /// Step 4d: levels of windows the tree splits once every thruster's total
+  /// is whole (TreeOptions::window_levels, transcription/total_branching.h:
+  /// the number of slots of a fired thruster in each half, quarter, ... of
+  /// the horizon), run where the incumbent is one step above the bound
+  /// after step 4c. 0: the previous release's search (kept for comparison
+  /// in the bench). year_ideal6_fixed_windowed_c41 of data/scenarios/hard/
+  /// (six thrusters; 6.7 % from its bound without it, in 60 s and with the
+  /// year's 900 s) is proven optimal in 72 s with the year's settings (the
+  /// windows of -T, 23 LPs, 25 s). The station-point weeks 75 deg E and
+  /// 40 deg E stay one slot above (20 %, 16.7 %) even in 120 s: step 4b's
+  /// exact MILP of their lowest leaf takes the time left first. The three
+  /// years of data/scenarios/year/ give the same weeks with and without it.
+  int total_branching_window_levels = 5;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the
   /// incumbent's slots of the others, with the cutoff, axis after axis. Off:

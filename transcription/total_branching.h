@@ -120,6 +120,22 @@ std::vector<ThrusterGroup> ThrusterAxes(const dynamics::ThrusterSet& thrusters);
 /// bench).
 std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups = true);
 
+/// The group the tree splits a leaf on, given each group's total y[g] at
+/// the leaf's LP point; -1 if none is fractional. Whole-horizon groups
+/// (level 0): the one whose total is nearest to half a slot from an
+/// integer, a thruster of an axis group only once that group's total is
+/// whole. With `windows`, the windows (level >= 1) instead: those of the
+/// thruster with the fewest slots among the thrusters with a fractional
+/// window, the coarsest level with a fractional total, nearest to half a
+/// slot there. A thruster's few whole slots are the hardest to place: on
+/// cycle 41 of a six-thruster year (2034-10-08; the lowest leaf fires 11
+/// slots of +N and -N and 3 of -T, the incumbent a step above), the windows
+/// of every fired thruster split +N and -N's slots in 1000 LPs (695 s) that
+/// all kept the leaf's bound; those of -T first proved the incumbent
+/// optimal in 23 LPs.
+int SplitGroup(const std::vector<ThrusterGroup>& groups, const std::vector<double>& y,
+               bool windows);
+
 /// Windows of each thruster the point x fires (its total above a thousandth
 /// of a slot): for each level l = 1..levels, the horizon cut into 2^l equal
 /// windows (the last ones a slot longer when it does not divide). Why: a
@@ -183,25 +199,20 @@ struct TreeOptions {
   /// solves from their parent's basis.
   bool warm = true;
   /// Warm tree: each leaf's dual simplex stops after as many pivots as the
-  /// root's basis took (at least 1000), the leaf keeping its parent's bound.
+  /// root's basis took (at least 1000), the leaf keeping its parent's bound
+  /// (where windows may be split, the lowest such leaf is solved again
+  /// without the limit, once, rather than end the tree).
   /// Off: no limit, the previous release's tree (kept for comparison in the
   /// bench).
   bool leaf_pivot_limit = true;
   /// Levels of windows (WindowGroups) the tree splits once every thruster's
   /// total is whole, where the incumbent is one objective step above the
-  /// lowest leaf's bound; 0: whole-horizon totals only (the previous
-  /// release's tree, kept for comparison in the bench).
+  /// lowest leaf's bound, those of the thruster with the fewest slots first
+  /// (SplitGroup); 0: whole-horizon totals only (the previous release's
+  /// tree, kept for comparison in the bench).
   int window_levels = 5;
   /// LPs of window splits, on top of the call's max_lps for the totals.
   int max_window_lps = 1000;
-  /// Called once, before the first window split: the caller's last chance
-  /// to find a schedule at the lowest leaf's bound before the tree spends
-  /// its time on a proof; returns the incumbent then (at most the one it
-  /// was given). Windows only prove: on week 33 of data/scenarios/hard/ (an
-  /// incumbent one step above the bound after an unlucky restricted MILP)
-  /// they took the 28 s left, where the exchange along +T and -T
-  /// (search.h, step 4c) finds the optimum in 7 s.
-  std::function<double()> before_windows;
 };
 
 /// As above. `root_x` and `root_bound` are the relaxation's point and its

@@ -237,10 +237,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // This release's search measured with the tree's windows (5 levels,
-    // off by default in `solve`); the previous release's (matrix.h) splits
-    // whole-horizon totals only, never windows of them.
-    search.total_branching_window_levels = spec.search_previous ? 0 : 5;
+    // The previous release's search (matrix.h): no step 4d, the tree
+    // splits whole-horizon totals only, never windows of them.
+    if (spec.search_previous) search.total_branching_window_levels = 0;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

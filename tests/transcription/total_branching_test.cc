@@ -15,6 +15,7 @@
 #include "milp/cbc_solver.h"
 #include "milp/lp_bound.h"
 #include "tests/transcription/thesis_cases.h"
+#include "transcription/search.h"
 #include "transcription/solve.h"
 #include "transcription/total_branching.h"
 
@@ -512,37 +513,53 @@ TEST(BranchOnThrusterTotals, WindowsProveTheOptimumWholeTotalsCannot) {
   EXPECT_NEAR(coarse.bound / slot, 35.0, 1e-6) << coarse.detail;
   EXPECT_NE(coarse.detail.find("a whole number of slots in each window"), std::string::npos)
       << coarse.detail;
-  // The caller's hook runs once, before the first window split; a schedule
-  // it finds at the leaf's bound ends the tree there, without a window.
-  int calls = 0;
-  TreeOptions hooked;
-  hooked.window_levels = 7;
-  hooked.before_windows = [&]() {
-    ++calls;
-    return optimum;  // nothing better
-  };
-  const TotalBranching same = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
-                                                     root.bound, optimum, slot, 12, hooked);
-  EXPECT_EQ(calls, 1);
-  EXPECT_EQ(same.lps, fine.lps) << same.detail;
-  EXPECT_NEAR(same.bound, optimum, 1e-9) << same.detail;
-  hooked.before_windows = [&]() {
-    ++calls;
-    return whole.bound;  // a schedule at the lowest leaf's bound
-  };
-  const TotalBranching found = BranchOnThrusterTotals(milp, *solver, root.options, root.x,
-                                                      root.bound, optimum, slot, 12, hooked);
-  EXPECT_EQ(calls, 2);
-  EXPECT_EQ(found.lps, whole.lps) << found.detail;
-  EXPECT_EQ(found.detail.find(" in slots "), std::string::npos) << found.detail;
-  EXPECT_NE(found.detail.find("before the windows, a schedule at"), std::string::npos)
-      << found.detail;
-  EXPECT_EQ(found.open_leaves, 0) << found.detail;
   // Two steps above the bound: no window is split (the leaves a step below
   // the incumbent would stay open), the same tree as without windows.
   const TotalBranching wide = tree(7, optimum + slot);
   EXPECT_EQ(wide.detail.find(" in slots "), std::string::npos) << wide.detail;
   EXPECT_EQ(wide.bound, tree(0, optimum + slot).bound) << wide.detail;
+}
+
+// Step 4d of the search, on the day above: given CBC alone's optimum (36
+// slots) as its start, with the steps that could prove it otherwise off
+// (step 4's exact MILPs, the wider nets), the search ends one step above
+// the tree's bound (35) after the exchange. With 7 levels of windows step
+// 4d proves the start optimal, and CBC on the whole MILP never runs; with
+// 5 (windows of 4-5 slots) or none the proof is left to CBC on the whole
+// MILP.
+TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.0);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const double slot = milp.objective_step();
+  SolveScheduleOptions cbc;
+  cbc.milp.relative_gap = 1e-9;
+  cbc.milp.absolute_gap = 1e-9;
+  cbc.milp.threads = 1;
+  cbc.milp.max_nodes = 200000;
+  cbc.search.enabled = false;
+  const ScheduleResult ref = SolveSchedule(p, *solver, cbc);
+  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal) << ref.solve.detail;
+  ASSERT_NEAR(ref.solve.objective / slot, 36.0, 1e-6);
+  for (const int levels : {7, 5, 0}) {
+    SearchOptions search;
+    search.max_exact_slots = 0;
+    search.max_exact_leaf_slots = 0;
+    search.improvement_rounds = 0;
+    search.total_branching_window_levels = levels;
+    SearchReport report;
+    const milp::SolveResult r =
+        SearchSchedule(milp, *solver, cbc.milp, search, {ref.solve.x}, &report);
+    std::string steps;
+    for (const std::string& step : report.steps) steps += step + "\n";
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << steps;
+    EXPECT_NEAR(r.objective / slot, 36.0, 1e-6) << steps;
+    EXPECT_NEAR(r.best_bound / slot, 36.0, 1e-6) << steps;
+    const bool windows = steps.find(" in slots ") != std::string::npos;
+    const bool whole_milp = steps.find("whole MILP (cbc)") != std::string::npos;
+    EXPECT_EQ(windows, levels > 0) << levels << "\n" << steps;
+    EXPECT_EQ(whole_milp, levels != 7) << levels << "\n" << steps;
+  }
 }
 
 // The windows of each fired thruster: level l cuts the horizon into 2^l
@@ -576,6 +593,52 @@ TEST(WindowGroups, TileTheHorizonOfEachFiredThrusterAtEveryLevel) {
   }
   EXPECT_GT(fired, 0);
   EXPECT_EQ(windows.size(), static_cast<size_t>(fired * (2 + 4 + 8)));
+}
+
+// Which group a leaf is split on. Whole-horizon totals: the most fractional,
+// an axis group before its members. Windows: those of the thruster with the
+// fewest slots (-T's 3 below, against +N's 11 whose windows are more
+// fractional), its coarsest fractional level; none once all are whole.
+TEST(SplitGroup, AxisGroupsFirstThenTheWindowsOfTheThrusterWithTheFewestSlots) {
+  auto group = [](std::vector<int> thrusters, int first, int end, int level) {
+    ThrusterGroup g;
+    g.thrusters = std::move(thrusters);
+    g.first_interval = first;
+    g.end_interval = end;
+    g.level = level;
+    return g;
+  };
+  const int n_plus = 0, t_minus = 1, n_minus = 2;
+  const std::vector<ThrusterGroup> groups = {
+      group({n_plus, n_minus}, 0, -1, 0),  // 0: +N and -N
+      group({n_plus}, 0, -1, 0),           // 1
+      group({t_minus}, 0, -1, 0),          // 2
+      group({n_minus}, 0, -1, 0),          // 3
+      group({n_plus}, 0, 50, 1),           // 4: +N, first half
+      group({n_plus}, 50, -1, 1),          // 5
+      group({t_minus}, 0, 50, 1),          // 6: -T, first half
+      group({t_minus}, 50, -1, 1),         // 7
+      group({t_minus}, 0, 25, 2),          // 8: -T, first quarter
+      group({t_minus}, 25, 50, 2),         // 9
+  };
+  // +N and -N fractional: the pair, not +N (more fractional) alone.
+  EXPECT_EQ(SplitGroup(groups, {10.7, 5.5, 3.0, 5.2, 2.5, 3.0, 1.0, 2.0, 0.5, 0.5}, false), 0);
+  // The pair whole: the most fractional thruster (+N and -N equally here,
+  // the first), then -T.
+  EXPECT_EQ(SplitGroup(groups, {11.0, 5.6, 3.0, 5.4, 2.5, 3.1, 1.0, 2.0, 0.5, 0.5}, false), 1);
+  EXPECT_EQ(SplitGroup(groups, {11.0, 6.0, 2.6, 5.0, 2.5, 3.5, 1.0, 1.6, 0.5, 0.5}, false), 2);
+  // Every total whole: windows of -T (3 slots), its coarsest fractional
+  // level, although +N's halves are nearer to half a slot.
+  const std::vector<double> whole = {11.0, 6.0, 3.0, 5.0, 2.5, 3.5, 1.2, 1.8, 0.6, 0.6};
+  EXPECT_EQ(SplitGroup(groups, whole, false), -1);
+  EXPECT_EQ(SplitGroup(groups, whole, true), 6);
+  // -T whole in its halves: a quarter of it (0.3 and 0.7 slots, equally
+  // fractional), still before +N.
+  const int quarter = SplitGroup(groups, {11.0, 6.0, 3.0, 5.0, 2.5, 3.5, 1.0, 2.0, 0.3, 0.7}, true);
+  EXPECT_TRUE(quarter == 8 || quarter == 9) << quarter;
+  // -T whole in every window: +N's.
+  EXPECT_EQ(SplitGroup(groups, {11.0, 6.0, 3.0, 5.0, 2.5, 3.5, 1.0, 2.0, 0.0, 1.0}, true), 4);
+  EXPECT_EQ(SplitGroup(groups, {11.0, 6.0, 3.0, 5.0, 2.0, 4.0, 1.0, 2.0, 0.0, 1.0}, true), -1);
 }
 
 }  // namespace
