@@ -36,14 +36,19 @@ ScheduleProblem HcwDay(double x0_m, double vy0_m_s, double vz0_m_s = 0.0) {
   return p;
 }
 
-double CbcOptimum(const ScheduleProblem& p, const milp::Solver& solver) {
+// CBC alone on the whole MILP, to a proven optimum.
+SolveScheduleOptions CbcAlone() {
   SolveScheduleOptions o;
   o.milp.relative_gap = 1e-9;
   o.milp.absolute_gap = 1e-9;
   o.milp.threads = 1;
   o.milp.max_nodes = 200000;
   o.search.enabled = false;
-  const ScheduleResult r = SolveSchedule(p, solver, o);
+  return o;
+}
+
+double CbcOptimum(const ScheduleProblem& p, const milp::Solver& solver) {
+  const ScheduleResult r = SolveSchedule(p, solver, CbcAlone());
   EXPECT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
   return r.solve.objective;
 }
@@ -532,12 +537,7 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
   const ScheduleProblem p = HcwDay(6000.0, 0.0);
   const ScheduleMilp milp(p, BuildOptions{});
   const double slot = milp.objective_step();
-  SolveScheduleOptions cbc;
-  cbc.milp.relative_gap = 1e-9;
-  cbc.milp.absolute_gap = 1e-9;
-  cbc.milp.threads = 1;
-  cbc.milp.max_nodes = 200000;
-  cbc.search.enabled = false;
+  const SolveScheduleOptions cbc = CbcAlone();
   const ScheduleResult ref = SolveSchedule(p, *solver, cbc);
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal) << ref.solve.detail;
   ASSERT_NEAR(ref.solve.objective / slot, 36.0, 1e-6);
