@@ -696,7 +696,7 @@ class Search {
   }
 
   bool OneStepAboveBound() const {
-    return has_incumbent() && step_ > 0.0 && objective_ - bound_ <= step_ * (1.0 + 1e-6);
+    return has_incumbent() && OneStepAbove(objective_, bound_, step_);
   }
 
   // The open leaves, lowest first, each solved exactly while reduced-cost

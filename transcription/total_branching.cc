@@ -454,8 +454,7 @@ class Tree {
   // and 2 steps above the bound) window splits took 13 and 38 s, and week 10
   // then ended at 10.5 % instead of proven optimal.
   bool WindowsAllowed(double bound) const {
-    if (window_levels_ <= 0 || !std::isfinite(incumbent_) || step_ <= 0.0) return false;
-    return incumbent_ - bound <= step_ * (1.0 + 1e-6);
+    return window_levels_ > 0 && OneStepAbove(incumbent_, bound, step_);
   }
 
   bool Below(double bound) const {

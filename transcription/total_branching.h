@@ -68,7 +68,7 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
 #define THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
 
-#include <functional>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -232,6 +232,14 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
                                       double incumbent, double step, int max_lps,
                                       const TreeOptions& tree = {},
                                       const Eigen::VectorXd& root_duals = Eigen::VectorXd());
+
+/// Whether every schedule better than `incumbent` costs exactly `bound`:
+/// the incumbent at most one objective step above it (and a step known).
+/// Where the tree splits windows, and where the search runs it again with
+/// them (search.h, step 4d).
+inline bool OneStepAbove(double incumbent, double bound, double step) {
+  return std::isfinite(incumbent) && step > 0.0 && incumbent - bound <= step * (1.0 + 1e-6);
+}
 
 /// Whether bounds [lower, upper] on a group's total cut anything: a total
 /// lies in [0, group.MaxTotal(num_intervals)] anyway.
