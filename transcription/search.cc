@@ -69,9 +69,9 @@ class Search {
     // at 4.55 % and 3.57 % (proven optimal and 1.79 % without it), while it
     // proved week 10 optimal (10.5 % without it).
     bool improved = !Done() && !Stopped() && has_incumbent() && Improve(1);
-    if (!Done() && !Stopped() && has_incumbent()) BranchOnTotals(0);
+    if (!Done() && !Stopped() && has_incumbent()) BranchOnTotals();
     if (has_incumbent()) ExchangeWhileItImproves();
-    if (!Done() && !Stopped() && OneStepAboveBound()) BranchOnWindows();
+    if (!Done() && !Stopped() && OneStepAboveBound()) BranchOnWindows(true);
     if (!Done() && !Stopped() && has_incumbent() && Improve(search_.improvement_rounds)) {
       improved = true;
     }
@@ -653,11 +653,33 @@ class Search {
 
   // ------------------------------------- 4b. branching on thruster totals
 
-  // A better bound from a small tree over each thruster's number of on slots
-  // (transcription/total_branching.h), with `window_levels` levels of
-  // windows; bounds only.
-  void BranchOnTotals(int window_levels) {
-    if (search_.total_branching_lps < 2 || !relaxation_.x.size()) return;
+  // Step 4b: a better bound from a small tree over each thruster's number
+  // of on slots (transcription/total_branching.h), then its leaves' MILPs.
+  // When the tree leaves the incumbent one step above the bound, step 4d's
+  // windows come between the two: at one step they either prove the
+  // incumbent optimal or change nothing, and the leaves' MILPs, which find
+  // the schedules at the bound where there are some, still follow. Before
+  // the windows, the MILP over the lowest leaf's LP slots: a look for a
+  // schedule at the bound that costs a fraction of a second. Week 39 of
+  // the four-thruster year: it finds the optimum in 0.24 s, where the
+  // windows first took 54 LPs and 15 s without closing the leaves.
+  void BranchOnTotals() {
+    TotalBranching t;
+    if (!Tree(0, &t)) return;
+    if (search_.windows_before_leaves && search_.total_branching_window_levels > 0 && !Done() &&
+        !Stopped() && OneStepAboveBound()) {
+      if (t.lowest_leaf_x.size() > 0) LeafCandidates(t);
+      if (!Done() && !Stopped() && OneStepAboveBound()) BranchOnWindows(false);
+      CloseOrSearchLeaves(t, /*candidates_tried=*/t.lowest_leaf_x.size() > 0);
+      return;
+    }
+    CloseOrSearchLeaves(t);
+  }
+
+  // The tree with `window_levels` levels of windows: raises the bound;
+  // false when the tree is off.
+  bool Tree(int window_levels, TotalBranching* t) {
+    if (search_.total_branching_lps < 2 || !relaxation_.x.size()) return false;
     tree_ran_ = true;
     milp::SolveOptions o = SubOptions(true);
     o.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
@@ -668,31 +690,42 @@ class Search {
     tree.warm = search_.total_branching_warm;
     tree.leaf_pivot_limit = search_.total_branching_leaf_pivot_limit;
     tree.window_levels = window_levels;
-    const TotalBranching t = BranchOnThrusterTotals(
+    *t = BranchOnThrusterTotals(
         milp_, solver_, o, relaxation_.x, bound_, objective_, step_, TreeLpBudget(), tree,
         search_.tree_root_from_relaxation ? relaxation_.row_duals : Eigen::VectorXd());
-    RaiseBound(t.bound);
-    Step((window_levels > 0 ? "the tree again, with windows: " : "") + t.detail + " (" +
+    RaiseBound(t->bound);
+    Step((window_levels > 0 ? "the tree again, with windows: " : "") + t->detail + " (" +
          FormatG(Elapsed() - t0, 3) + " s)");
     Report(milp::SolvePhase::kSearch, false);
-    const bool lowest_solved = !Done() && !Stopped() && CloseLeaves(t);
-    if (!Done() && !Stopped() && t.lowest_leaf_x.size() > 0 && !lowest_solved) LeafHeuristic(t);
+    return true;
   }
 
-  // Step 4d: the tree again, now with windows, once the incumbent is one
-  // step above the bound. After the exchange, not inside the first tree:
-  // the windows only prove, and the leaves' MILPs and the exchange before
-  // them are what finds a schedule at the bound. With the windows inside
-  // the first tree (before the leaves' MILPs, the exchange run just before
-  // the first window), the 75 deg E week of data/scenarios/hard/ was proven
-  // in 110 s of 120, but the four-thruster year's week 42 ended a step
-  // above the optimum that the lowest leaf's MILP finds there; and the
-  // first tree never splits a window where the exchange is what brings the
-  // incumbent to one step (year_ideal6_fixed_windowed_c41 there: 17 steps
-  // after the tree, 15 after the exchange, proven by the windows).
-  void BranchOnWindows() {
-    if (search_.total_branching_window_levels > 0)
-      BranchOnTotals(search_.total_branching_window_levels);
+  // The open leaves' exact MILPs (CloseLeaves), else the lowest leaf's
+  // restricted MILP (LeafHeuristic).
+  void CloseOrSearchLeaves(const TotalBranching& t, bool candidates_tried = false) {
+    const bool lowest_solved = !Done() && !Stopped() && CloseLeaves(t);
+    if (!Done() && !Stopped() && t.lowest_leaf_x.size() > 0 && !lowest_solved)
+      LeafHeuristic(t, candidates_tried);
+  }
+
+  // Step 4d: the tree again, now with windows, when the incumbent is one
+  // step above the bound: after step 4b's tree (before its leaves' MILPs)
+  // and again after the exchange if that lowered the incumbent to one step
+  // (then with its own leaves' MILPs). Not inside the first tree's
+  // splitting: there the windowed leaves replace the first tree's, and the
+  // four-thruster year's week 42 ended a step above the optimum that the
+  // lowest leaf's MILP of the first tree finds (f701f9a); and the first
+  // tree alone never splits a window where the exchange is what brings the
+  // incumbent to one step (year_ideal6_fixed_windowed_c41: 17 steps after
+  // the tree, 15 after the exchange, proven by the windows). Measured on
+  // the 75 deg E week of data/scenarios/hard/ (one step, +T alone): 274
+  // window LPs in 23 s prove it, where the leaf's MILP and the exchange
+  // before them ran 61 s without a schedule.
+  void BranchOnWindows(bool with_leaves) {
+    if (search_.total_branching_window_levels <= 0 || !(objective_ < windows_at_)) return;
+    windows_at_ = objective_;
+    TotalBranching t;
+    if (Tree(search_.total_branching_window_levels, &t) && with_leaves) CloseOrSearchLeaves(t);
   }
 
   bool OneStepAboveBound() const {
@@ -794,13 +827,30 @@ class Search {
   // data/scenarios/hard/: the leaf fires -T alone, for 7 slots, spread thin
   // over the week; its slots and their neighbours (179) hold no 7-slot
   // schedule, all 2016 slots of -T hold the optimum.
-  void LeafHeuristic(const TotalBranching& t) {
+  // `candidates_tried`: LeafCandidates ran, not worth solving again.
+  void LeafHeuristic(const TotalBranching& t, bool candidates_tried) {
     Eigen::MatrixXi mask = FiredThrusterSlots(t.lowest_leaf_x);
     if (Count(mask) > search_.max_exact_slots) {
-      mask = CandidateSlots(t.lowest_leaf_x, search_.candidate_threshold, search_.neighbourhood,
-                            false);
+      if (candidates_tried) return;
+      mask = LeafCandidateSlots(t);
     }
-    if (Count(mask) > search_.max_exact_slots) return;
+    if (Count(mask) <= search_.max_exact_slots) LeafRestricted(t, mask);
+  }
+
+  // The lowest leaf's MILP restricted to its LP's candidate slots.
+  void LeafCandidates(const TotalBranching& t) {
+    const Eigen::MatrixXi mask = LeafCandidateSlots(t);
+    if (Count(mask) <= search_.max_exact_slots) LeafRestricted(t, mask);
+  }
+
+  Eigen::MatrixXi LeafCandidateSlots(const TotalBranching& t) const {
+    return CandidateSlots(t.lowest_leaf_x, search_.candidate_threshold, search_.neighbourhood,
+                          false);
+  }
+
+  // Incumbents only: the MILP with the lowest leaf's bounds on the totals,
+  // restricted to `mask`, with the cutoff.
+  void LeafRestricted(const TotalBranching& t, const Eigen::MatrixXi& mask) {
     ImproveWithin(mask, "MILP restricted to the lowest leaf's ",
                   "the lowest leaf's restricted MILP", [&](const Restriction& r) {
                     return TotalRows(r, t.groups, t.lowest_leaf_lower, t.lowest_leaf_upper);
@@ -915,6 +965,7 @@ class Search {
   int improvement_level_ = -1;                // next widening level of step 4a (-1: not started)
   Eigen::MatrixXi last_improvement_mask_;     // its last net, not solved twice
   bool tree_ran_ = false;                     // step 4b started (exact_time_share)
+  double windows_at_ = kInf;                  // incumbent when step 4d last ran
   bool exchange_started_ = false;             // step 4c's axes chosen
   std::vector<ThrusterGroup> exchange_axes_;  // those axes (ExchangeAxes)
   std::vector<double> exchanged_at_;          // incumbent of each one's last exchange

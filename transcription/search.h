@@ -70,14 +70,18 @@
 //     move anywhere in the week, out of every net around the relaxation's
 //     slots (each MILP with up to half the time left: after the tree, the
 //     bound's work left is step 4's proof);
-//  4d. when the incumbent is then one step above the bound: the tree of 4b
+//  4d. when the incumbent is one step above the bound: the tree of 4b
 //     again, on to the number of slots of each fired thruster in each half,
 //     quarter, ... of the horizon once every total is whole, the thruster
 //     with the fewest slots first (`total_branching_window_levels`): whether
 //     the lowest leaf's whole slots can fall where its LP spreads them. A
-//     proof only, so after the steps that find schedules; then 4b's leaves'
-//     MILPs on its leaves; then the wider nets, and step 4 again if the
-//     incumbent improved.
+//     proof only: at one step it proves the incumbent optimal or changes
+//     nothing. Run between 4b's tree and its leaves' MILPs (these still
+//     follow: they find the schedules at the bound where there are some;
+//     `windows_before_leaves`; first the cheap MILP over the lowest leaf's
+//     LP slots), and after 4c if the exchange brought the
+//     incumbent to one step (then with its own leaves' MILPs); then the
+//     wider nets, and step 4 again if the incumbent improved.
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
@@ -244,15 +248,22 @@ struct SearchOptions {
   /// is whole (TreeOptions::window_levels, transcription/total_branching.h:
   /// the number of slots of a fired thruster in each half, quarter, ... of
   /// the horizon), run where the incumbent is one step above the bound
-  /// after step 4c. 0: the previous release's search (kept for comparison
-  /// in the bench). year_ideal6_fixed_windowed_c41 of data/scenarios/hard/
-  /// (six thrusters; 6.7 % from its bound without it, in 60 s and with the
-  /// year's 900 s) is proven optimal in 72 s with the year's settings (the
-  /// windows of -T, 23 LPs, 25 s). The station-point weeks 75 deg E and
-  /// 40 deg E stay one slot above (20 %, 16.7 %) even in 120 s: step 4b's
-  /// exact MILP of their lowest leaf takes the time left first. The three
-  /// years of data/scenarios/year/ give the same weeks with and without it.
+  /// (windows_before_leaves) or after step 4c. 0: an earlier release's
+  /// search (kept for comparison). year_ideal6_fixed_windowed_c41 of
+  /// data/scenarios/hard/ (six thrusters; 6.7 % from its bound without it,
+  /// in 60 s and with the year's 900 s) is proven optimal in 72 s with the
+  /// year's settings (the windows of -T, 23 LPs, 25 s). The three years of
+  /// data/scenarios/year/ give the same weeks with and without it.
   int total_branching_window_levels = 5;
+  /// Step 4d also between step 4b's tree and its leaves' MILPs when the
+  /// tree leaves the incumbent one step above the bound. Off: only after
+  /// step 4c, the previous release's search (kept for comparison in the
+  /// bench). The station-point weeks 75 deg E and 40 deg E of
+  /// data/scenarios/hard/ (60 s, two threads): proven optimal in 54 s and
+  /// 45 s (274 and 140 window LPs of +T), where off the lowest leaf's exact
+  /// MILP and the exchange use the time left without a schedule and they
+  /// end one slot above the bound (20 %, 16.7 %; still so in 120 s).
+  bool windows_before_leaves = true;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the
   /// incumbent's slots of the others, with the cutoff, axis after axis. Off:

@@ -237,9 +237,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): no step 4d, the tree
-    // splits whole-horizon totals only, never windows of them.
-    if (spec.search_previous) search.total_branching_window_levels = 0;
+    // The previous release's search (matrix.h): step 4d only after the
+    // exchange, not also between step 4b's tree and its leaves' MILPs.
+    if (spec.search_previous) search.windows_before_leaves = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -527,11 +528,12 @@ TEST(BranchOnThrusterTotals, WindowsProveTheOptimumWholeTotalsCannot) {
 
 // Step 4d of the search, on the day above: given CBC alone's optimum (36
 // slots) as its start, with the steps that could prove it otherwise off
-// (step 4's exact MILPs, the wider nets), the search ends one step above
-// the tree's bound (35) after the exchange. With 7 levels of windows step
-// 4d proves the start optimal, and CBC on the whole MILP never runs; with
-// 5 (windows of 4-5 slots) or none the proof is left to CBC on the whole
-// MILP.
+// (step 4's exact MILPs, the wider nets), step 4b's tree ends one step
+// above its bound (35). With 7 levels of windows step 4d proves the start
+// optimal, and CBC on the whole MILP never runs: right after the tree,
+// before the exchange, or (windows_before_leaves off, the previous
+// release) after the exchange, which finds nothing better; with 5 levels
+// (windows of 4-5 slots) or none the proof is left to CBC on the whole MILP.
 TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
   auto solver = milp::MakeCbcSolver();
   const ScheduleProblem p = HcwDay(6000.0, 0.0);
@@ -541,24 +543,33 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
   const ScheduleResult ref = SolveSchedule(p, *solver, cbc);
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal) << ref.solve.detail;
   ASSERT_NEAR(ref.solve.objective / slot, 36.0, 1e-6);
-  for (const int levels : {7, 5, 0}) {
+  const std::pair<int, bool> cases[] = {{7, true}, {7, false}, {5, true}, {0, true}};
+  for (const auto& [levels, before_leaves] : cases) {
     SearchOptions search;
     search.max_exact_slots = 0;
     search.max_exact_leaf_slots = 0;
     search.improvement_rounds = 0;
     search.total_branching_window_levels = levels;
+    search.windows_before_leaves = before_leaves;
     SearchReport report;
     const milp::SolveResult r =
         SearchSchedule(milp, *solver, cbc.milp, search, {ref.solve.x}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += step + "\n";
-    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << steps;
+    const std::string which = std::to_string(levels) + (before_leaves ? " before" : " after");
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << which << "\n" << steps;
     EXPECT_NEAR(r.objective / slot, 36.0, 1e-6) << steps;
     EXPECT_NEAR(r.best_bound / slot, 36.0, 1e-6) << steps;
-    const bool windows = steps.find(" in slots ") != std::string::npos;
+    const size_t windows = steps.find(" in slots ");
+    const size_t exchange = steps.find("exchange along");
     const bool whole_milp = steps.find("whole MILP (cbc)") != std::string::npos;
-    EXPECT_EQ(windows, levels > 0) << levels << "\n" << steps;
-    EXPECT_EQ(whole_milp, levels != 7) << levels << "\n" << steps;
+    EXPECT_EQ(windows != std::string::npos, levels > 0) << which << "\n" << steps;
+    EXPECT_EQ(whole_milp, levels != 7) << which << "\n" << steps;
+    if (levels == 7) {
+      // Before the exchange, which then never runs; or after it.
+      EXPECT_EQ(exchange == std::string::npos, before_leaves) << which << "\n" << steps;
+      if (!before_leaves) EXPECT_LT(exchange, windows) << steps;
+    }
   }
 }
 
