@@ -259,10 +259,14 @@ struct SearchOptions {
   /// tree leaves the incumbent one step above the bound. Off: only after
   /// step 4c, the previous release's search (kept for comparison in the
   /// bench). The station-point weeks 75 deg E and 40 deg E of
-  /// data/scenarios/hard/ (60 s, two threads): proven optimal in 54 s and
-  /// 45 s (274 and 140 window LPs of +T), where off the lowest leaf's exact
-  /// MILP and the exchange use the time left without a schedule and they
-  /// end one slot above the bound (20 %, 16.7 %; still so in 120 s).
+  /// data/scenarios/hard/ (60 s, two threads, bench medians of 3): proven
+  /// optimal in 57.6 s (once one slot above at the limit) and 44.7 s (274
+  /// and 140 window LPs of +T, 24 s and 19 s), where off the lowest leaf's
+  /// exact MILP and the exchange use the time left without a schedule and
+  /// they end one slot above the bound (20 %, 16.7 %; still so in 120 s).
+  /// Where a schedule at the bound exists the windows cost time before the
+  /// step that finds it: 38 s (14 LPs of -T) in week 41 of the
+  /// six-thruster year, then found by the exchange.
   bool windows_before_leaves = true;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the
