@@ -666,14 +666,14 @@ class Search {
   void BranchOnTotals() {
     TotalBranching t;
     if (!Tree(0, &t)) return;
+    bool candidates_tried = false;
     if (search_.windows_before_leaves && search_.total_branching_window_levels > 0 && !Done() &&
         !Stopped() && OneStepAboveBound()) {
-      if (t.lowest_leaf_x.size() > 0) LeafCandidates(t);
+      candidates_tried = t.lowest_leaf_x.size() > 0;
+      if (candidates_tried) LeafCandidates(t);
       if (!Done() && !Stopped() && OneStepAboveBound()) BranchOnWindows(false);
-      CloseOrSearchLeaves(t, /*candidates_tried=*/t.lowest_leaf_x.size() > 0);
-      return;
     }
-    CloseOrSearchLeaves(t);
+    CloseOrSearchLeaves(t, candidates_tried);
   }
 
   // The tree with `window_levels` levels of windows: raises the bound;
@@ -702,7 +702,7 @@ class Search {
 
   // The open leaves' exact MILPs (CloseLeaves), else the lowest leaf's
   // restricted MILP (LeafHeuristic).
-  void CloseOrSearchLeaves(const TotalBranching& t, bool candidates_tried = false) {
+  void CloseOrSearchLeaves(const TotalBranching& t, bool candidates_tried) {
     const bool lowest_solved = !Done() && !Stopped() && CloseLeaves(t);
     if (!Done() && !Stopped() && t.lowest_leaf_x.size() > 0 && !lowest_solved)
       LeafHeuristic(t, candidates_tried);
@@ -725,7 +725,8 @@ class Search {
     if (search_.total_branching_window_levels <= 0 || !(objective_ < windows_at_)) return;
     windows_at_ = objective_;
     TotalBranching t;
-    if (Tree(search_.total_branching_window_levels, &t) && with_leaves) CloseOrSearchLeaves(t);
+    if (Tree(search_.total_branching_window_levels, &t) && with_leaves)
+      CloseOrSearchLeaves(t, false);
   }
 
   bool OneStepAboveBound() const {
