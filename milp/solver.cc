@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/format.h"
+#include "milp/allocator.h"
 #include "milp/lp_bound.h"
 
 namespace thrustsched::milp {
@@ -144,6 +145,7 @@ double SolveResult::TimeToGap(double rel_gap) const {
 
 SolveResult Solver::Solve(const LpData& problem, const SolveOptions& options) const {
   Validate(problem, options, "Solver::Solve");
+  TuneAllocatorForLargeModels();  // milp/allocator.h
   const auto start = std::chrono::steady_clock::now();
   SolveResult result = DoSolve(problem, options);
   if (result.wall_seconds <= 0.0) {
@@ -174,6 +176,7 @@ void CompleteRelaxationResult(const LpData& problem, std::chrono::steady_clock::
 LpRelaxationResult Solver::SolveLpRelaxation(const LpData& problem,
                                              const SolveOptions& options) const {
   Validate(problem, options, "Solver::SolveLpRelaxation");
+  TuneAllocatorForLargeModels();  // milp/allocator.h
   const auto start = std::chrono::steady_clock::now();
   LpRelaxationResult result = DoSolveLpRelaxation(problem, options);
   CompleteRelaxationResult(problem, start, &result);
@@ -186,6 +189,7 @@ std::vector<LpRelaxationResult> Solver::SolveLpRelaxations(
     if (p == nullptr) throw std::invalid_argument("Solver::SolveLpRelaxations: null problem");
     Validate(*p, options, "Solver::SolveLpRelaxations");
   }
+  TuneAllocatorForLargeModels();  // milp/allocator.h
   const auto start = std::chrono::steady_clock::now();
   std::vector<LpRelaxationResult> results = DoSolveLpRelaxations(problems, options);
   for (size_t i = 0; i < problems.size(); ++i) {
@@ -241,6 +245,7 @@ std::unique_ptr<LpSession> Solver::DoOpenLpSession(const LpData& problem,
 std::unique_ptr<LpSession> Solver::OpenLpSession(const LpData& problem,
                                                  const SolveOptions& options) const {
   Validate(problem, options, "Solver::OpenLpSession");
+  TuneAllocatorForLargeModels();  // milp/allocator.h
   return DoOpenLpSession(problem, options);
 }
 

@@ -60,6 +60,13 @@ class Search {
       return Result();
     }
     if (!Done()) Heuristic();
+    // A first incumbent one step above the bound: the question left is
+    // whether a schedule at the bound exists, which step 4's exact MILP
+    // asks by search and step 4b's tree with step 4d's windows by proof;
+    // the tree first (BranchOnTotals, which also tries the cheap MILP over
+    // the lowest leaf's LP slots before the windows and the leaves' MILPs).
+    if (search_.tree_first_at_one_step && !Done() && !Stopped() && OneStepAboveBound())
+      BranchOnTotals();
     ExactRounds();
     // The first improvement level is cheap and often finds the optimum; the
     // tree is the proof; the exchange along an axis and the wider levels
@@ -69,7 +76,7 @@ class Search {
     // at 4.55 % and 3.57 % (proven optimal and 1.79 % without it), while it
     // proved week 10 optimal (10.5 % without it).
     bool improved = !Done() && !Stopped() && has_incumbent() && Improve(1);
-    if (!Done() && !Stopped() && has_incumbent()) BranchOnTotals();
+    if (!tree_ran_ && !Done() && !Stopped() && has_incumbent()) BranchOnTotals();
     if (has_incumbent()) ExchangeWhileItImproves();
     if (!Done() && !Stopped() && OneStepAboveBound()) BranchOnWindows(true);
     if (!Done() && !Stopped() && has_incumbent() && Improve(search_.improvement_rounds)) {

@@ -122,7 +122,9 @@ void WriteColumns(std::ostream& md) {
         "`mc_collisions_nonlinear`, `mc_min_distance_m`, `verify_s`, and for on-off cases "
         "`without_conjunction` (cost of the plan without the conjunction), `extra_cost`, "
         "`without_max_risk`, `without_mc_collisions_linear`, `without_mc_collisions_nonlinear` "
-        "(that plan verified against the conjunction), `wall_s` "
+        "(that plan verified against the conjunction), `allocator_tuned` (MILP rows: 1 "
+        "when the child ran with milp/allocator.h's malloc thresholds, 0 with glibc's, as "
+        "the releases before them), `wall_s` "
         "(whole child run), `exit` (child exit code), `note`. Times are wall-clock seconds; "
         "empty cells = not applicable or not reached.\n";
 }

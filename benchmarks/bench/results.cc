@@ -67,7 +67,7 @@ const std::vector<std::string>& ResultColumns() {
           // every earlier column keeps its position.
           "ext_highs_status", "ext_highs_objective", "ext_highs_s", "ext_highs_bound",
           "ext_highs_gap", "without_conjunction", "extra_cost", "without_max_risk",
-          "without_mc_collisions_linear", "without_mc_collisions_nonlinear"}) {
+          "without_mc_collisions_linear", "without_mc_collisions_nonlinear", "allocator_tuned"}) {
       c.push_back(name);
     }
     return c;

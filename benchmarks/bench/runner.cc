@@ -28,6 +28,7 @@
 #include "benchmarks/bench/external_solvers.h"
 #include "common/timing.h"
 #include "dynamics/discretisation.h"
+#include "milp/allocator.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
 #include "transcription/checker.h"
@@ -159,6 +160,12 @@ double GapOf(double objective, double bound) {
 std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext& ctx) {
   const app::Scenario s = LoadPatched(spec);
   Row r = BaseRow(spec, repeat, s);
+  // The previous release ran with glibc's malloc thresholds (milp/allocator.h);
+  // in its own child process nothing has tuned them yet (not so with --no-fork
+  // after another MILP case: the column says which).
+  const bool tuned =
+      spec.search_previous ? !milp::KeepDefaultAllocator() : milp::TuneAllocatorForLargeModels();
+  r.Set("allocator_tuned", tuned);
   const transcription::ScheduleProblem& p = s.problem;
   const dynamics::LinearModel& model = *p.model;
 
@@ -237,9 +244,11 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): step 4d only after the
-    // exchange, not also between step 4b's tree and its leaves' MILPs.
-    if (spec.search_previous) search.windows_before_leaves = false;
+    // The previous release's search (matrix.h): step 4's exact MILP and
+    // step 4a's first improvement MILP before the tree also where the first
+    // incumbent is one step above the bound (and glibc's malloc thresholds,
+    // above).
+    if (spec.search_previous) search.tree_first_at_one_step = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

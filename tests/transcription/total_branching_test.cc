@@ -573,6 +573,45 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
   }
 }
 
+// The order of steps 4 and 4b on the day above, started from CBC alone's
+// optimum (36 slots, one step above the rounded LP bound), with step 4's
+// exact MILP allowed: tree_first_at_one_step on, the tree and step 4d's
+// windows prove the start optimal and the exact MILP never runs; off (the
+// previous release), the exact MILP runs first and proves it by itself.
+TEST(SearchSchedule, TreeFirstWhereTheFirstIncumbentIsOneStepAboveTheBound) {
+  auto solver = milp::MakeCbcSolver();
+  const ScheduleProblem p = HcwDay(6000.0, 0.0);
+  const ScheduleMilp milp(p, BuildOptions{});
+  const double slot = milp.objective_step();
+  const SolveScheduleOptions cbc = CbcAlone();
+  const ScheduleResult ref = SolveSchedule(p, *solver, cbc);
+  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal) << ref.solve.detail;
+  ASSERT_NEAR(ref.solve.objective / slot, 36.0, 1e-6);
+  for (const bool tree_first : {true, false}) {
+    SearchOptions search;
+    search.total_branching_window_levels = 7;
+    search.tree_first_at_one_step = tree_first;
+    SearchReport report;
+    const milp::SolveResult r =
+        SearchSchedule(milp, *solver, cbc.milp, search, {ref.solve.x}, &report);
+    std::string steps;
+    for (const std::string& step : report.steps) steps += step + "\n";
+    ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << steps;
+    EXPECT_NEAR(r.objective / slot, 36.0, 1e-6) << steps;
+    EXPECT_NEAR(r.best_bound / slot, 36.0, 1e-6) << steps;
+    const size_t tree = steps.find("branching on thruster totals");
+    const size_t exact = steps.find("exact MILP over the");
+    if (tree_first) {
+      EXPECT_NE(steps.find(" in slots "), std::string::npos) << steps;
+      EXPECT_EQ(exact, std::string::npos) << steps;
+    } else {
+      ASSERT_NE(exact, std::string::npos) << steps;
+      EXPECT_NE(steps.find("the incumbent is optimal"), std::string::npos) << steps;
+      EXPECT_EQ(tree, std::string::npos) << steps;
+    }
+  }
+}
+
 // The windows of each fired thruster: level l cuts the horizon into 2^l
 // windows that tile it; their totals at a point add up to the thruster's.
 TEST(WindowGroups, TileTheHorizonOfEachFiredThrusterAtEveryLevel) {
