@@ -279,9 +279,10 @@ struct SearchOptions {
   /// week 75 deg E of data/scenarios/hard/ (60 s, two threads): the exact
   /// MILP over 1506 slots and the improvement MILP took 14.7 s and 3.2 s
   /// before the tree without a schedule or a bound; the windows prove the
-  /// first incumbent optimal right after the tree (36.0 s against 53.2 s in
-  /// the same bench run). Week 16: the tree proves it in 2 LPs (3.8 s) where
-  /// the exact MILP took 5.2 s.
+  /// first incumbent optimal right after the tree (bench medians of 3, same
+  /// run: 31.4 s against 60.1 s, 20 % in 2 of 3 runs). 40 deg E: 24.1 s
+  /// against 45.3 s. Week 16: the tree proves it in 2 LPs where the exact
+  /// MILP took 5 s (17.9 s against 28.5 s).
   bool tree_first_at_one_step = true;
   /// Step 4c's exchange along an axis: the MILP restricted to every slot of
   /// the thrusters on one axis (directions parallel or opposite) and the

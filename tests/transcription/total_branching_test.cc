@@ -526,6 +526,23 @@ TEST(BranchOnThrusterTotals, WindowsProveTheOptimumWholeTotalsCannot) {
   EXPECT_EQ(wide.bound, tree(0, optimum + slot).bound) << wide.detail;
 }
 
+// The day above with CBC alone's optimum (36 slots), the start of the two
+// search tests below.
+struct HcwDayOptimum {
+  std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
+  ScheduleProblem problem = HcwDay(6000.0, 0.0);
+  ScheduleMilp milp{problem, BuildOptions{}};
+  double slot = milp.objective_step();
+  SolveScheduleOptions cbc = CbcAlone();
+  ScheduleResult ref = SolveSchedule(problem, *solver, cbc);
+};
+
+std::string StepLines(const SearchReport& report) {
+  std::string steps;
+  for (const std::string& step : report.steps) steps += step + "\n";
+  return steps;
+}
+
 // Step 4d of the search, on the day above: given CBC alone's optimum (36
 // slots) as its start, with the steps that could prove it otherwise off
 // (step 4's exact MILPs, the wider nets), step 4b's tree ends one step
@@ -535,14 +552,9 @@ TEST(BranchOnThrusterTotals, WindowsProveTheOptimumWholeTotalsCannot) {
 // release) after the exchange, which finds nothing better; with 5 levels
 // (windows of 4-5 slots) or none the proof is left to CBC on the whole MILP.
 TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
-  auto solver = milp::MakeCbcSolver();
-  const ScheduleProblem p = HcwDay(6000.0, 0.0);
-  const ScheduleMilp milp(p, BuildOptions{});
-  const double slot = milp.objective_step();
-  const SolveScheduleOptions cbc = CbcAlone();
-  const ScheduleResult ref = SolveSchedule(p, *solver, cbc);
-  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal) << ref.solve.detail;
-  ASSERT_NEAR(ref.solve.objective / slot, 36.0, 1e-6);
+  const HcwDayOptimum day;
+  ASSERT_EQ(day.ref.solve.status, milp::SolveStatus::kOptimal) << day.ref.solve.detail;
+  ASSERT_NEAR(day.ref.solve.objective / day.slot, 36.0, 1e-6);
   const std::pair<int, bool> cases[] = {{7, true}, {7, false}, {5, true}, {0, true}};
   for (const auto& [levels, before_leaves] : cases) {
     SearchOptions search;
@@ -553,13 +565,12 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
     search.windows_before_leaves = before_leaves;
     SearchReport report;
     const milp::SolveResult r =
-        SearchSchedule(milp, *solver, cbc.milp, search, {ref.solve.x}, &report);
-    std::string steps;
-    for (const std::string& step : report.steps) steps += step + "\n";
+        SearchSchedule(day.milp, *day.solver, day.cbc.milp, search, {day.ref.solve.x}, &report);
+    const std::string steps = StepLines(report);
     const std::string which = std::to_string(levels) + (before_leaves ? " before" : " after");
     ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << which << "\n" << steps;
-    EXPECT_NEAR(r.objective / slot, 36.0, 1e-6) << steps;
-    EXPECT_NEAR(r.best_bound / slot, 36.0, 1e-6) << steps;
+    EXPECT_NEAR(r.objective / day.slot, 36.0, 1e-6) << steps;
+    EXPECT_NEAR(r.best_bound / day.slot, 36.0, 1e-6) << steps;
     const size_t windows = steps.find(" in slots ");
     const size_t exchange = steps.find("exchange along");
     const bool whole_milp = steps.find("whole MILP (cbc)") != std::string::npos;
@@ -568,7 +579,9 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
     if (levels == 7) {
       // Before the exchange, which then never runs; or after it.
       EXPECT_EQ(exchange == std::string::npos, before_leaves) << which << "\n" << steps;
-      if (!before_leaves) EXPECT_LT(exchange, windows) << steps;
+      if (!before_leaves) {
+        EXPECT_LT(exchange, windows) << steps;
+      }
     }
   }
 }
@@ -579,26 +592,20 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
 // windows prove the start optimal and the exact MILP never runs; off (the
 // previous release), the exact MILP runs first and proves it by itself.
 TEST(SearchSchedule, TreeFirstWhereTheFirstIncumbentIsOneStepAboveTheBound) {
-  auto solver = milp::MakeCbcSolver();
-  const ScheduleProblem p = HcwDay(6000.0, 0.0);
-  const ScheduleMilp milp(p, BuildOptions{});
-  const double slot = milp.objective_step();
-  const SolveScheduleOptions cbc = CbcAlone();
-  const ScheduleResult ref = SolveSchedule(p, *solver, cbc);
-  ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal) << ref.solve.detail;
-  ASSERT_NEAR(ref.solve.objective / slot, 36.0, 1e-6);
+  const HcwDayOptimum day;
+  ASSERT_EQ(day.ref.solve.status, milp::SolveStatus::kOptimal) << day.ref.solve.detail;
+  ASSERT_NEAR(day.ref.solve.objective / day.slot, 36.0, 1e-6);
   for (const bool tree_first : {true, false}) {
     SearchOptions search;
     search.total_branching_window_levels = 7;
     search.tree_first_at_one_step = tree_first;
     SearchReport report;
     const milp::SolveResult r =
-        SearchSchedule(milp, *solver, cbc.milp, search, {ref.solve.x}, &report);
-    std::string steps;
-    for (const std::string& step : report.steps) steps += step + "\n";
+        SearchSchedule(day.milp, *day.solver, day.cbc.milp, search, {day.ref.solve.x}, &report);
+    const std::string steps = StepLines(report);
     ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << steps;
-    EXPECT_NEAR(r.objective / slot, 36.0, 1e-6) << steps;
-    EXPECT_NEAR(r.best_bound / slot, 36.0, 1e-6) << steps;
+    EXPECT_NEAR(r.objective / day.slot, 36.0, 1e-6) << steps;
+    EXPECT_NEAR(r.best_bound / day.slot, 36.0, 1e-6) << steps;
     const size_t tree = steps.find("branching on thruster totals");
     const size_t exact = steps.find("exact MILP over the");
     if (tree_first) {
