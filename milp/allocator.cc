@@ -10,10 +10,7 @@
 
 namespace thrustsched::milp {
 
-namespace {
-
-// The user already chose the allocator's thresholds through the environment.
-bool SetByEnvironment() {
+bool AllocatorThresholdsSetByEnvironment() {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   if (tunables != nullptr && (std::strstr(tunables, "mmap_threshold") != nullptr ||
                               std::strstr(tunables, "trim_threshold") != nullptr)) {
@@ -23,9 +20,11 @@ bool SetByEnvironment() {
          std::getenv("MALLOC_TRIM_THRESHOLD_") != nullptr;
 }
 
+namespace {
+
 bool Tune() {
 #if defined(__GLIBC__)
-  if (SetByEnvironment()) return false;
+  if (AllocatorThresholdsSetByEnvironment()) return false;
   const bool mmap_set = mallopt(M_MMAP_THRESHOLD, static_cast<int>(kMmapThresholdBytes)) == 1;
   const bool trim_set = mallopt(M_TRIM_THRESHOLD, static_cast<int>(kTrimThresholdBytes)) == 1;
   return mmap_set && trim_set;

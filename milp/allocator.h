@@ -36,6 +36,11 @@ inline constexpr std::size_t kTrimThresholdBytes = std::size_t{512} << 20;
 /// call's answer). True if they were set by this call or an earlier one.
 bool TuneAllocatorForLargeModels();
 
+/// True when the environment sets either threshold (GLIBC_TUNABLES'
+/// mmap_threshold or trim_threshold, MALLOC_MMAP_THRESHOLD_,
+/// MALLOC_TRIM_THRESHOLD_): TuneAllocatorForLargeModels then keeps them.
+bool AllocatorThresholdsSetByEnvironment();
+
 /// For comparisons with the releases before this setting (the bench's
 /// `previous` arm, in its own process): later TuneAllocatorForLargeModels
 /// calls leave the allocator as glibc set it. True if no call had tuned it

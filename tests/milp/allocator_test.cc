@@ -39,12 +39,7 @@ std::string SkipReason() {
   return "glibc only";
 #else
   if (kSanitizerAllocator) return "the sanitizer's allocator ignores mallopt";
-  const char* t = std::getenv("GLIBC_TUNABLES");
-  if ((t != nullptr && std::strstr(t, "threshold") != nullptr) ||
-      std::getenv("MALLOC_MMAP_THRESHOLD_") != nullptr ||
-      std::getenv("MALLOC_TRIM_THRESHOLD_") != nullptr) {
-    return "thresholds set by the environment";
-  }
+  if (AllocatorThresholdsSetByEnvironment()) return "thresholds set by the environment";
   return "";
 #endif
 }
