@@ -65,7 +65,7 @@ std::timed_mutex& DriverMutex() {
 class Recorder : public DriverListener {
  public:
   Recorder(const LpData& lp, const SolveOptions& options, SolveClock* clock)
-      : options_(options), clock_(clock), sign_(internal::ObjectiveSign(lp)) {}
+      : lp_(lp), options_(options), clock_(clock), sign_(internal::ObjectiveSign(lp)) {}
 
   void OnProgress(const SolveProgress& progress) override {
     if (progress.new_incumbent && std::isfinite(progress.objective)) {
@@ -79,6 +79,14 @@ class Recorder : public DriverListener {
       best_x_ = x_partial;
       best_objective_ = incumbent.objective;
       best_wall_ = incumbent.wall_seconds;
+    }
+    if (options_.on_incumbent && !callback_error_) {
+      Eigen::VectorXd x = x_partial;
+      try {
+        if (internal::CompletePartial(lp_, options_, &x)) options_.on_incumbent(x);
+      } catch (...) {
+        callback_error_ = std::current_exception();
+      }
     }
   }
   bool StopRequested() override {
@@ -118,6 +126,7 @@ class Recorder : public DriverListener {
       callback_error_ = std::current_exception();
     }
   }
+  const LpData& lp_;
   const SolveOptions& options_;
   SolveClock* clock_;
   double sign_;

@@ -64,9 +64,18 @@ class LazySolve {
     for (int round = 0; round < lazy_.max_rounds; ++round) {
       SolveOptions o = options_;
       o.time_limit_s = std::max(0.0, Remaining());
+      // A kept solution is a fallback only, not the next subset's MIP start:
+      // with a start CBC searches differently (a cutoff, fewer heuristics),
+      // and on a six-thruster week of the year (node limits) the next
+      // round then ended one step above the optimum it found without one.
+      o.on_incumbent = nullptr;
+      if (lazy_.keep_model_incumbents) {
+        o.on_incumbent = [this](const Eigen::VectorXd& x) { KeepIfTheModelsSolution(x); };
+      }
       // A subset's incumbent may break a left-out row: not the model's, so
       // not reported as one (the caller would count on a schedule it cannot
-      // have); a solution that keeps every row is reported below.
+      // have); a solution that keeps every row is reported by
+      // KeepIfTheModelsSolution or, at the end, ReportSolution.
       if (options_.progress) {
         const double offset = Elapsed();
         o.progress = [this, offset](const SolveProgress& sub) {
@@ -86,15 +95,19 @@ class LazySolve {
       s.nodes = nodes;
       s.wall_seconds = Elapsed();
       if (s.status == SolveStatus::kUnbounded) return Whole("a subset is unbounded");
-      if (!s.has_solution()) return Finish(std::move(s), "");
+      if (!s.has_solution()) {
+        return best_x_.size() > 0 ? Kept(s, bound, nodes) : Finish(std::move(s), "");
+      }
       const int added = AddBrokenRows(s.x);
       if (added == 0) {
+        if (KeptIsBetter(s)) return Kept(s, bound, nodes);
         s.best_bound = bound;
         s.gap = RelativeGap(s.objective, s.best_bound);
-        ReportSolution(s);
+        if (!(best_x_.size() > 0 && s.objective == best_objective_)) ReportSolution(s);
         return Finish(std::move(s), "");
       }
       if (Interrupted() || Remaining() <= 0.0) {
+        if (best_x_.size() > 0) return Kept(s, bound, nodes);
         // The subset's solution breaks the model: no solution, only a bound.
         SolveResult r;
         r.status = SolveStatus::kNoSolutionFound;
@@ -124,16 +137,71 @@ class LazySolve {
     return rows;
   }
 
+  // A subset incumbent, as the solver reports it: kept (and reported as the
+  // model's) when it breaks no left-out row and improves on the best kept.
+  // The rows in the subset are those of the running solve (in_ changes only
+  // between solves).
+  void KeepIfTheModelsSolution(const Eigen::VectorXd& x) {
+    const Eigen::VectorXd activity = lp_.a_matrix * x;
+    for (int i = 0; i < lp_.num_rows(); ++i) {
+      if (in_[static_cast<size_t>(i)]) continue;
+      if (Violation(activity[i], lp_.row_lower[i], lp_.row_upper[i]) > lazy_.violation_tolerance) {
+        return;
+      }
+    }
+    const double objective = lp_.Objective(x);
+    if (best_x_.size() > 0 && !(Sign() * objective < Sign() * best_objective_)) return;
+    best_x_ = x;
+    best_objective_ = objective;
+    best_wall_seconds_ = Elapsed();
+    if (options_.progress) {
+      SolveProgress p;
+      p.wall_seconds = best_wall_seconds_;
+      p.objective = objective;
+      p.new_incumbent = true;
+      options_.progress(p);
+    }
+    if (options_.on_incumbent) options_.on_incumbent(x);
+  }
+
+  // Whether the kept solution beats `s`, a solution of the model that a
+  // search stopped at a limit ended on (a completed search cannot end worse).
+  bool KeptIsBetter(const SolveResult& s) const {
+    return best_x_.size() > 0 &&
+           (!s.has_solution() || Sign() * best_objective_ < Sign() * s.objective);
+  }
+
+  // The model's best kept solution, when the last search ended without a
+  // better one (a limit or an interrupt, on a solution breaking a left-out
+  // row, a worse one or none): status kFeasible.
+  SolveResult Kept(const SolveResult& last, double bound, long long nodes) {
+    report_->kept_incumbent = true;
+    SolveResult r;
+    r.status = SolveStatus::kFeasible;
+    r.solver_version = last.solver_version;
+    r.x = best_x_;
+    r.objective = best_objective_;
+    r.best_bound = bound;
+    r.gap = RelativeGap(r.objective, r.best_bound);
+    r.nodes = nodes;
+    r.incumbents = {{best_wall_seconds_, best_objective_, bound}};
+    r.wall_seconds = Elapsed();
+    return Finish(std::move(r), std::string(Interrupted() ? "interrupted" : "limit") +
+                                    ", on the model's best solution of the subset searches");
+  }
+
   void ReportSolution(const SolveResult& s) const {
-    if (!options_.progress) return;
-    SolveProgress p;
-    p.wall_seconds = Elapsed();
-    p.objective = s.objective;
-    p.best_bound = s.best_bound;
-    p.gap = s.gap;
-    p.nodes = s.nodes;
-    p.new_incumbent = true;
-    options_.progress(p);
+    if (options_.progress) {
+      SolveProgress p;
+      p.wall_seconds = Elapsed();
+      p.objective = s.objective;
+      p.best_bound = s.best_bound;
+      p.gap = s.gap;
+      p.nodes = s.nodes;
+      p.new_incumbent = true;
+      options_.progress(p);
+    }
+    if (options_.on_incumbent) options_.on_incumbent(s.x);
   }
 
   // The LP relaxation by dual simplex; its binding dense rows join the
@@ -176,6 +244,12 @@ class LazySolve {
     o.time_limit_s = std::max(0.0, Remaining());
     SolveResult s = solver_.Solve(lp_, o);
     s.wall_seconds = Elapsed();
+    if (KeptIsBetter(s)) {
+      const double bound = std::isfinite(s.best_bound)
+                               ? s.best_bound
+                               : -std::numeric_limits<double>::infinity() * Sign();
+      return Kept(s, bound, s.nodes);
+    }
     return Finish(std::move(s), why.empty() ? "" : "whole model (" + why + ")");
   }
 
@@ -202,6 +276,10 @@ class LazySolve {
   internal::SolveClock clock_;
   std::vector<char> in_;
   std::string detail_;
+  // The best subset incumbent that breaks no row (keep_model_incumbents).
+  Eigen::VectorXd best_x_;
+  double best_objective_ = std::numeric_limits<double>::quiet_NaN();
+  double best_wall_seconds_ = 0.0;
 };
 
 }  // namespace

@@ -42,16 +42,26 @@ struct LazyRowOptions {
   double violation_tolerance = 1e-9;
   /// Subset solves before the whole model is solved instead.
   int max_rounds = 25;
+  /// Keep each subset incumbent that satisfies every row, as the solver
+  /// reports it (SolveOptions::on_incumbent): a search that ends at a limit
+  /// on a solution breaking a left-out row (or on none, or a worse one)
+  /// then still returns the model's best solution found (status
+  /// kFeasible). The rounds are solved as without it (the kept solution is
+  /// no MIP start). Off: only a subset's final solution counts.
+  bool keep_model_incumbents = true;
 
   bool IsValid(std::string* error) const;
 };
 
 struct LazyRowReport {
-  bool used = false;       // false: the model was solved whole from the start
-  int dense_rows = 0;      // rows that could be left out
-  int initial_rows = 0;    // rows of the first subset
-  int final_rows = 0;      // rows of the last subset
-  int rounds = 0;          // subset solves
+  bool used = false;     // false: the model was solved whole from the start
+  int dense_rows = 0;    // rows that could be left out
+  int initial_rows = 0;  // rows of the first subset
+  int final_rows = 0;    // rows of the last subset
+  int rounds = 0;        // subset solves
+  /// The result is a model solution kept from a subset search that ended
+  /// on one breaking a left-out row (LazyRowOptions::keep_model_incumbents).
+  bool kept_incumbent = false;
   bool fell_back = false;  // max_rounds reached: the whole model was solved
 };
 
@@ -63,7 +73,10 @@ LpData SelectRows(const LpData& lp, const std::vector<int>& rows);
 /// caps each one. options.initial_solution is handed to each subset solve
 /// (it satisfies every subset if it satisfies the model). options.progress
 /// hears the subset solves without their incumbents (which may break a
-/// left-out row), then once with new_incumbent for the model's solution.
+/// left-out row), then with new_incumbent for each solution of the model
+/// (LazyRowOptions::keep_model_incumbents: as the subset search finds it;
+/// otherwise once, at the end); options.on_incumbent likewise hears only
+/// solutions of the model.
 /// @throws std::invalid_argument as Solver::Solve, or for invalid `lazy`.
 SolveResult SolveWithLazyRows(const Solver& solver, const LpData& lp, const SolveOptions& options,
                               const LazyRowOptions& lazy = {}, LazyRowReport* report = nullptr);

@@ -133,6 +133,14 @@ struct SolveOptions {
   /// what it does without this function (e.g. the schedule MILPs propagate
   /// their states from the on-off pattern instead).
   std::function<bool(Eigen::VectorXd* x)> complete_solution;
+  /// Optional: called with the column values of each incumbent the search
+  /// finds, as soon as it is reported (completed as a result's x is, and
+  /// feasible for the model; the MIP start is not reported), from the
+  /// solving thread. For a caller that may want an incumbent the search
+  /// later replaces, e.g. milp::SolveWithLazyRows, whose subset's later
+  /// incumbents may break a row left out. An exception thrown by it stops
+  /// the solve and is rethrown by Solve(), as for `progress`.
+  std::function<void(const Eigen::VectorXd& x)> on_incumbent;
   double progress_interval_s = 5.0;
   /// If set and becomes true, the solve stops as at a time limit.
   const std::atomic<bool>* interrupt = nullptr;

@@ -377,7 +377,8 @@ class Search {
       heuristic_level_ = level;
       return true;
     }
-    Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened");
+    Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened" +
+         (r.feasible ? lazy_note_ : ""));
     return false;
   }
 
@@ -577,13 +578,17 @@ class Search {
   // rows unless disabled (milp/lazy_rows.h; exact, so proofs carry over).
   milp::SolveResult SolveRestricted(const milp::LpData& small, const milp::SolveOptions& o) {
     if (!search_.lazy_rows) return solver_.Solve(small, o);
+    milp::LazyRowOptions rows;
+    rows.keep_model_incumbents = search_.lazy_rows_keep_incumbents;
     milp::LazyRowReport lazy;
-    milp::SolveResult s = milp::SolveWithLazyRows(solver_, small, o, {}, &lazy);
-    lazy_note_ = lazy.used ? " (" + std::to_string(lazy.final_rows) + " of " +
-                                 std::to_string(small.num_rows()) + " rows in " +
-                                 std::to_string(lazy.rounds) + " round" +
-                                 (lazy.rounds == 1 ? "" : "s") + ")"
-                           : "";
+    milp::SolveResult s = milp::SolveWithLazyRows(solver_, small, o, rows, &lazy);
+    lazy_note_ = "";
+    if (lazy.used) {
+      lazy_note_ = " (" + std::to_string(lazy.final_rows) + " of " +
+                   std::to_string(small.num_rows()) + " rows in " + std::to_string(lazy.rounds) +
+                   " round" + (lazy.rounds == 1 ? "" : "s") +
+                   (lazy.kept_incumbent ? "; the best schedule of their searches kept" : "") + ")";
+    }
     return s;
   }
 

@@ -171,6 +171,12 @@ struct SearchOptions {
   /// (milp::SolveWithLazyRows): on GEO weeks ~1/4 of the condensed window
   /// rows bind at the LP optimum, and CBC's node LPs on the rest cost 10x.
   bool lazy_rows = true;
+  /// Their subset incumbents that break no left-out row are kept as the
+  /// solver reports them (milp::LazyRowOptions::keep_model_incumbents): a
+  /// subset search that ends at its share on a solution breaking a row
+  /// still hands over the schedule it found before. Off: only a subset's
+  /// final solution counts.
+  bool lazy_rows_keep_incumbents = true;
   /// Widening levels tried after the heuristic's incumbent, each a
   /// restricted MILP with a cutoff one step below the incumbent (step 3).
   int improvement_rounds = 2;

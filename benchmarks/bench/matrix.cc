@@ -184,8 +184,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (step 4's exact MILP before the tree also "
-        "where the first incumbent is one step above the bound)";
+        "search as the previous release ran it (lazy-row rounds keep only their final "
+        "solution)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

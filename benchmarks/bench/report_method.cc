@@ -124,7 +124,7 @@ void WriteColumns(std::ostream& md) {
         "`without_max_risk`, `without_mc_collisions_linear`, `without_mc_collisions_nonlinear` "
         "(that plan verified against the conjunction), `allocator_tuned` (MILP rows: 1 "
         "when the child ran with milp/allocator.h's malloc thresholds, 0 with glibc's, as "
-        "the releases before them), `wall_s` "
+        "the releases before ff7ffbf), `wall_s` "
         "(whole child run), `exit` (child exit code), `note`. Times are wall-clock seconds; "
         "empty cells = not applicable or not reached.\n";
 }

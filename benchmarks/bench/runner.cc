@@ -160,11 +160,9 @@ double GapOf(double objective, double bound) {
 std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext& ctx) {
   const app::Scenario s = LoadPatched(spec);
   Row r = BaseRow(spec, repeat, s);
-  // The previous release ran with glibc's malloc thresholds (milp/allocator.h);
-  // in its own child process nothing has tuned them yet (not so with --no-fork
-  // after another MILP case: the column says which).
-  const bool tuned =
-      spec.search_previous ? !milp::KeepDefaultAllocator() : milp::TuneAllocatorForLargeModels();
+  // Both arms with the malloc thresholds of milp/allocator.h (the previous
+  // release tuned them too); the column records it.
+  const bool tuned = milp::TuneAllocatorForLargeModels();
   r.Set("allocator_tuned", tuned);
   const transcription::ScheduleProblem& p = s.problem;
   const dynamics::LinearModel& model = *p.model;
@@ -244,11 +242,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): step 4's exact MILP and
-    // step 4a's first improvement MILP before the tree also where the first
-    // incumbent is one step above the bound (and glibc's malloc thresholds,
-    // above).
-    if (spec.search_previous) search.tree_first_at_one_step = false;
+    // The previous release's search (matrix.h): a restricted MILP's lazy-row
+    // rounds keep only their final solution.
+    if (spec.search_previous) search.lazy_rows_keep_incumbents = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -693,6 +693,29 @@ TEST(CbcSolverTest, NodeLimitStopsTheSearch) {
   EXPECT_EQ(a.x, b.x);
 }
 
+// on_incumbent hears each incumbent the search finds as it is reported,
+// with its columns (feasible for the model), better and better, the last
+// the result's; a callback that throws stops the solve and the exception
+// reaches the caller.
+TEST(CbcSolverTest, OnIncumbentHearsEachIncumbentWithItsColumns) {
+  const LpData lp = HardKnapsack();
+  SolveOptions o;
+  o.max_nodes = 2000;
+  o.relative_gap = 0.0;
+  std::vector<Eigen::VectorXd> heard;
+  o.on_incumbent = [&heard](const Eigen::VectorXd& x) { heard.push_back(x); };
+  const SolveResult r = MakeCbcSolver()->Solve(lp, o);
+  ASSERT_TRUE(r.has_solution()) << r.detail;
+  ASSERT_GE(heard.size(), 2u) << "the instance is too easy to tell incumbents apart";
+  for (size_t k = 0; k < heard.size(); ++k) {
+    EXPECT_LE(lp.MaxViolation(heard[k]), 1e-6);
+    if (k > 0) EXPECT_GT(lp.Objective(heard[k]), lp.Objective(heard[k - 1]));  // maximisation
+  }
+  EXPECT_NEAR(lp.Objective(heard.back()), r.objective, 1e-9 * std::max(1.0, std::abs(r.objective)));
+  o.on_incumbent = [](const Eigen::VectorXd&) { throw std::runtime_error("enough"); };
+  EXPECT_THROW(MakeCbcSolver()->Solve(lp, o), std::runtime_error);
+}
+
 // log_level > 0 lets CBC print (the default 0 is silent: test above).
 TEST(CbcSolverTest, LogLevelOnePrintsTheSolverLog) {
   SolveOptions o;

@@ -4,6 +4,7 @@
 // the generation leaves out; SelectRows against the rows it copies.
 #include "milp/lazy_rows.h"
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -52,27 +53,39 @@ LazyRowOptions SmallDense() {
 
 // Knapsacks with 40 capacity rows over 14 items: the optimum found with rows
 // left out is the enumerated one, the solution satisfies every row, and at
-// least one instance needs a second round (a left-out row broken).
+// least one instance needs a second round (a left-out row broken). Each
+// subset incumbent that keeps every row is the model's, reported as the
+// solver finds it (SolveOptions::on_incumbent) and no other; the same
+// optimum with LazyRowOptions::keep_model_incumbents off.
 TEST(SolveWithLazyRows, FindsTheEnumeratedOptimumWithRowsLeftOut) {
   auto solver = MakeCbcSolver();
   int second_rounds = 0;
+  int kept_before_the_end = 0;
   for (unsigned seed = 1; seed <= 6; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const LpData lp = RandomKnapsack(14, 40, seed, 0.35);
     const double expected = Enumerate(lp);
     ASSERT_FALSE(std::isnan(expected));
     LazyRowReport report;
-    // Progress names no incumbent of a subset (it may break a left-out row):
-    // one report, of the model's solution.
+    // Progress and on_incumbent name no incumbent of a subset that breaks a
+    // left-out row: only the model's solutions, better and better.
     std::vector<double> reported;
+    std::vector<Eigen::VectorXd> heard;
     SolveOptions o = Exact();
     o.progress = [&reported](const SolveProgress& p) {
       if (p.new_incumbent) reported.push_back(p.objective);
     };
+    o.on_incumbent = [&heard](const Eigen::VectorXd& x) { heard.push_back(x); };
     const SolveResult r = SolveWithLazyRows(*solver, lp, o, SmallDense(), &report);
     ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
-    ASSERT_EQ(reported.size(), 1u);
-    EXPECT_EQ(reported[0], r.objective);
+    ASSERT_FALSE(reported.empty());
+    EXPECT_EQ(reported.back(), r.objective);
+    for (size_t k = 1; k < reported.size(); ++k) EXPECT_GT(reported[k], reported[k - 1]);
+    for (const Eigen::VectorXd& x : heard) EXPECT_LE(lp.MaxViolation(x), 1e-6);
+    if (reported.size() >= 2) ++kept_before_the_end;
+    LazyRowOptions off = SmallDense();
+    off.keep_model_incumbents = false;
+    EXPECT_NEAR(SolveWithLazyRows(*solver, lp, Exact(), off).objective, expected, 1e-6);
     EXPECT_NEAR(r.objective, expected, 1e-6);
     EXPECT_NEAR(r.best_bound, expected, 1e-6);
     EXPECT_LE(lp.MaxViolation(r.x), 1e-6);
@@ -84,6 +97,82 @@ TEST(SolveWithLazyRows, FindsTheEnumeratedOptimumWithRowsLeftOut) {
   }
   EXPECT_GE(second_rounds, 1)
       << "no instance broke a left-out row: the generation loop is untested";
+  EXPECT_GE(kept_before_the_end, 1) << "no subset search reported a model solution before its end";
+}
+
+// CBC, except that once a solve ends on a solution that breaks a row of
+// `full` after it reported one that keeps every row, it raises `stop` (the
+// caller's interrupt) and reports "feasible": what a subset search does when
+// its share runs out after its schedules moved beyond the rows left out.
+class StopsOnABrokenRowSolver final : public Solver {
+ public:
+  StopsOnABrokenRowSolver(const LpData& full, std::atomic<bool>* stop) : full_(full), stop_(stop) {}
+  std::string_view name() const override { return "stops-on-a-broken-row"; }
+  std::string version() const override { return "0"; }
+  mutable int solves = 0;
+  mutable int stopped = 0;
+
+ private:
+  SolveResult DoSolve(const LpData& lp, const SolveOptions& o) const override {
+    ++solves;
+    SolveOptions inner = o;
+    bool reported_a_model_solution = false;
+    Eigen::VectorXd last;
+    inner.on_incumbent = [&](const Eigen::VectorXd& x) {
+      if (o.on_incumbent) o.on_incumbent(x);
+      last = x;
+      if (full_.MaxViolation(x) <= 1e-9) reported_a_model_solution = true;
+    };
+    SolveResult r = cbc_->Solve(lp, inner);
+    if (stopped == 0 && reported_a_model_solution && r.has_solution() &&
+        full_.MaxViolation(r.x) > 1e-9) {
+      // As if the limit came now: CBC's result stands, but "feasible".
+      ++stopped;
+      stop_->store(true);
+      r.status = SolveStatus::kFeasible;
+      r.detail += "; test: interrupted";
+    }
+    return r;
+  }
+  LpRelaxationResult DoSolveLpRelaxation(const LpData& lp, const SolveOptions& o) const override {
+    return cbc_->SolveLpRelaxation(lp, o);
+  }
+  const LpData& full_;
+  std::atomic<bool>* stop_;
+  std::unique_ptr<Solver> cbc_ = MakeCbcSolver();
+};
+
+// Never lose a schedule: a subset search that ends at a limit on a solution
+// breaking a left-out row returns the model's best incumbent it reported
+// before (status kFeasible, every row kept), where the option off returns
+// nothing.
+TEST(SolveWithLazyRows, ALimitOnABrokenRowReturnsTheModelsBestIncumbent) {
+  int cases = 0;
+  for (unsigned seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const LpData lp = RandomKnapsack(14, 40, seed, 0.35);
+    std::atomic<bool> stop{false};
+    SolveOptions o = Exact();
+    o.interrupt = &stop;
+    const StopsOnABrokenRowSolver on(lp, &stop);
+    LazyRowReport report;
+    const SolveResult r = SolveWithLazyRows(on, lp, o, SmallDense(), &report);
+    if (on.stopped == 0) continue;  // no subset search got there
+    ++cases;
+    ASSERT_EQ(r.status, SolveStatus::kFeasible) << r.detail;
+    EXPECT_TRUE(report.kept_incumbent);
+    EXPECT_LE(lp.MaxViolation(r.x), 1e-6);
+    EXPECT_LE(r.objective, Enumerate(lp) + 1e-6);  // maximisation
+    EXPECT_NE(r.detail.find("the model's best solution"), std::string::npos) << r.detail;
+    stop = false;
+    const StopsOnABrokenRowSolver off_solver(lp, &stop);
+    LazyRowOptions off = SmallDense();
+    off.keep_model_incumbents = false;
+    const SolveResult r_off = SolveWithLazyRows(off_solver, lp, o, off);
+    EXPECT_EQ(off_solver.stopped, 1);
+    EXPECT_FALSE(r_off.has_solution()) << r_off.detail;
+  }
+  EXPECT_GE(cases, 1) << "no knapsack reached the path under test";
 }
 
 // Integer-infeasible but LP-feasible (an odd right-hand side for an even

@@ -95,6 +95,10 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
     o.milp = Exact();
     const ScheduleResult a = SolveSchedule(p, *solver, o);
     const ScheduleResult b = SolveSchedule(p, *solver, o);
+    // Lazy-row rounds that keep only their final solution (the previous
+    // release): the same optimum.
+    o.search.lazy_rows_keep_incumbents = false;
+    const ScheduleResult final_solutions_only = SolveSchedule(p, *solver, o);
     o.search.lazy_rows = false;
     const ScheduleResult whole_rows = SolveSchedule(p, *solver, o);
     o.search.enabled = false;
@@ -106,6 +110,8 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
     EXPECT_LE(a.search.lp_bound, ref.solve.objective + 1e-9);
     EXPECT_EQ(a.solve.objective, b.solve.objective);
     EXPECT_NEAR(whole_rows.solve.objective, ref.solve.objective, 1e-9 * ref.solve.objective);
+    EXPECT_NEAR(final_solutions_only.solve.objective, ref.solve.objective,
+                1e-9 * ref.solve.objective);
     EXPECT_EQ(a.schedule.pattern, b.schedule.pattern);
     EXPECT_EQ(a.search.steps.size(), b.search.steps.size());
     EXPECT_TRUE(a.check.operational_ok) << a.check.Summary();
