@@ -165,10 +165,14 @@ class LazySolve {
   }
 
   // Whether the kept solution beats `s`, a solution of the model that a
-  // search stopped at a limit ended on (a completed search cannot end worse).
+  // search stopped at a limit ended on (a completed search cannot end
+  // worse: an optimal `s` stands).
   bool KeptIsBetter(const SolveResult& s) const {
-    return best_x_.size() > 0 &&
-           (!s.has_solution() || Sign() * best_objective_ < Sign() * s.objective);
+    if (best_x_.size() == 0) return false;
+    if (!s.has_solution()) return true;
+    if (s.status == SolveStatus::kOptimal) return false;
+    const double margin = 1e-9 * std::max(1.0, std::abs(s.objective));
+    return Sign() * best_objective_ < Sign() * s.objective - margin;
   }
 
   // The model's best kept solution, when the last search ended without a
