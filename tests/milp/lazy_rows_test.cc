@@ -83,9 +83,11 @@ TEST(SolveWithLazyRows, FindsTheEnumeratedOptimumWithRowsLeftOut) {
     for (size_t k = 1; k < reported.size(); ++k) EXPECT_GT(reported[k], reported[k - 1]);
     for (const Eigen::VectorXd& x : heard) EXPECT_LE(lp.MaxViolation(x), 1e-6);
     if (reported.size() >= 2) ++kept_before_the_end;
-    LazyRowOptions off = SmallDense();
-    off.keep_model_incumbents = false;
-    EXPECT_NEAR(SolveWithLazyRows(*solver, lp, Exact(), off).objective, expected, 1e-6);
+    if (seed <= 2) {  // (each solve costs minutes under ASan)
+      LazyRowOptions off = SmallDense();
+      off.keep_model_incumbents = false;
+      EXPECT_NEAR(SolveWithLazyRows(*solver, lp, Exact(), off).objective, expected, 1e-6);
+    }
     EXPECT_NEAR(r.objective, expected, 1e-6);
     EXPECT_NEAR(r.best_bound, expected, 1e-6);
     EXPECT_LE(lp.MaxViolation(r.x), 1e-6);
@@ -148,7 +150,7 @@ class StopsOnABrokenRowSolver final : public Solver {
 // nothing.
 TEST(SolveWithLazyRows, ALimitOnABrokenRowReturnsTheModelsBestIncumbent) {
   int cases = 0;
-  for (unsigned seed = 1; seed <= 12; ++seed) {
+  for (unsigned seed = 1; seed <= 12 && cases < 2; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const LpData lp = RandomKnapsack(14, 40, seed, 0.35);
     std::atomic<bool> stop{false};
