@@ -142,26 +142,16 @@ class LazySolve {
   // The rows in the subset are those of the running solve (in_ changes only
   // between solves).
   void KeepIfTheModelsSolution(const Eigen::VectorXd& x) {
-    const Eigen::VectorXd activity = lp_.a_matrix * x;
-    for (int i = 0; i < lp_.num_rows(); ++i) {
-      if (in_[static_cast<size_t>(i)]) continue;
-      if (Violation(activity[i], lp_.row_lower[i], lp_.row_upper[i]) > lazy_.violation_tolerance) {
-        return;
-      }
-    }
+    if (!BrokenRows(x).empty()) return;
     const double objective = lp_.Objective(x);
     if (best_x_.size() > 0 && !(Sign() * objective < Sign() * best_objective_)) return;
     best_x_ = x;
     best_objective_ = objective;
     best_wall_seconds_ = Elapsed();
-    if (options_.progress) {
-      SolveProgress p;
-      p.wall_seconds = best_wall_seconds_;
-      p.objective = objective;
-      p.new_incumbent = true;
-      options_.progress(p);
-    }
-    if (options_.on_incumbent) options_.on_incumbent(x);
+    SolveProgress p;
+    p.wall_seconds = best_wall_seconds_;
+    p.objective = objective;
+    Announce(p, x);
   }
 
   // Whether the kept solution beats `s`, a solution of the model that a
@@ -195,17 +185,20 @@ class LazySolve {
   }
 
   void ReportSolution(const SolveResult& s) const {
-    if (options_.progress) {
-      SolveProgress p;
-      p.wall_seconds = Elapsed();
-      p.objective = s.objective;
-      p.best_bound = s.best_bound;
-      p.gap = s.gap;
-      p.nodes = s.nodes;
-      p.new_incumbent = true;
-      options_.progress(p);
-    }
-    if (options_.on_incumbent) options_.on_incumbent(s.x);
+    SolveProgress p;
+    p.wall_seconds = Elapsed();
+    p.objective = s.objective;
+    p.best_bound = s.best_bound;
+    p.gap = s.gap;
+    p.nodes = s.nodes;
+    Announce(p, s.x);
+  }
+
+  // A solution of the model, to the caller's progress and on_incumbent.
+  void Announce(SolveProgress p, const Eigen::VectorXd& x) const {
+    p.new_incumbent = true;
+    if (options_.progress) options_.progress(p);
+    if (options_.on_incumbent) options_.on_incumbent(x);
   }
 
   // The LP relaxation by dual simplex; its binding dense rows join the
@@ -230,17 +223,23 @@ class LazySolve {
     return true;
   }
 
-  int AddBrokenRows(const Eigen::VectorXd& x) {
+  // The left-out rows `x` breaks, ascending.
+  std::vector<int> BrokenRows(const Eigen::VectorXd& x) const {
     const Eigen::VectorXd activity = lp_.a_matrix * x;
-    int added = 0;
+    std::vector<int> broken;
     for (int i = 0; i < lp_.num_rows(); ++i) {
       if (in_[static_cast<size_t>(i)]) continue;
       if (Violation(activity[i], lp_.row_lower[i], lp_.row_upper[i]) > lazy_.violation_tolerance) {
-        in_[static_cast<size_t>(i)] = 1;
-        ++added;
+        broken.push_back(i);
       }
     }
-    return added;
+    return broken;
+  }
+
+  int AddBrokenRows(const Eigen::VectorXd& x) {
+    const std::vector<int> broken = BrokenRows(x);
+    for (int i : broken) in_[static_cast<size_t>(i)] = 1;
+    return static_cast<int>(broken.size());
   }
 
   SolveResult Whole(const std::string& why) {
