@@ -15,6 +15,7 @@
 #include "milp/lazy_rows.h"
 #include "milp/lp_bound.h"
 #include "transcription/dormant.h"
+#include "transcription/internal/build_time.h"
 #include "transcription/total_branching.h"
 
 namespace thrustsched::transcription {
@@ -303,14 +304,36 @@ class Search {
     return mask;
   }
 
-  Restriction Restrict(const Eigen::MatrixXi& mask) const {
+  Restriction Restrict(const Eigen::MatrixXi& mask) {
+    const double t0 = Elapsed();
     BuildOptions bo = milp_.options();
     bo.formulation = search_.restricted_formulation;
     bo.free_slots = mask;
     Restriction r{ScheduleMilp(milp_.problem(), milp_.discrete(), bo), {}, {}, true};
     r.small = milp::RemoveFixedColumns(r.milp.lp(), &r.kept, &r.feasible);
     r.feasible = r.feasible && r.milp.infeasibility_reasons().empty();
+    if (Count(mask) >= largest_built_slots_) {
+      largest_built_slots_ = Count(mask);
+      largest_built_seconds_ = Elapsed() - t0;
+    }
     return r;
+  }
+
+  // Condensing a restriction cannot be interrupted and takes seconds on a
+  // large net (5.3 s for 4043 slots of a six-thruster GEO week), so under a
+  // time limit a net is not built when it would not be ready before the
+  // limit: its time is estimated from the largest net built so far (the
+  // time grows about linearly with the free slots). Without that, the
+  // widening of week c41 of data/scenarios/hard/ built a 3474-slot net
+  // with less than a second left and ended 9.4 s after its 60-s limit.
+  bool TimeToBuild(const Eigen::MatrixXi& mask) {
+    const double needed = internal::RestrictionBuildSeconds(Count(mask), largest_built_slots_,
+                                                            largest_built_seconds_);
+    if (needed < Remaining()) return true;
+    Step("the MILP over " + std::to_string(Count(mask)) + " slots not built: about " +
+         FormatG(needed, 2) + " s to condense, " + FormatG(std::max(0.0, Remaining()), 2) +
+         " s left");
+    return false;
   }
 
   // The full MILP's point of a restricted solution (its on-off pattern).
@@ -352,7 +375,7 @@ class Search {
              std::to_string(search_.max_widened_slots) + "): not widened further");
         return;
       }
-      if (HeuristicNet(mask, " candidate slots", widening)) return;
+      if (!TimeToBuild(mask) || HeuristicNet(mask, " candidate slots", widening)) return;
       previous = mask;
     }
   }
@@ -361,9 +384,9 @@ class Search {
   // schedule, which is offered; `level` is the widening level step 4a's
   // improvement nets continue from.
   bool HeuristicNet(const Eigen::MatrixXi& mask, const std::string& slots, int level) {
+    const double t0 = Elapsed();  // the step's time counts its MILP's condensing
     const Restriction r = Restrict(mask);
     if (report_ != nullptr) report_->candidate_slots = Count(mask);
-    const double t0 = Elapsed();
     milp::SolveResult s;
     if (r.feasible) s = SolveRestricted(r.small, HeuristicOptions());
     nodes_ += s.nodes;
@@ -377,8 +400,8 @@ class Search {
       heuristic_level_ = level;
       return true;
     }
-    Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened" +
-         (r.feasible ? lazy_note_ : ""));
+    Step(what + ": " + (r.feasible ? StatusText(s) : "infeasible") + ", widened after " +
+         FormatG(Elapsed() - t0, 3) + " s" + (r.feasible ? lazy_note_ : ""));
     return false;
   }
 
@@ -398,6 +421,7 @@ class Search {
     }
     if (Count(mask) == 0 || Count(mask) > search_.max_widened_slots) return false;
     if ((mask.array() <= previous.array()).all()) return false;
+    if (!TimeToBuild(mask)) return true;  // the nets after it are no smaller
     return HeuristicNet(mask, " slots of the thrusters the relaxation fires", level);
   }
 
@@ -460,11 +484,12 @@ class Search {
       const Eigen::MatrixXi& mask, const std::string& what, const std::string& source,
       const std::function<std::vector<milp::SparseRow>(const Restriction&)>& extra_rows = {},
       double time_share = 0.0) {  // 0: heuristic_time_share
+    if (!TimeToBuild(mask)) return false;
+    const double t0 = Elapsed();
     Restriction r = Restrict(mask);
     if (!r.feasible) return false;
     AddObjectiveCutoff(&r.small, Cutoff());
     if (extra_rows) milp::AppendRows(&r.small, extra_rows(r));
-    const double t0 = Elapsed();
     const milp::SolveResult s = SolveRestricted(
         r.small, HeuristicOptions(time_share > 0.0 ? time_share : search_.heuristic_time_share));
     nodes_ += s.nodes;
@@ -614,10 +639,11 @@ class Search {
            std::to_string(search_.max_exact_slots) + "): the whole MILP instead");
       return false;
     }
+    if (!TimeToBuild(mask)) return false;
+    const double t0 = Elapsed();
     Restriction r = Restrict(mask);
     const double before = objective_;
     AddObjectiveCutoff(&r.small, Cutoff());
-    const double t0 = Elapsed();
     milp::SolveResult s;
     milp::SolveOptions o = RestrictedOptions();
     if (!tree_ran_ && search_.total_branching_lps >= 2 && std::isfinite(o.time_limit_s))
@@ -769,6 +795,7 @@ class Search {
              std::to_string(search_.max_exact_leaf_slots) + ")");
         break;
       }
+      if (!TimeToBuild(leaf.free_slots)) break;
       lowest = std::min(lowest, std::max(leaf.bound, SolveLeaf(t, leaf)));
       if (Done()) {
         ++k;
@@ -784,9 +811,9 @@ class Search {
   // One leaf's exact MILP; returns a bound for the leaf.
   double SolveLeaf(const TotalBranching& t, const OpenLeaf& leaf) {
     const double before = objective_;
+    const double t0 = Elapsed();
     Restriction r = Restrict(leaf.free_slots);
     milp::SolveResult s;
-    const double t0 = Elapsed();
     if (r.feasible) {
       AddObjectiveCutoff(&r.small, Cutoff());
       milp::AppendRows(&r.small, TotalRows(r, t.groups, leaf.lower, leaf.upper));
@@ -977,6 +1004,8 @@ class Search {
   int heuristic_level_ = 0;                   // widening level of the heuristic's incumbent
   int improvement_level_ = -1;                // next widening level of step 4a (-1: not started)
   Eigen::MatrixXi last_improvement_mask_;     // its last net, not solved twice
+  int largest_built_slots_ = 0;               // the largest restriction built (TimeToBuild)
+  double largest_built_seconds_ = 0.0;        // and its condensing time
   bool tree_ran_ = false;                     // step 4b started (exact_time_share)
   double windows_at_ = kInf;                  // incumbent when step 4d last ran
   bool exchange_started_ = false;             // step 4c's axes chosen

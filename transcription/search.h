@@ -89,6 +89,9 @@
 //  5. Otherwise, or with no incumbent: the solver on the whole MILP, on its
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
+// A step's time in the log (SearchReport::steps) counts the building of its
+// restricted MILP: condensing a net of a six-thruster GEO week over its free
+// slots takes 0.7 s for 546 slots and 5.3 s for 4043 (the exchange's).
 // Heuristic steps give incumbents only; bounds come from the LP duals and
 // from exact (restricted-by-proof) solves. Deterministic for the same input
 // and options (node limits, no wall-clock decision) unless a time limit or

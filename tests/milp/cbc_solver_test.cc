@@ -709,7 +709,9 @@ TEST(CbcSolverTest, OnIncumbentHearsEachIncumbentWithItsColumns) {
   ASSERT_GE(heard.size(), 2u) << "the instance is too easy to tell incumbents apart";
   for (size_t k = 0; k < heard.size(); ++k) {
     EXPECT_LE(lp.MaxViolation(heard[k]), 1e-6);
-    if (k > 0) EXPECT_GT(lp.Objective(heard[k]), lp.Objective(heard[k - 1]));  // maximisation
+    if (k > 0) {
+      EXPECT_GT(lp.Objective(heard[k]), lp.Objective(heard[k - 1]));  // maximisation
+    }
   }
   EXPECT_NEAR(lp.Objective(heard.back()), r.objective, 1e-9 * std::max(1.0, std::abs(r.objective)));
   o.on_incumbent = [](const Eigen::VectorXd&) { throw std::runtime_error("enough"); };

@@ -27,6 +27,7 @@
 #include "milp/lp_data.h"
 #include "tests/transcription/thesis_cases.h"
 #include "transcription/dormant.h"
+#include "transcription/internal/build_time.h"
 #include "transcription/search.h"
 #include "transcription/solve.h"
 #include "transcription/total_branching.h"
@@ -385,6 +386,17 @@ TEST(SearchSchedule, TheCapOnTheNetsEndsTheWidening) {
     EXPECT_EQ(steps.find("MILP restricted to 48 candidate slots") != std::string::npos, cap == 48)
         << steps;
   }
+}
+
+// The search does not start condensing a net that would not be ready before
+// its time limit; the estimate scales the largest net built so far.
+TEST(RestrictionBuildSeconds, ScalesTheLargestNetBuiltLinearly) {
+  EXPECT_NEAR(internal::RestrictionBuildSeconds(4043, 546, 0.71), 0.71 * 4043.0 / 546.0, 1e-12);
+  EXPECT_NEAR(internal::RestrictionBuildSeconds(273, 546, 0.71), 0.355, 1e-12);
+  EXPECT_EQ(internal::RestrictionBuildSeconds(4043, 0, 0.0), 0.0);  // none built yet
+  EXPECT_EQ(internal::RestrictionBuildSeconds(0, 546, 0.71), 0.0);  // an empty net
+  EXPECT_EQ(internal::RestrictionBuildSeconds(100, 546, 0.0),
+            0.0);  // built within the clock's tick
 }
 
 TEST(SearchOptions, InvalidValuesAreNamed) {
