@@ -395,8 +395,8 @@ TEST(RestrictionBuildSeconds, ScalesTheLargestNetBuiltLinearly) {
   EXPECT_NEAR(internal::RestrictionBuildSeconds(273, 546, 0.71), 0.355, 1e-12);
   EXPECT_EQ(internal::RestrictionBuildSeconds(4043, 0, 0.0), 0.0);  // none built yet
   EXPECT_EQ(internal::RestrictionBuildSeconds(0, 546, 0.71), 0.0);  // an empty net
-  EXPECT_EQ(internal::RestrictionBuildSeconds(100, 546, 0.0),
-            0.0);  // built within the clock's tick
+  // A net built within the clock's tick says nothing of the next one.
+  EXPECT_EQ(internal::RestrictionBuildSeconds(100, 546, 0.0), 0.0);
 }
 
 TEST(SearchOptions, InvalidValuesAreNamed) {
