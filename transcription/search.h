@@ -91,7 +91,8 @@
 //     which is kept if the solver finds nothing better).
 // A step's time in the log (SearchReport::steps) counts the building of its
 // restricted MILP: condensing a net of a six-thruster GEO week over its free
-// slots takes 0.7 s for 546 slots and 5.3 s for 4043 (the exchange's).
+// slots took 0.7 s for 546 slots and 5.3 s for 4043 (the exchange's; c41 of
+// data/scenarios/hard/, timed around the build alone).
 // Heuristic steps give incumbents only; bounds come from the LP duals and
 // from exact (restricted-by-proof) solves. Deterministic for the same input
 // and options (node limits, no wall-clock decision) unless a time limit or
