@@ -503,15 +503,14 @@ class Search {
   // the thrusters on one axis (directions parallel or opposite) and to the
   // incumbent's slots of the others, with the cutoff. The nets above grow
   // around the relaxation's slots in time; here an axis' firings can move
-  // anywhere in the week. Only when the MILP's rows fall into blocks that
-  // the on-off rules alone tie together (DormantThrusters::num_blocks: the
-  // orbit plane and its normal of the linear GEO and Hill-Clohessy-Wiltshire
-  // models, with thrusters along the orbital frame's axes): an axis of one
-  // block is then held back by the incumbent's firings of another only
-  // through the rules (one thruster at a time, rests). With thrusters that
-  // push both ways (the thesis' four Anzel thrusters) every firing moves
-  // the whole state; on week 35 of the NE-failure hard weeks the exchanges
-  // took 17 s and found nothing.
+  // anywhere in the week. Only for thrusters along the orbital frame's
+  // axes in opposite pairs (AxisExchangeApplies: the ideal six): each
+  // firing then moves its own axis' components of the state, and a pair
+  // can trade its firings over the week (+T early, -T later) while the
+  // other axes keep theirs. With thrusters that push both ways (the
+  // thesis' four Anzel thrusters, each alone on its axis) every firing
+  // moves the whole state; on week 35 of the NE-failure hard weeks the
+  // exchanges took 17 s and found nothing.
   // The axes of ExchangeAxes, those where rounding lost most first. Returns
   // at the first improvement (for step 4 to try its proof); called again,
   // it solves the axes not yet solved against the new incumbent (block
@@ -543,17 +542,15 @@ class Search {
   }
 
   // Axes (ThrusterAxes) the incumbent fires at least one slot more than the
-  // relaxation does, most first; none unless the rules alone tie the MILP's
-  // blocks. An axis where the relaxation matches the incumbent within a
-  // slot has little to give: on the six-thruster hard weeks (02-52 of
-  // data/scenarios/hard/) the incumbent fires +N and -N 0.06-0.66 slots
-  // more than the relaxation and their exchange never improved (4-8 s
-  // each), +T and -T 2.1-5.5 more and theirs improved in 5 of the 7 weeks
-  // where it ran (run before the tree).
+  // relaxation does, most first; none unless AxisExchangeApplies. An axis
+  // where the relaxation matches the incumbent within a slot has little to
+  // give: on the six-thruster hard weeks (02-52 of data/scenarios/hard/)
+  // the incumbent fires +N and -N 0.06-0.66 slots more than the relaxation
+  // and their exchange never improved (4-8 s each), +T and -T 2.1-5.5 more
+  // and theirs improved in 5 of the 7 weeks where it ran (run before the
+  // tree).
   std::vector<ThrusterGroup> ExchangeAxes() const {
-    const int blocks =
-        search_.drop_dormant_blocks ? dormant_.num_blocks : FindDormantThrusters(milp_).num_blocks;
-    if (blocks < 2) return {};
+    if (!AxisExchangeApplies(milp_.problem().thrusters)) return {};
     const OperationalEncoding& enc = milp_.encoding();
     std::vector<std::pair<double, ThrusterGroup>> ranked;
     for (ThrusterGroup& axis : ThrusterAxes(milp_.problem().thrusters)) {
@@ -1082,6 +1079,22 @@ bool SearchOptions::IsValid(std::string* error) const {
   if (max_exact_slots < 0)
     return fail("max_exact_slots must be >= 0, got " + std::to_string(max_exact_slots));
   return true;
+}
+
+// Until this release the test was "the MILP's rows fall into two blocks or
+// more" (DormantThrusters::num_blocks, meant as the orbit plane and its
+// normal). The GEO weeks' linear model ties the plane and its normal into
+// one block, and only the thesis encoding's shared columns (gamma, one
+// block each) passed that test, the tight encoding's did not: week 10 of
+// the six-thruster year (data/scenarios/hard/, tight encoding, 60 s, two
+// threads) ended 10.5 % from its bound without the exchange; with it, the
+// exchange along +T and -T found the optimum, proven at 59.4 s in one run
+// and left 5.6 % from the bound in another (the windows' proof unfinished).
+bool AxisExchangeApplies(const dynamics::ThrusterSet& thrusters) {
+  const std::vector<ThrusterGroup> axes = ThrusterAxes(thrusters);
+  return axes.size() >= 2 && std::any_of(axes.begin(), axes.end(), [](const ThrusterGroup& a) {
+           return a.thrusters.size() >= 2;
+         });
 }
 
 milp::SolveResult SearchSchedule(const ScheduleMilp& milp, const milp::Solver& solver,

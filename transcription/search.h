@@ -65,8 +65,9 @@
 //     thrusters on one axis (+T and -T, say) and to the incumbent's slots of
 //     the others, with the cutoff, for the axes the incumbent fires a slot
 //     or more above the relaxation, again while one improves (step 4 after
-//     each better schedule), and only when the on-off rules alone tie the
-//     MILP's blocks (the orbit plane and its normal); an axis' firings can
+//     each better schedule), and only for thrusters in opposite pairs on
+//     the frame's axes (AxisExchangeApplies: the ideal six, whatever the
+//     encoding; not the four Anzel thrusters); an axis' firings can
 //     move anywhere in the week, out of every net around the relaxation's
 //     slots (each MILP with up to half the time left: after the tree, the
 //     bound's work left is step 4's proof);
@@ -357,6 +358,13 @@ milp::SolveResult SearchSchedule(const ScheduleMilp& milp, const milp::Solver& s
                                  const milp::SolveOptions& options, const SearchOptions& search,
                                  const std::vector<Eigen::VectorXd>& starts,
                                  SearchReport* report = nullptr);
+
+/// Whether step 4c's exchange along an axis applies to `thrusters`: they lie
+/// on two axes or more (ThrusterAxes: an exchange keeps the other axes'
+/// firings) and one axis holds two of them or more (the ideal six's +T and
+/// -T), not the thesis' four Anzel thrusters (each alone on its axis).
+/// Depends on the thrusters only, not on the MILP's encoding.
+bool AxisExchangeApplies(const dynamics::ThrusterSet& thrusters);
 
 }  // namespace thrustsched::transcription
 

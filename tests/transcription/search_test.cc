@@ -290,6 +290,20 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
 // Step 4c, the exchange along an axis. Ideal six in Hill-Clohessy-Wiltshire:
 // three axes, and the rows split into the orbit plane's block and its
 // normal's, tied only by the rules; Anzel's four thrusters, one axis each.
+
+// The exchange needs two axes, one of them a pair, whatever the encoding:
+// the ideal six (and the ideal six without -R) have pairs on three axes;
+// the thesis' four Anzel thrusters lie on four axes, one each; +N and -N
+// alone are one axis, nothing to keep while it is exchanged.
+TEST(AxisExchangeApplies, NeedsTwoAxesOneOfThemAPair) {
+  const dynamics::ThrusterSet six = dynamics::ThrusterSet::Ideal6(1, 1, 1);
+  EXPECT_TRUE(AxisExchangeApplies(six));
+  EXPECT_TRUE(AxisExchangeApplies(six.Subset({"+R", "+T", "+N", "-T", "-N"})));
+  EXPECT_FALSE(AxisExchangeApplies(six.Subset({"+N", "-N"})));
+  EXPECT_FALSE(AxisExchangeApplies(six.Subset({"+R", "+T", "+N"})));
+  EXPECT_FALSE(AxisExchangeApplies(dynamics::ThrusterSet::Anzel4(1, 1, 1)));
+}
+
 // From the restricted MILP's schedule the exchange along one axis reaches
 // CBC alone's proven optimum, where without it the search only gets there
 // by CBC on the whole MILP (step 5).
