@@ -46,7 +46,13 @@ struct DormantThrusters {
   std::vector<bool> thruster;  // per thruster
   std::vector<bool> column;    // per column of the MILP: in a dormant block
   Eigen::VectorXd all_off;     // the MILP's point with every thruster off
-  int num_blocks = 0;          // blocks of the MILP (1: nothing to split)
+  /// Blocks of the MILP without the rows that tie several thrusters
+  /// (1: nothing to split). A column found only in such rows is a block of
+  /// its own: each shared gamma column of the thesis encoding (Gazzino
+  /// 2018, sec. 4.2.1) is, so a GEO week counts thousands of blocks with
+  /// its orbit plane and normal in one. Two or more blocks do not mean
+  /// that the thrusters split.
+  int num_blocks = 0;
 
   bool any() const;
   /// "+R, +T" (names of the dormant thrusters).

@@ -60,7 +60,10 @@
 //     totals restricted to them is exact for the leaf: it closes the leaf or
 //     improves the incumbent); otherwise the MILP with the lowest leaf's
 //     bounds on the totals, restricted to every slot of the thrusters its LP
-//     fires (or, if too many, the slots it uses);
+//     fires (or, if too many, the slots it uses); when that leaves the
+//     incumbent one step above the bound, the MILPs of the other leaves at
+//     the bound over their LP's candidate slots widened once
+//     (`other_leaf_nets`: the schedule at the bound may lie in any of them);
 //  4c. the exchange along an axis: the MILP restricted to every slot of the
 //     thrusters on one axis (+T and -T, say) and to the incumbent's slots of
 //     the others, with the cutoff, for the axes the incumbent fires a slot
@@ -197,6 +200,16 @@ struct SearchOptions {
   /// 12-step schedule in 4 s (100 nodes), proving it optimal (13 steps and
   /// 7.69 % with 3000).
   int max_exact_leaf_slots = 6000;
+  /// When the incumbent is one step above the bound after the lowest leaf's
+  /// restricted MILP (step 4b), the MILPs of up to this many other open
+  /// leaves at the bound, each restricted to its LP's candidate slots
+  /// widened once (as step 2's first widening) with its totals and the
+  /// cutoff. 0: the previous release's search, kept for comparison in the
+  /// bench. Week 33 of data/scenarios/hard/ (six thrusters, 60 s, two
+  /// threads): where step 2's net stops at its share on 35 or 36 slots
+  /// (bound 34), the lowest leaf (+N <= 14) holds only 35; the other leaf
+  /// at the bound (+N >= 15) held the optimum in its 1266-slot net (4 s).
+  int other_leaf_nets = 2;
   /// Hand the incumbent to the solver of the whole MILP (step 5) as its MIP
   /// start and cutoff. Off: measured on a six-thruster week of the year
   /// (week 2), CBC given the search's 0.1475 m/s plan found nothing better in

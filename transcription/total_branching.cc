@@ -409,7 +409,7 @@ class Tree {
               [](const Leaf* a, const Leaf* b) { return LowerThan(*a, *b); });
     std::vector<OpenLeaf> open;
     for (const Leaf* leaf : below)
-      open.push_back({leaf->lower, leaf->upper, leaf->bound, leaf->free_slots});
+      open.push_back({leaf->lower, leaf->upper, leaf->bound, leaf->free_slots, leaf->x});
     return open;
   }
 

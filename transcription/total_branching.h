@@ -165,6 +165,8 @@ struct OpenLeaf {
   /// restricted to these slots, is exact for the leaf. Empty when its LP gave
   /// no point (or there is no incumbent).
   Eigen::MatrixXi free_slots;
+  /// Its LP point; empty when it has none within its totals.
+  Eigen::VectorXd x;
 };
 
 struct TotalBranching {

@@ -184,8 +184,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     b->Add(c, suffix + "-search");
     c.search_previous = true;
     c.variant =
-        "search as the previous release ran it (lazy-row rounds keep only their final "
-        "solution)";
+        "search as the previous release ran it (no restricted MILP of the tree's other "
+        "leaves at the bound)";
     b->Add(c, suffix + "-previous");
     c.search_previous = false;
     c.search = false;

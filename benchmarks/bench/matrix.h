@@ -67,10 +67,9 @@ struct CaseSpec {
   /// The problem-aware search (transcription::SearchSchedule, what `solve`
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
-  /// With `search`: the search as the previous release ran it, lazy-row
-  /// rounds that keep only their final solution
-  /// (SearchOptions::lazy_rows_keep_incumbents off), for the side-by-side
-  /// ratio.
+  /// With `search`: the search as the previous release ran it, without the
+  /// restricted MILPs of the tree's other leaves at the bound
+  /// (SearchOptions::other_leaf_nets 0), for the side-by-side ratio.
   bool search_previous = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within

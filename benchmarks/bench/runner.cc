@@ -242,9 +242,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): a restricted MILP's lazy-row
-    // rounds keep only their final solution.
-    if (spec.search_previous) search.lazy_rows_keep_incumbents = false;
+    // The previous release's search (matrix.h): no restricted MILP of the
+    // tree's other leaves at the bound.
+    if (spec.search_previous) search.other_leaf_nets = 0;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

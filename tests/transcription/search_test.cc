@@ -96,7 +96,7 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
     o.milp = Exact();
     const ScheduleResult a = SolveSchedule(p, *solver, o);
     const ScheduleResult b = SolveSchedule(p, *solver, o);
-    // Lazy-row rounds that keep only their final solution (the previous
+    // Lazy-row rounds that keep only their final solution (an earlier
     // release): the same optimum.
     o.search.lazy_rows_keep_incumbents = false;
     const ScheduleResult final_solutions_only = SolveSchedule(p, *solver, o);
@@ -443,6 +443,10 @@ TEST(SearchOptions, InvalidValuesAreNamed) {
   s.max_exact_leaf_slots = -5;
   EXPECT_FALSE(s.IsValid(&error));
   EXPECT_NE(error.find("max_exact_leaf_slots must be >= 0, got -5"), std::string::npos) << error;
+  s = SearchOptions{};
+  s.other_leaf_nets = -1;
+  EXPECT_FALSE(s.IsValid(&error));
+  EXPECT_NE(error.find("other_leaf_nets must be >= 0, got -1"), std::string::npos) << error;
   s = SearchOptions{};
   s.max_exchange_slots = -4;
   EXPECT_FALSE(s.IsValid(&error));

@@ -172,6 +172,7 @@ TEST(BranchOnThrusterTotals, OpenLeavesFreeSlotsHoldTheOptimum) {
   exact.max_nodes = 200000;
   double best = kInf;
   int best_free = 0;
+  int with_point = 0;  // open leaves with an LP point
   for (size_t k = 0; k < t.open.size(); ++k) {
     const OpenLeaf& leaf = t.open[k];
     SCOPED_TRACE("open leaf " + std::to_string(k) + " of " + t.detail);
@@ -182,6 +183,17 @@ TEST(BranchOnThrusterTotals, OpenLeavesFreeSlotsHoldTheOptimum) {
     ASSERT_EQ(leaf.free_slots.cols(), enc.num_intervals);
     const int free = leaf.free_slots.sum();
     EXPECT_GT(free, 0);
+    // Its LP point, where it has one, lies within its totals (the search
+    // widens a net around it, SearchOptions::other_leaf_nets).
+    if (leaf.x.size() > 0) {
+      ++with_point;
+      ASSERT_EQ(leaf.x.size(), milp.lp().num_cols());
+      const std::vector<double> totals = GroupTotalsAt(t.groups, enc, leaf.x);
+      for (size_t g = 0; g < totals.size(); ++g) {
+        EXPECT_GE(totals[g], leaf.lower[g] - 1e-3) << t.groups[g].name;
+        EXPECT_LE(totals[g], leaf.upper[g] + 1e-3) << t.groups[g].name;
+      }
+    }
     milp::LpData restricted = WithGroupTotals(milp, t.groups, leaf.lower, leaf.upper);
     for (int i = 0; i < enc.num_thrusters; ++i) {
       for (int j = 0; j < enc.num_intervals; ++j) {
@@ -201,6 +213,7 @@ TEST(BranchOnThrusterTotals, OpenLeavesFreeSlotsHoldTheOptimum) {
   EXPECT_NEAR(best, optimum, 1e-9);
   // Found in a leaf where the fixing left slots out (a real restriction).
   EXPECT_LT(best_free, enc.num_thrusters * enc.num_intervals);
+  EXPECT_GT(with_point, 0);
 }
 
 // With two threads the children of each split are solved side by side: the
