@@ -874,10 +874,13 @@ class Search {
       mask = LeafCandidateSlots(t);
     }
     if (Count(mask) <= search_.max_exact_slots) LeafRestricted(t, mask);
-    OtherLeafNets(t);
+    // After LeafCandidates the other leaves' MILPs ran against this same
+    // incumbent (one step above the bound; a better one would be at it).
+    if (!candidates_tried) OtherLeafNets(t);
   }
 
-  // The lowest leaf's MILP restricted to its LP's candidate slots.
+  // The lowest leaf's MILP restricted to its LP's candidate slots, then the
+  // other leaves' (OtherLeafNets).
   void LeafCandidates(const TotalBranching& t) {
     const Eigen::MatrixXi mask = LeafCandidateSlots(t);
     if (Count(mask) <= search_.max_exact_slots) LeafRestricted(t, mask);
