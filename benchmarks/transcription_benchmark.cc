@@ -10,6 +10,10 @@
 //     6 ideal thrusters, 12 096 binaries).
 // BM_BuildGeoWeekCondensed/<days>  the condensed formulation on 1-3 days of
 //     the GEO grid, to show its O(N^2) growth.
+// BM_BuildGeoWeekRestricted/<thrusters>  what the search builds for a
+//     restricted MILP (transcription/search.cc): the condensed six-thruster
+//     GEO week with every slot of the first 1-3 thrusters free (2016-6048
+//     slots), then milp::RemoveFixedColumns.
 #include <memory>
 #include <string>
 
@@ -20,6 +24,7 @@
 #include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 #include "dynamics/thrusters.h"
+#include "milp/lp_data.h"
 #include "transcription/schedule_milp.h"
 
 namespace thrustsched::transcription {
@@ -27,10 +32,11 @@ namespace {
 
 constexpr double kDay = common::kSecondsPerDay;
 
-ScheduleProblem GeoProblem(double days) {
+ScheduleProblem GeoProblem(double days, bool six_thrusters = false) {
   ScheduleProblem p;
   p.model = std::make_shared<dynamics::GeoLinearModel>(dynamics::GeoModelOptions{});
-  p.thrusters = dynamics::ThrusterSet::Anzel4(0.265, 4850, 2005);
+  p.thrusters = six_thrusters ? dynamics::ThrusterSet::Ideal6(0.265, 4850, 2005)
+                              : dynamics::ThrusterSet::Anzel4(0.265, 4850, 2005);
   p.grid = dynamics::UniformGrid(0.0, days * kDay, static_cast<int>(days * 288));
   p.initial_state = Eigen::VectorXd::Zero(6);
   p.rules.min_burn_s = 300;
@@ -96,6 +102,28 @@ void BM_BuildGeoWeekCondensed(benchmark::State& state) {
   RunBuild(state, GeoProblem(static_cast<double>(state.range(0))), opt);
 }
 BENCHMARK(BM_BuildGeoWeekCondensed)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
+
+void BM_BuildGeoWeekRestricted(benchmark::State& state) {
+  const ScheduleProblem p = GeoProblem(7, /*six_thrusters=*/true);
+  BuildOptions opt;
+  opt.discretisation.scheme = dynamics::Scheme::kHermiteSimpson;
+  opt.formulation = Formulation::kCondensed;
+  opt.free_slots = Eigen::MatrixXi::Zero(p.thrusters.size(), p.num_intervals());
+  opt.free_slots.topRows(state.range(0)).setOnes();
+  const dynamics::DiscreteModel dm =
+      dynamics::Discretize(*p.model, p.thrusters.AccelerationMatrix(), p.grid, opt.discretisation);
+  long long nonzeros = 0;
+  for (auto _ : state) {
+    ScheduleMilp milp(p, dm, opt);
+    std::vector<int> kept;
+    bool feasible = true;
+    const milp::LpData small = milp::RemoveFixedColumns(milp.lp(), &kept, &feasible);
+    nonzeros = small.num_nonzeros();
+    benchmark::DoNotOptimize(small);
+  }
+  state.counters["nonzeros"] = static_cast<double>(nonzeros);
+}
+BENCHMARK(BM_BuildGeoWeekRestricted)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace thrustsched::transcription

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/format.h"
+#include "milp/internal/column_writer.h"
 #include "milp/internal/solve_clock.h"
 
 namespace thrustsched::milp {
@@ -338,16 +339,16 @@ LpData SelectRows(const LpData& lp, const std::vector<int>& rows) {
     out.row_upper[k] = lp.row_upper[rows[static_cast<size_t>(k)]];
     if (!lp.row_names.empty()) out.row_names.push_back(lp.row_names[rows[static_cast<size_t>(k)]]);
   }
-  std::vector<Eigen::Triplet<double, int>> t;
+  // position is increasing, so each column's selected rows stay sorted.
+  internal::ColumnWriter matrix(&out.a_matrix, m, lp.num_cols(), lp.a_matrix.nonZeros());
   for (int j = 0; j < lp.num_cols(); ++j) {
     for (SparseCol::InnerIterator it(lp.a_matrix, j); it; ++it) {
       const int k = position[static_cast<size_t>(it.row())];
-      if (k >= 0) t.emplace_back(k, j, it.value());
+      if (k >= 0) matrix.Push(k, it.value());
     }
+    matrix.EndColumn();
   }
-  out.a_matrix.resize(m, lp.num_cols());
-  out.a_matrix.setFromTriplets(t.begin(), t.end());
-  out.a_matrix.makeCompressed();
+  matrix.Finish();
   return out;
 }
 

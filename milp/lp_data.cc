@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "common/format.h"
+#include "milp/internal/column_writer.h"
 
 namespace thrustsched::milp {
 
@@ -231,7 +232,10 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
   out.col_lower.resize(nk);
   out.col_upper.resize(nk);
   out.col_type.resize(static_cast<size_t>(nk));
-  std::vector<Eigen::Triplet<double, int>> t;
+  // new_row is increasing, so each kept column's rows stay sorted.
+  long long kept_nonzeros = 0;
+  for (int j : keep) kept_nonzeros += lp.a_matrix.col(j).nonZeros();
+  internal::ColumnWriter matrix(&out.a_matrix, mk, nk, kept_nonzeros);
   for (int k = 0; k < nk; ++k) {
     const int j = keep[static_cast<size_t>(k)];
     out.col_cost[k] = lp.col_cost[j];
@@ -240,9 +244,11 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
     out.col_type[static_cast<size_t>(k)] = lp.col_type[static_cast<size_t>(j)];
     for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp.a_matrix, j); it;
          ++it) {
-      t.emplace_back(new_row[static_cast<size_t>(it.row())], k, it.value());
+      matrix.Push(new_row[static_cast<size_t>(it.row())], it.value());
     }
+    matrix.EndColumn();
   }
+  matrix.Finish();
   out.row_lower.resize(mk);
   out.row_upper.resize(mk);
   for (int r = 0; r < mk; ++r) {
@@ -250,9 +256,6 @@ LpData RemoveFixedColumns(const LpData& lp, std::vector<int>* kept, bool* feasib
     out.row_lower[r] = lp.row_lower[i] - constant[i];  // +-inf stay infinite
     out.row_upper[r] = lp.row_upper[i] - constant[i];
   }
-  out.a_matrix.resize(mk, nk);
-  out.a_matrix.setFromTriplets(t.begin(), t.end());
-  out.a_matrix.makeCompressed();
   if (static_cast<int>(lp.col_names.size()) == n) {
     for (int j : keep) out.col_names.push_back(lp.col_names[static_cast<size_t>(j)]);
   }
@@ -291,20 +294,22 @@ void AppendRows(LpData* lp, const std::vector<SparseRow>& rows) {
       if (row.coefficients[k] != 0.0) entries.emplace_back(m + r, row.coefficients[k]);
     }
   }
-  std::vector<Eigen::Triplet<double, int>> t;
-  t.reserve(static_cast<size_t>(lp->num_nonzeros()) + rows.size() * 8);
+  // Each column: its old rows (below m, sorted), then the new ones in order.
+  Eigen::Index nonzeros = lp->a_matrix.nonZeros();
+  for (const auto& entries : by_column) nonzeros += static_cast<Eigen::Index>(entries.size());
+  Eigen::SparseMatrix<double, Eigen::ColMajor, int> old;
+  old.swap(lp->a_matrix);
+  internal::ColumnWriter matrix(&lp->a_matrix, m + added, n, nonzeros);
   for (int j = 0; j < n; ++j) {
-    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(lp->a_matrix, j); it;
-         ++it) {
-      t.emplace_back(static_cast<int>(it.row()), j, it.value());
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(old, j); it; ++it) {
+      matrix.Push(static_cast<int>(it.row()), it.value());
     }
-    for (const auto& [i, v] : by_column[static_cast<size_t>(j)]) t.emplace_back(i, j, v);
+    for (const auto& [i, v] : by_column[static_cast<size_t>(j)]) matrix.Push(i, v);
+    matrix.EndColumn();
   }
+  matrix.Finish();
   // Rows named when the model's rows are (or, with none yet, its columns).
   const bool named = m > 0 ? static_cast<int>(lp->row_names.size()) == m : !lp->col_names.empty();
-  lp->a_matrix.resize(m + added, n);
-  lp->a_matrix.setFromTriplets(t.begin(), t.end());
-  lp->a_matrix.makeCompressed();
   lp->row_lower.conservativeResize(m + added);
   lp->row_upper.conservativeResize(m + added);
   for (int r = 0; r < added; ++r) {

@@ -419,6 +419,9 @@ void ScheduleMilp::BuildSparse() {
 }
 
 void ScheduleMilp::BuildCondensed() {
+  // Window rows are handed to the model in chunks of about this many entries
+  // (16 MB of triplets): a restricted six-thruster week's hold 8.5 M.
+  constexpr size_t kFlushEntries = size_t{1} << 20;
   const ScheduleProblem& p = problem_;
   const dynamics::LinearModel& model = *p.model;
   const int n = model.num_states();
@@ -508,6 +511,7 @@ void ScheduleMilp::BuildCondensed() {
         }
       }
     }
+    if (rows.pending_entries() > kFlushEntries) rows.Flush(&model_);
     // Advance: x_{j+1} = Phi_j x_j + Gamma_j u_j + d_j.
     const Eigen::MatrixXd& phi = discrete_.phi[j];
     g.leftCols(used) = phi * g.leftCols(used);

@@ -320,7 +320,7 @@ class Search {
   }
 
   // Condensing a restriction cannot be interrupted and takes seconds on a
-  // large net (5.3 s for 4043 slots of a six-thruster GEO week), so under a
+  // large net (2.9 s for 4032 slots of a six-thruster GEO week), so under a
   // time limit a net is not built when it would not be ready before the
   // limit: its time is estimated from the largest net built so far (the
   // time grows about linearly with the free slots). Without that, the

@@ -94,9 +94,12 @@
 //     own (SearchOptions::whole_milp_from_incumbent: not from the incumbent,
 //     which is kept if the solver finds nothing better).
 // A step's time in the log (SearchReport::steps) counts the building of its
-// restricted MILP: condensing a net of a six-thruster GEO week over its free
-// slots took 0.7 s for 546 slots and 5.3 s for 4043 (the exchange's; c41 of
-// data/scenarios/hard/, timed around the build alone).
+// restricted MILP: condensing a six-thruster GEO week over the free slots of
+// one or two whole thrusters (2016 or 4032 slots, about the size of the
+// exchange's 4043 on c41 of data/scenarios/hard/) and removing the fixed
+// columns takes 1.6 or 2.9 s (build/benchmarks/transcription_benchmark
+// --benchmark_filter=BM_BuildGeoWeekRestricted, medians of 3 on the 2-core
+// machine; most of it is copying 4.3 or 8.5 M window-row entries).
 // Heuristic steps give incumbents only; bounds come from the LP duals and
 // from exact (restricted-by-proof) solves. Deterministic for the same input
 // and options (node limits, no wall-clock decision) unless a time limit or

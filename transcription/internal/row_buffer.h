@@ -60,6 +60,10 @@ class RowBuffer {
     names_.push_back(std::move(name));
     return factor;
   }
+  // Entries waiting for Flush. A builder with millions of them (the
+  // condensed window rows) flushes in chunks: the buffer's memory is then
+  // reused instead of growing, and copied, to the size of the whole block.
+  size_t pending_entries() const { return triplets_.size(); }
   void Flush(milp::Model* model) {
     if (lower_.empty()) return;
     const Eigen::Map<const Eigen::VectorXd> lo(lower_.data(), lower_.size());
