@@ -203,12 +203,23 @@ class LazySolve {
   }
 
   // The LP relaxation by dual simplex; its binding dense rows join the
-  // subset. False (detail_ set) when it did not end optimal.
+  // subset. False (detail_ set) when it did not end optimal, with presolve
+  // too where the caller's options allow it and
+  // LazyRowOptions::presolve_lp_relaxation left it out first.
   bool AddRowsActiveAtTheLpOptimum() {
     SolveOptions o = options_;
     o.time_limit_s = std::max(0.0, Remaining());
     o.lp_algorithm = LpAlgorithm::kDual;
-    const LpRelaxationResult r = solver_.SolveLpRelaxation(lp_, o);
+    o.presolve = options_.presolve && lazy_.presolve_lp_relaxation;
+    LpRelaxationResult r = solver_.SolveLpRelaxation(lp_, o);
+    if (r.status != SolveStatus::kOptimal && options_.presolve && !o.presolve &&
+        Remaining() > 0.0 && !Interrupted()) {
+      // The dual simplex without presolve has called feasible schedule LPs
+      // infeasible (milp/internal/clp_lp.cc): its word is not final.
+      o.presolve = true;
+      o.time_limit_s = std::max(0.0, Remaining());
+      r = solver_.SolveLpRelaxation(lp_, o);
+    }
     if (r.status != SolveStatus::kOptimal) {
       detail_ = "LP relaxation " + std::string(ToString(r.status));
       return false;

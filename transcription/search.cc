@@ -604,6 +604,7 @@ class Search {
     if (!search_.lazy_rows) return solver_.Solve(small, o);
     milp::LazyRowOptions rows;
     rows.keep_model_incumbents = search_.lazy_rows_keep_incumbents;
+    rows.presolve_lp_relaxation = search_.lazy_rows_presolve_lp;
     milp::LazyRowReport lazy;
     milp::SolveResult s = milp::SolveWithLazyRows(solver_, small, o, rows, &lazy);
     lazy_note_ = "";

@@ -188,6 +188,22 @@ struct SearchOptions {
   /// still hands over the schedule it found before. Off: only a subset's
   /// final solution counts.
   bool lazy_rows_keep_incumbents = true;
+  /// Their first LP (which picks the dense rows that start in) with CLP's
+  /// presolve (milp::LazyRowOptions::presolve_lp_relaxation). Off saves
+  /// most of that LP's time on large nets (4.1 s of presolve against 0.85 s
+  /// of dual simplex over 4043 slots of a six-thruster week), but the
+  /// optimum it reaches differs where the LP is degenerate, and with it the
+  /// rows that start in. Off, against on, in the same run (the hard weeks
+  /// of data/scenarios/hard/ and the other solver-speed cases, 2 threads,
+  /// 60 s, medians of 3, 2026-11-30): geometric mean 1.06x faster over 21
+  /// cases; c41's exchange found the 15-step schedule in 7.9-9 s in all
+  /// three runs (proven optimal once, at 59.5 s), NE-failure week 32
+  /// 2.5x and week 10 1.39x faster, but week 2 0.63x (its lowest leaf's
+  /// 2016-slot MILP started with 21953 rows, where with presolve it ends
+  /// its three rounds with 20307, and found nothing within its share; the
+  /// exchange then found the optimum) and week 33 0.83x. Still on: a mixed
+  /// gain, and off would move every year's path.
+  bool lazy_rows_presolve_lp = true;
   /// Widening levels tried after the heuristic's incumbent, each a
   /// restricted MILP with a cutoff one step below the incumbent (step 3).
   int improvement_rounds = 2;

@@ -5,6 +5,7 @@
 // valid compressed matrix.
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,9 @@ TEST(SolveWithLazyRows, FindsTheEnumeratedOptimumWithRowsLeftOut) {
       LazyRowOptions off = SmallDense();
       off.keep_model_incumbents = false;
       EXPECT_NEAR(SolveWithLazyRows(*solver, lp, Exact(), off).objective, expected, 1e-6);
+      LazyRowOptions unpresolved = SmallDense();
+      unpresolved.presolve_lp_relaxation = false;
+      EXPECT_NEAR(SolveWithLazyRows(*solver, lp, Exact(), unpresolved).objective, expected, 1e-6);
     }
     EXPECT_NEAR(r.objective, expected, 1e-6);
     EXPECT_NEAR(r.best_bound, expected, 1e-6);
@@ -175,6 +179,70 @@ TEST(SolveWithLazyRows, ALimitOnABrokenRowReturnsTheModelsBestIncumbent) {
     EXPECT_FALSE(r_off.has_solution()) << r_off.detail;
   }
   EXPECT_GE(cases, 1) << "no knapsack reached the path under test";
+}
+
+// CBC, except that its LP relaxations without presolve are called
+// infeasible: what CLP's dual simplex without presolve has said of feasible
+// schedule LPs (milp/internal/clp_lp.cc).
+class NoPresolveLpSaysInfeasible final : public Solver {
+ public:
+  std::string_view name() const override { return "no-presolve-lp-says-infeasible"; }
+  std::string version() const override { return "0"; }
+  mutable int lps_without_presolve = 0;
+  mutable int lps_with_presolve = 0;
+
+ private:
+  SolveResult DoSolve(const LpData& lp, const SolveOptions& o) const override {
+    return cbc_->Solve(lp, o);
+  }
+  LpRelaxationResult DoSolveLpRelaxation(const LpData& lp, const SolveOptions& o) const override {
+    if (o.presolve) {
+      ++lps_with_presolve;
+      return cbc_->SolveLpRelaxation(lp, o);
+    }
+    ++lps_without_presolve;
+    LpRelaxationResult r;
+    r.status = SolveStatus::kInfeasible;
+    return r;
+  }
+  std::unique_ptr<Solver> cbc_ = MakeCbcSolver();
+};
+
+// The first LP without presolve (LazyRowOptions::presolve_lp_relaxation
+// off) is not taken at its word when it does not end optimal: the LP again
+// with presolve picks the rows, and the enumerated optimum follows, by row
+// generation (not the whole model). On (the default), no LP without it;
+// with SolveOptions::presolve off, none with it.
+TEST(SolveWithLazyRows, AFirstLpWithoutPresolveThatFailsIsSolvedAgainWithPresolve) {
+  const LpData lp = RandomKnapsack(14, 40, 1, 0.35);
+  const NoPresolveLpSaysInfeasible solver;
+  LazyRowOptions lazy = SmallDense();
+  lazy.presolve_lp_relaxation = false;
+  LazyRowReport report;
+  const SolveResult r = SolveWithLazyRows(solver, lp, Exact(), lazy, &report);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_NEAR(r.objective, Enumerate(lp), 1e-6);
+  EXPECT_EQ(solver.lps_without_presolve, 1);
+  EXPECT_EQ(solver.lps_with_presolve, 1);
+  EXPECT_TRUE(report.used);
+  EXPECT_LT(report.initial_rows, lp.num_rows());
+  // By default the first LP is presolved: solved once, never without it.
+  const NoPresolveLpSaysInfeasible presolving;
+  EXPECT_NEAR(SolveWithLazyRows(presolving, lp, Exact(), SmallDense()).objective, Enumerate(lp),
+              1e-6);
+  EXPECT_EQ(presolving.lps_without_presolve, 0);
+  EXPECT_EQ(presolving.lps_with_presolve, 1);
+  // Where the caller's options forbid presolve, neither LP has it: the
+  // failed LP leaves the whole model to solve.
+  const NoPresolveLpSaysInfeasible forbidden;
+  SolveOptions no_presolve = Exact();
+  no_presolve.presolve = false;
+  LazyRowReport whole;
+  EXPECT_NEAR(SolveWithLazyRows(forbidden, lp, no_presolve, lazy, &whole).objective, Enumerate(lp),
+              1e-6);
+  EXPECT_EQ(forbidden.lps_without_presolve, 1);
+  EXPECT_EQ(forbidden.lps_with_presolve, 0);
+  EXPECT_FALSE(whole.used);
 }
 
 // Integer-infeasible but LP-feasible (an odd right-hand side for an even
