@@ -44,14 +44,16 @@ struct LazyRowOptions {
   int max_rounds = 25;
   /// Presolve the LP relaxation that picks the first subset's dense rows
   /// (where SolveOptions::presolve allows it). Off: the dual simplex on the
-  /// model as it is, and with presolve only if that does not end optimal. On a condensed restricted
-  /// MILP CLP's presolve costs far more than the simplex: on a six-thruster GEO week restricted to
-  /// 4043 slots (8.5 M nonzeros in its window rows; the `cbc` program's -dualS on the exported
-  /// MILP) CLP spends 4.1 s in presolve and 0.8 s in 26 dual simplex iterations, and 0.85 s in all
-  /// without presolve. Either way the rows are those an LP optimum binds,
-  /// and the result is exact whichever optimum it is (see above); but the
-  /// optimum differs where the LP is degenerate, and so does the subset
-  /// (see transcription::SearchOptions::lazy_rows_presolve_lp).
+  /// model as it is, and with presolve only if that does not end optimal.
+  /// On a condensed restricted MILP CLP's presolve costs far more than the
+  /// simplex: on a six-thruster GEO week restricted to 4043 slots (8.5 M
+  /// nonzeros in its window rows; the `cbc` program's -dualS on the
+  /// exported MILP) CLP spends 4.1 s in presolve and 0.8 s in 26 dual
+  /// simplex iterations, and 0.85 s in all without presolve. Either way the
+  /// rows are those an LP optimum binds, and the result is exact whichever
+  /// optimum it is (see above); but the optimum differs where the LP is
+  /// degenerate, and so does the subset (see
+  /// transcription::SearchOptions::lazy_rows_presolve_lp).
   bool presolve_lp_relaxation = true;
   /// Keep each subset incumbent that satisfies every row, as the solver
   /// reports it (SolveOptions::on_incumbent): a search that ends at a limit
