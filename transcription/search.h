@@ -193,16 +193,15 @@ struct SearchOptions {
   /// most of that LP's time on large nets (4.1 s of presolve against 0.85 s
   /// of dual simplex over 4043 slots of a six-thruster week), but the
   /// optimum it reaches differs where the LP is degenerate, and with it the
-  /// rows that start in. Off, against on, in the same run (the hard weeks
-  /// of data/scenarios/hard/ and the other solver-speed cases, 2 threads,
-  /// 60 s, medians of 3, 2026-11-30): geometric mean 1.06x faster over 21
-  /// cases; c41's exchange found the 15-step schedule in 7.9-9 s in all
-  /// three runs (proven optimal once, at 59.5 s), NE-failure week 32
-  /// 2.5x and week 10 1.39x faster, but week 2 0.63x (its lowest leaf's
-  /// 2016-slot MILP started with 21953 rows, where with presolve it ends
-  /// its three rounds with 20307, and found nothing within its share; the
-  /// exchange then found the optimum) and week 33 0.83x. Still on: a mixed
-  /// gain, and off would move every year's path.
+  /// rows that start in. Off against on in the same run (the bench's
+  /// `lazy-lp-unpresolved` arm: every solver-speed case, 2 threads, 60 s on
+  /// the hard weeks, medians of 3, 2026-11-30): geometric mean 1.03x faster
+  /// over 22 measures; weeks 16 and 14 of the six-thruster year 1.50x and
+  /// 1.31x, but week 2 0.69x (its lowest leaf's 2016-slot MILP started with
+  /// 21953 rows, where with presolve it ends its three rounds with 20307,
+  /// and found nothing within its share), week 21 0.70x and a six-thruster
+  /// week at 40 deg E 0.69x. Still on: a small, mixed gain, and off would
+  /// move every year's path.
   bool lazy_rows_presolve_lp = true;
   /// Widening levels tried after the heuristic's incumbent, each a
   /// restricted MILP with a cutoff one step below the incumbent (step 3).

@@ -175,23 +175,35 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
 void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
   // cbc_repeats > 0: the first release's arm that many times, not c.repeats.
   auto pair = [b](CaseSpec c, const std::string& suffix, int cbc_repeats = 0) {
+    auto add = [b, &suffix](const CaseSpec& arm) {
+      b->Add(arm, suffix + SolverPathIdSuffix(SolverPath(arm)));
+    };
     // Only the solve is timed: no separate LP relaxation (the search reports
     // its bound in search_steps) and no reference discretisation.
     c.lp_relaxation = false;
     c.error_metrics = false;
-    c.search = true;
-    c.variant = "search (this release)";
-    b->Add(c, suffix + "-search");
-    c.search_previous = true;
-    c.variant =
-        "search as the previous release ran it (no restricted MILP of the tree's other "
-        "leaves at the bound)";
-    b->Add(c, suffix + "-previous");
-    c.search_previous = false;
-    c.search = false;
+    struct SearchArm {
+      bool previous, lazy_lp_unpresolved;
+      const char* variant;
+    };
+    for (const SearchArm& a :
+         {SearchArm{false, false, "search (this release)"},
+          SearchArm{true, false,
+                    "search as the previous release ran it (no restricted MILP of the tree's "
+                    "other leaves at the bound)"},
+          SearchArm{false, true,
+                    "search with the lazy rows' first LP unpresolved "
+                    "(SearchOptions::lazy_rows_presolve_lp false)"}}) {
+      CaseSpec arm = c;
+      arm.search = true;
+      arm.search_previous = a.previous;
+      arm.search_lazy_lp_unpresolved = a.lazy_lp_unpresolved;
+      arm.variant = a.variant;
+      add(arm);
+    }
     if (cbc_repeats > 0) c.repeats = cbc_repeats;
     c.variant = "CBC on the whole MILP (first release)";
-    b->Add(c, suffix + "-cbc");
+    add(c);
   };
   {
     CaseSpec c = b->Make(kSectionSolverSpeed, "hcw_table42_t1_2d", CaseKind::kSolve);
@@ -534,6 +546,19 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
     }
   }
   return cases;
+}
+
+std::string SolverPath(const CaseSpec& spec) {
+  if (!spec.search) return "cbc";
+  if (spec.search_previous) return "search_previous";
+  return spec.search_lazy_lp_unpresolved ? "search_lazy_lp_unpresolved" : "search";
+}
+
+std::string SolverPathIdSuffix(const std::string& solver_path) {
+  if (solver_path == "search") return "-search";
+  if (solver_path == "search_previous") return "-previous";
+  if (solver_path == "search_lazy_lp_unpresolved") return "-lazy-lp-unpresolved";
+  return "-cbc";
 }
 
 }  // namespace thrustsched::bench

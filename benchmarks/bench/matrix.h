@@ -71,6 +71,10 @@ struct CaseSpec {
   /// restricted MILPs of the tree's other leaves at the bound
   /// (SearchOptions::other_leaf_nets 0), for the side-by-side ratio.
   bool search_previous = false;
+  /// With `search`: the lazy rows' first LP without presolve
+  /// (SearchOptions::lazy_rows_presolve_lp false), the ablation arm of the
+  /// solver-speed section.
+  bool search_lazy_lp_unpresolved = false;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within
   /// target_gap_s seconds.
@@ -95,6 +99,13 @@ struct CaseSpec {
   std::string published_source;
   std::string note;  // written to the `note` column
 };
+
+/// The `solver_path` column of a solve case: "search", "search_previous",
+/// "search_lazy_lp_unpresolved" or "cbc".
+std::string SolverPath(const CaseSpec& spec);
+/// The end of the id of a solver-speed case on that path ("-search",
+/// "-previous", "-lazy-lp-unpresolved", "-cbc"; AddSolverSpeed's arms).
+std::string SolverPathIdSuffix(const std::string& solver_path);
 
 /// --quick: node limit of every solve, and the wall-clock guard against a hang.
 inline constexpr long long kQuickMaxNodes = 2000;
