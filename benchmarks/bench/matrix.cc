@@ -182,22 +182,21 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     // its bound in search_steps) and no reference discretisation.
     c.lp_relaxation = false;
     c.error_metrics = false;
-    struct SearchArm {
-      bool previous, lazy_lp_unpresolved;
+    struct Arm {
+      SearchArm search;
       const char* variant;
     };
-    for (const SearchArm& a :
-         {SearchArm{false, false, "search (this release)"},
-          SearchArm{true, false,
-                    "search as the previous release ran it (no restricted MILP of the tree's "
-                    "other leaves at the bound)"},
-          SearchArm{false, true,
-                    "search with the lazy rows' first LP unpresolved "
-                    "(SearchOptions::lazy_rows_presolve_lp false)"}}) {
+    for (const Arm& a :
+         {Arm{SearchArm::kThisRelease, "search (this release)"},
+          Arm{SearchArm::kPreviousRelease,
+              "search as the previous release ran it (no restricted MILP of the tree's "
+              "other leaves at the bound)"},
+          Arm{SearchArm::kLazyLpUnpresolved,
+              "search with the lazy rows' first LP unpresolved "
+              "(SearchOptions::lazy_rows_presolve_lp false)"}}) {
       CaseSpec arm = c;
       arm.search = true;
-      arm.search_previous = a.previous;
-      arm.search_lazy_lp_unpresolved = a.lazy_lp_unpresolved;
+      arm.search_arm = a.search;
       arm.variant = a.variant;
       add(arm);
     }
@@ -549,16 +548,23 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
 }
 
 std::string SolverPath(const CaseSpec& spec) {
-  if (!spec.search) return "cbc";
-  if (spec.search_previous) return "search_previous";
-  return spec.search_lazy_lp_unpresolved ? "search_lazy_lp_unpresolved" : "search";
+  if (!spec.search) return kCbcPath.column;
+  switch (spec.search_arm) {
+    case SearchArm::kPreviousRelease:
+      return kSearchPreviousPath.column;
+    case SearchArm::kLazyLpUnpresolved:
+      return kSearchLazyLpUnpresolvedPath.column;
+    case SearchArm::kThisRelease:
+      break;
+  }
+  return kSearchPath.column;
 }
 
 std::string SolverPathIdSuffix(const std::string& solver_path) {
-  if (solver_path == "search") return "-search";
-  if (solver_path == "search_previous") return "-previous";
-  if (solver_path == "search_lazy_lp_unpresolved") return "-lazy-lp-unpresolved";
-  return "-cbc";
+  for (const SolverPathName& p : {kSearchPath, kSearchPreviousPath, kSearchLazyLpUnpresolvedPath}) {
+    if (solver_path == p.column) return p.id_suffix;
+  }
+  return kCbcPath.id_suffix;
 }
 
 }  // namespace thrustsched::bench

@@ -47,6 +47,20 @@ enum class CaseKind {
   kConjunction,  // collision avoidance: SolveConjunction + verification (conjunction_case.h)
 };
 
+/// The search a solve case with `search` runs: the bench's arms of the
+/// solver-speed section.
+enum class SearchArm {
+  kThisRelease,  // SearchOptions' defaults: what `thrustsched solve` does
+  /// The search as the previous release ran it, without the restricted
+  /// MILPs of the tree's other leaves at the bound
+  /// (SearchOptions::other_leaf_nets 0), for the side-by-side ratio.
+  kPreviousRelease,
+  /// The lazy rows' first LP without presolve
+  /// (SearchOptions::lazy_rows_presolve_lp false), the ablation arm of
+  /// section 8.1.
+  kLazyLpUnpresolved,
+};
+
 struct CaseSpec {
   std::string id;  // unique; also the file stem under DIR/runs/
   std::string section;
@@ -67,14 +81,8 @@ struct CaseSpec {
   /// The problem-aware search (transcription::SearchSchedule, what `solve`
   /// does) instead of CBC on the whole MILP (the first release's path).
   bool search = false;
-  /// With `search`: the search as the previous release ran it, without the
-  /// restricted MILPs of the tree's other leaves at the bound
-  /// (SearchOptions::other_leaf_nets 0), for the side-by-side ratio.
-  bool search_previous = false;
-  /// With `search`: the lazy rows' first LP without presolve
-  /// (SearchOptions::lazy_rows_presolve_lp false), the ablation arm of the
-  /// solver-speed section.
-  bool search_lazy_lp_unpresolved = false;
+  /// With `search`: which search (SearchArm).
+  SearchArm search_arm = SearchArm::kThisRelease;
   /// Targets of the solver-speed section (NaN: none): seconds to a proven
   /// 1 % gap, seconds to proven optimality, and a gap to reach within
   /// target_gap_s seconds.
@@ -100,11 +108,23 @@ struct CaseSpec {
   std::string note;  // written to the `note` column
 };
 
-/// The `solver_path` column of a solve case: "search", "search_previous",
-/// "search_lazy_lp_unpresolved" or "cbc".
+/// A solve case's path: its `solver_path` column and the end of its
+/// solver-speed case id (AddSolverSpeed's arms). The one place these names
+/// are spelled: the runner, the matrix and the report use these.
+struct SolverPathName {
+  const char* column;
+  const char* id_suffix;
+};
+inline constexpr SolverPathName kSearchPath{"search", "-search"};
+inline constexpr SolverPathName kSearchPreviousPath{"search_previous", "-previous"};
+inline constexpr SolverPathName kSearchLazyLpUnpresolvedPath{"search_lazy_lp_unpresolved",
+                                                             "-lazy-lp-unpresolved"};
+inline constexpr SolverPathName kCbcPath{"cbc", "-cbc"};
+
+/// The `solver_path` column of a solve case (SolverPathName::column).
 std::string SolverPath(const CaseSpec& spec);
-/// The end of the id of a solver-speed case on that path ("-search",
-/// "-previous", "-lazy-lp-unpresolved", "-cbc"; AddSolverSpeed's arms).
+/// The end of the id of a solver-speed case on that path
+/// (SolverPathName::id_suffix; a path not named above: kCbcPath's).
 std::string SolverPathIdSuffix(const std::string& solver_path);
 
 /// --quick: node limit of every solve, and the wall-clock guard against a hang.

@@ -34,10 +34,10 @@ std::vector<Pair> Pairs(const std::vector<Row>& rows) {
     auto [it, fresh] = at.emplace(base, out.size());
     if (fresh) out.push_back({base, {}, {}, {}, {}});
     Pair& pair = out[it->second];
-    std::vector<const Row*>& arm = path == "search"                       ? pair.search
-                                   : path == "search_previous"            ? pair.previous
-                                   : path == "search_lazy_lp_unpresolved" ? pair.unpresolved
-                                                                          : pair.cbc;
+    std::vector<const Row*>& arm = path == kSearchPath.column                    ? pair.search
+                                   : path == kSearchPreviousPath.column          ? pair.previous
+                                   : path == kSearchLazyLpUnpresolvedPath.column ? pair.unpresolved
+                                                                                 : pair.cbc;
     arm.push_back(&r);
   }
   return out;

@@ -242,10 +242,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
   if (spec.search) {
     transcription::SearchReport report;
     transcription::SearchOptions search;
-    // The previous release's search (matrix.h): no restricted MILP of the
-    // tree's other leaves at the bound.
-    if (spec.search_previous) search.other_leaf_nets = 0;
-    if (spec.search_lazy_lp_unpresolved) search.lazy_rows_presolve_lp = false;
+    // The arms (matrix.h, SearchArm).
+    if (spec.search_arm == SearchArm::kPreviousRelease) search.other_leaf_nets = 0;
+    if (spec.search_arm == SearchArm::kLazyLpUnpresolved) search.lazy_rows_presolve_lp = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 
@@ -240,6 +241,36 @@ TEST(Matrix, FullMatrixCoversTheIssueAndFindsEveryScenario) {
   o.threads = 1;
   o.scenario_dirs = {"/nonexistent"};
   EXPECT_THROW(BuildMatrix(o), std::invalid_argument);
+}
+
+// Every solver-speed case runs each of the four paths once, its id ending
+// in its path's suffix, and the suffixes map back to the paths (the report
+// groups a case's arms by them); an unknown path reads as the first
+// release's.
+TEST(Matrix, SolverSpeedArmsAreNamedByTheirPath) {
+  MatrixOptions o;
+  o.scenario_dirs = {std::string(THRUSTSCHED_DATA_DIR) + "/scenarios",
+                     std::string(THRUSTSCHED_SOURCE_DIR) + "/benchmarks/bench/scenarios"};
+  std::map<std::string, std::set<std::string>> paths_of_case;
+  for (const CaseSpec& c : BuildMatrix(o)) {
+    if (c.section != kSectionSolverSpeed) continue;
+    const std::string path = SolverPath(c);
+    const std::string suffix = SolverPathIdSuffix(path);
+    ASSERT_GT(c.id.size(), suffix.size()) << c.id;
+    EXPECT_EQ(c.id.substr(c.id.size() - suffix.size()), suffix) << c.id << " on " << path;
+    EXPECT_TRUE(paths_of_case[c.id.substr(0, c.id.size() - suffix.size())].insert(path).second)
+        << c.id;
+    EXPECT_EQ(path == "search_previous", c.search && c.search_arm == SearchArm::kPreviousRelease);
+  }
+  ASSERT_GE(paths_of_case.size(), 22u);
+  const std::set<std::string> all = {"search", "search_previous", "search_lazy_lp_unpresolved",
+                                     "cbc"};
+  for (const auto& [base, paths] : paths_of_case) EXPECT_EQ(paths, all) << base;
+  EXPECT_EQ(SolverPathIdSuffix("search"), "-search");
+  EXPECT_EQ(SolverPathIdSuffix("search_previous"), "-previous");
+  EXPECT_EQ(SolverPathIdSuffix("search_lazy_lp_unpresolved"), "-lazy-lp-unpresolved");
+  EXPECT_EQ(SolverPathIdSuffix("cbc"), "-cbc");
+  EXPECT_EQ(SolverPathIdSuffix(""), "-cbc");
 }
 
 TEST(Published, ThesisTablesAreSlotMultiples) {
