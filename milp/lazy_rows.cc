@@ -27,6 +27,32 @@ double Violation(double activity, double lower, double upper) {
   return v;
 }
 
+// Rows not in `in` whose activity range over the column bounds lies
+// within the row's bounds: no point within the bounds can break them.
+std::vector<char> ImpliedByColumnBounds(const LpData& lp, const std::vector<char>& in) {
+  const int m = lp.num_rows();
+  std::vector<double> low(static_cast<size_t>(m), 0.0), high(static_cast<size_t>(m), 0.0);
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    const double lo = lp.col_lower[j], hi = lp.col_upper[j];
+    for (SparseCol::InnerIterator it(lp.a_matrix, j); it; ++it) {
+      const double a = it.value();
+      const size_t i = static_cast<size_t>(it.row());
+      // a * (-inf) or a * (+inf) makes the range unbounded (never 0 * inf:
+      // the matrix stores no zeros).
+      low[i] += a > 0.0 ? a * lo : a * hi;
+      high[i] += a > 0.0 ? a * hi : a * lo;
+    }
+  }
+  std::vector<char> implied(static_cast<size_t>(m), 0);
+  for (int i = 0; i < m; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    if (in[k]) continue;
+    // NaN (an infinite range on both sides) compares false: not implied.
+    implied[k] = low[k] >= lp.row_lower[i] && high[k] <= lp.row_upper[i] ? 1 : 0;
+  }
+  return implied;
+}
+
 class LazySolve {
  public:
   LazySolve(const Solver& solver, const LpData& lp, const SolveOptions& options,
@@ -205,32 +231,45 @@ class LazySolve {
   // The LP relaxation by dual simplex; its binding dense rows join the
   // subset. False (detail_ set) when it did not end optimal, with presolve
   // too where the caller's options allow it and
-  // LazyRowOptions::presolve_lp_relaxation left it out first.
+  // LazyRowOptions::presolve_lp_relaxation left it out first. Without the
+  // dense rows the column bounds imply (LazyRowOptions::
+  // skip_implied_rows_in_lp): every point within the bounds keeps them, so
+  // the LP is the same; they stay left out and checked like the others.
   bool AddRowsActiveAtTheLpOptimum() {
+    std::vector<int> lp_rows;
+    if (lazy_.skip_implied_rows_in_lp) {
+      const std::vector<char> implied = ImpliedByColumnBounds(lp_, in_);
+      for (int i = 0; i < lp_.num_rows(); ++i) {
+        if (!implied[static_cast<size_t>(i)]) lp_rows.push_back(i);
+      }
+      report_->implied_rows = lp_.num_rows() - static_cast<int>(lp_rows.size());
+    }
+    const bool all_rows = report_->implied_rows == 0;
+    const LpData reduced = all_rows ? LpData() : SelectRows(lp_, lp_rows);
+    const LpData& relaxed = all_rows ? lp_ : reduced;
     SolveOptions o = options_;
     o.time_limit_s = std::max(0.0, Remaining());
     o.lp_algorithm = LpAlgorithm::kDual;
     o.presolve = options_.presolve && lazy_.presolve_lp_relaxation;
-    LpRelaxationResult r = solver_.SolveLpRelaxation(lp_, o);
+    LpRelaxationResult r = solver_.SolveLpRelaxation(relaxed, o);
     if (r.status != SolveStatus::kOptimal && options_.presolve && !o.presolve &&
         Remaining() > 0.0 && !Interrupted()) {
       // The dual simplex without presolve has called feasible schedule LPs
       // infeasible (milp/internal/clp_lp.cc): its word is not final.
       o.presolve = true;
       o.time_limit_s = std::max(0.0, Remaining());
-      r = solver_.SolveLpRelaxation(lp_, o);
+      r = solver_.SolveLpRelaxation(relaxed, o);
     }
     if (r.status != SolveStatus::kOptimal) {
       detail_ = "LP relaxation " + std::string(ToString(r.status));
       return false;
     }
-    const Eigen::VectorXd activity = lp_.a_matrix * r.x;
-    for (int i = 0; i < lp_.num_rows(); ++i) {
-      if (in_[static_cast<size_t>(i)]) continue;
-      const double v = Violation(activity[i], lp_.row_lower[i], lp_.row_upper[i]);
-      if (v >= -lazy_.active_tolerance || std::abs(r.row_duals[i]) > 0.0) {
-        in_[static_cast<size_t>(i)] = 1;
-      }
+    const Eigen::VectorXd activity = relaxed.a_matrix * r.x;
+    for (int k = 0; k < relaxed.num_rows(); ++k) {
+      const size_t i = all_rows ? static_cast<size_t>(k) : static_cast<size_t>(lp_rows[k]);
+      if (in_[i]) continue;
+      const double v = Violation(activity[k], relaxed.row_lower[k], relaxed.row_upper[k]);
+      if (v >= -lazy_.active_tolerance || std::abs(r.row_duals[k]) > 0.0) in_[i] = 1;
     }
     return true;
   }

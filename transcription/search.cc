@@ -605,6 +605,7 @@ class Search {
     milp::LazyRowOptions rows;
     rows.keep_model_incumbents = search_.lazy_rows_keep_incumbents;
     rows.presolve_lp_relaxation = search_.lazy_rows_presolve_lp;
+    rows.skip_implied_rows_in_lp = search_.lazy_rows_skip_implied;
     milp::LazyRowReport lazy;
     milp::SolveResult s = milp::SolveWithLazyRows(solver_, small, o, rows, &lazy);
     lazy_note_ = "";

@@ -203,6 +203,11 @@ struct SearchOptions {
   /// week at 40 deg E 0.69x. Still on: a small, mixed gain, and off would
   /// move every year's path.
   bool lazy_rows_presolve_lp = true;
+  /// That first LP without the dense rows the column bounds imply
+  /// (milp::LazyRowOptions::skip_implied_rows_in_lp): the same LP, without
+  /// the seconds CLP's presolve takes to remove them from a large net. Off:
+  /// the previous release's first LP, kept for comparison in the bench.
+  bool lazy_rows_skip_implied = true;
   /// Widening levels tried after the heuristic's incumbent, each a
   /// restricted MILP with a cutoff one step below the incumbent (step 3).
   int improvement_rounds = 2;

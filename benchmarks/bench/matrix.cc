@@ -189,8 +189,8 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     for (const Arm& a :
          {Arm{SearchArm::kThisRelease, "search (this release)"},
           Arm{SearchArm::kPreviousRelease,
-              "search as the previous release ran it (no restricted MILP of the tree's "
-              "other leaves at the bound)"},
+              "search as the previous release ran it (the lazy rows' first LP with the "
+              "dense rows the column bounds imply)"},
           Arm{SearchArm::kLazyLpUnpresolved,
               "search with the lazy rows' first LP unpresolved "
               "(SearchOptions::lazy_rows_presolve_lp false)"}}) {

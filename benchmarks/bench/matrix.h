@@ -51,9 +51,10 @@ enum class CaseKind {
 /// solver-speed section.
 enum class SearchArm {
   kThisRelease,  // SearchOptions' defaults: what `thrustsched solve` does
-  /// The search as the previous release ran it, without the restricted
-  /// MILPs of the tree's other leaves at the bound
-  /// (SearchOptions::other_leaf_nets 0), for the side-by-side ratio.
+  /// The search as the previous release ran it, the lazy rows' first LP
+  /// with the dense rows the column bounds imply
+  /// (SearchOptions::lazy_rows_skip_implied false), for the side-by-side
+  /// ratio.
   kPreviousRelease,
   /// The lazy rows' first LP without presolve
   /// (SearchOptions::lazy_rows_presolve_lp false), the ablation arm of

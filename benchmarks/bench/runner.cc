@@ -243,7 +243,7 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
     transcription::SearchReport report;
     transcription::SearchOptions search;
     // The arms (matrix.h, SearchArm).
-    if (spec.search_arm == SearchArm::kPreviousRelease) search.other_leaf_nets = 0;
+    if (spec.search_arm == SearchArm::kPreviousRelease) search.lazy_rows_skip_implied = false;
     if (spec.search_arm == SearchArm::kLazyLpUnpresolved) search.lazy_rows_presolve_lp = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;

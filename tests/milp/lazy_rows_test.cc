@@ -106,6 +106,44 @@ TEST(SolveWithLazyRows, FindsTheEnumeratedOptimumWithRowsLeftOut) {
   EXPECT_GE(kept_before_the_end, 1) << "no subset search reported a model solution before its end";
 }
 
+// Dense rows that every point within the column bounds keeps stay out of the
+// first LP (LazyRowOptions::skip_implied_rows_in_lp), those it can break are
+// not taken for them, and the optimum is the enumerated one either way.
+TEST(SolveWithLazyRows, LeavesTheRowsTheColumnBoundsImplyOutOfTheFirstLp) {
+  LpData lp = RandomKnapsack(12, 10, 3, 0.35);
+  std::vector<int> all(12);
+  std::vector<double> weight(12), mixed(12);
+  double sum = 0.0, positive = 0.0, negative = 0.0;
+  for (int j = 0; j < 12; ++j) {
+    all[static_cast<size_t>(j)] = j;
+    weight[static_cast<size_t>(j)] = 3.0 + j;
+    mixed[static_cast<size_t>(j)] = (j % 2 == 0 ? 1.0 : -1.0) * (2.0 + j);
+    sum += 3.0 + j;
+    (j % 2 == 0 ? positive : negative) += mixed[static_cast<size_t>(j)];
+  }
+  std::vector<double> minus(weight);
+  for (double& w : minus) w = -w;
+  AppendRows(&lp, {{all, weight, -kInf, sum, "at_most_all"},  // implied (all ones: equal)
+                   {all, minus, -sum - 1.0, kInf, "at_least_minus_all"},  // implied
+                   {all, mixed, negative, positive, "mixed_range"},       // implied, both sides
+                   {all, weight, -kInf, sum - 1.0, "not_all"}});          // all ones breaks it
+  const double expected = Enumerate(lp);
+  ASSERT_FALSE(std::isnan(expected));
+  auto solver = MakeCbcSolver();
+  LazyRowReport report;
+  const SolveResult r = SolveWithLazyRows(*solver, lp, Exact(), SmallDense(), &report);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_EQ(report.implied_rows, 3);
+  EXPECT_NEAR(r.objective, expected, 1e-6);
+  EXPECT_LE(lp.MaxViolation(r.x), 1e-6);
+  LazyRowOptions previous = SmallDense();
+  previous.skip_implied_rows_in_lp = false;
+  LazyRowReport previous_report;
+  const SolveResult p = SolveWithLazyRows(*solver, lp, Exact(), previous, &previous_report);
+  EXPECT_EQ(previous_report.implied_rows, 0);
+  EXPECT_NEAR(p.objective, expected, 1e-6);
+}
+
 // CBC, except that once a solve ends on a solution that breaks a row of
 // `full` after it reported one that keeps every row, it raises `stop` (the
 // caller's interrupt) and reports "feasible": what a subset search does when
