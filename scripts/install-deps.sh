@@ -20,6 +20,8 @@ PACKAGES=(
   chromium
   # the format check of CI (scripts/check_format.sh)
   clang-format
+  # the compiler cache of every build (scripts/setup.sh, .ci/run)
+  ccache
 )
 
 # THRUSTSCHED_DEPS_PACKAGES (space-separated) replaces the list: used by the
