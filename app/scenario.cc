@@ -27,6 +27,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounds that keep every model and grid well defined (documented in the README).
 constexpr double kMaxAbsTime = 1e10;  // s, |start_s| and |end|
 constexpr double kMaxDuration = 1e9;  // s, ~31.7 years
+// A step is no longer than the horizon up to this relative rounding.
+constexpr double kStepFitsRelativeSlack = 1e-12;
+// A step divides the horizon when duration / step is this close to a whole
+// number, relative to max(1, duration / step).
+constexpr double kWholeStepsRelativeTolerance = 1e-9;
 
 std::string Join(const std::vector<std::string>& v) {
   std::string s;
@@ -320,7 +325,7 @@ void ParseHorizon(JsonObject h, Scenario* s) {
   int n = 0;
   if (h.Has("step_s")) {
     const double step = h.Number("step_s", Bound::kPositive);
-    if (step > duration * (1 + 1e-12)) {
+    if (step > duration * (1 + kStepFitsRelativeSlack)) {
       h.Fail("step_s", FormatNumber(step) + " s is longer than the horizon (" +
                            FormatNumber(duration) + " s)");
     }
@@ -330,7 +335,7 @@ void ParseHorizon(JsonObject h, Scenario* s) {
                            " intervals; at most " + std::to_string(kMaxIntervals) + " are allowed");
     }
     const double rounded = std::round(ratio);
-    if (std::abs(ratio - rounded) > 1e-9 * std::max(1.0, ratio)) {
+    if (std::abs(ratio - rounded) > kWholeStepsRelativeTolerance * std::max(1.0, ratio)) {
       h.Fail("step_s", FormatNumber(step) + " s does not divide the horizon duration " +
                            FormatNumber(duration) + " s (" + FormatNumber(ratio) + " steps)");
     }
@@ -668,7 +673,8 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
     s.check.nonlinear = std::make_shared<const dynamics::GeoSimulator>(*s.geo);
   }
   if (!s.window_half_widths.empty()) {
-    s.verdict.window_tolerance = 1e-3 * std::min(s.window_half_widths[0], s.window_half_widths[1]);
+    s.verdict.window_tolerance = kDefaultWindowToleranceFraction *
+                                 std::min(s.window_half_widths[0], s.window_half_widths[1]);
   }
   if (top.Has("check")) ParseCheck(top.Object("check"), &s);
   top.Finish();

@@ -55,6 +55,10 @@ struct ScenarioParseOptions {
   std::string source = "scenario";
 };
 
+/// check.window_tolerance when the scenario gives none: this fraction of the
+/// smaller window half width.
+inline constexpr double kDefaultWindowToleranceFraction = 1e-3;
+
 /// Checker verdict settings (see data/scenarios/README.md, "check").
 struct VerdictOptions {
   /// Largest window violation (window unit: m, or deg for GEO) still passing.

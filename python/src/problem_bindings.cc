@@ -37,6 +37,9 @@ namespace thrustsched::python {
 
 namespace {
 
+// A time is a grid node's when it is this close, relative to max(1 s, |t|).
+constexpr double kGridNodeRelativeTolerance = 1e-9;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const char* const kNoContinuousModel =
     "this problem was built from arrays (Phi, Gamma, drift): its continuous-time matrices are "
@@ -73,7 +76,7 @@ class ArrayModel final : public dynamics::LinearModel {
       return o;
     }
     for (size_t j = 0; j < grid_.size(); ++j) {
-      if (std::abs(grid_[j] - t) <= 1e-9 * std::max(1.0, std::abs(t))) {
+      if (std::abs(grid_[j] - t) <= kGridNodeRelativeTolerance * std::max(1.0, std::abs(t))) {
         o.c = c_[j];
         return o;
       }
