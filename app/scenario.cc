@@ -6,6 +6,7 @@
 
 #include "app/conjunction_section.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <sstream>
 
 #include "common/constants.h"
+#include "common/error.h"
 #include "dynamics/discretisation.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
@@ -628,7 +630,32 @@ std::vector<std::string> ScenarioSections() {
           "input_mode",    "max_impulse_m_s", "check",      "conjunction"};
 }
 
+bool ScenarioParseOptions::IsValid(std::string* error) const {
+  if (source.empty()) return common::Fail(error, "source must not be empty");
+  const std::vector<std::string> known = ScenarioSections();
+  for (size_t k = 0; k < extra_sections.size(); ++k) {
+    const std::string& name = extra_sections[k];
+    const std::string where = "extra_sections[" + std::to_string(k) + "]";
+    if (name.empty()) return common::Fail(error, where + " must not be empty");
+    if (std::find(known.begin(), known.end(), name) != known.end()) {
+      return common::Fail(
+          error, where + " \"" + name + "\" is a section the scenario parser reads itself");
+    }
+  }
+  return true;
+}
+
+bool VerdictOptions::IsValid(std::string* error) const {
+  if (!(window_tolerance >= 0.0) || !std::isfinite(window_tolerance)) {
+    return common::Fail(
+        error, "window_tolerance must be finite and >= 0, got " + FormatNumber(window_tolerance));
+  }
+  return true;
+}
+
 Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& options) {
+  std::string err;
+  if (!options.IsValid(&err)) throw std::invalid_argument("ScenarioParseOptions: " + err);
   Scenario s;
   s.raw = json;
   JsonObject top(s.raw, "scenario");
@@ -679,7 +706,7 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
   if (top.Has("check")) ParseCheck(top.Object("check"), &s);
   top.Finish();
 
-  std::string err;
+  if (!s.verdict.IsValid(&err)) throw ScenarioError("scenario.check." + err);
   if (!s.problem.IsValid(&err)) throw ScenarioError("scenario: " + err);
   return s;
 }
