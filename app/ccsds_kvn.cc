@@ -12,6 +12,10 @@
 namespace thrustsched::app {
 namespace {
 
+// An epoch is written to the millisecond when it is this close (ms) to a
+// whole one (1 us), to the microsecond otherwise.
+constexpr double kWholeMillisecondSlack_ms = 1e-3;
+
 // Unix time of 2000-01-01T00:00:00Z (Epoch supports years from 1972 only).
 constexpr long long kUnixSecondsAt2000 = 946684800LL;
 
@@ -171,7 +175,7 @@ dynamics::Epoch KvnEpoch(const std::string& source, const KvnLine& line,
 
 std::string CcsdsEpochText(const dynamics::Epoch& epoch) {
   const double ms = epoch.seconds_of_day() * 1e3;
-  const bool whole_ms = std::abs(ms - std::round(ms)) < 1e-3;  // within 1 us
+  const bool whole_ms = std::abs(ms - std::round(ms)) < kWholeMillisecondSlack_ms;
   return epoch.FormatUtc(whole_ms ? 3 : 6, false);
 }
 

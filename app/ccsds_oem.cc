@@ -11,6 +11,10 @@
 namespace thrustsched::app {
 namespace {
 
+// Slack (s) on an epoch against its segment's START_TIME and STOP_TIME:
+// the precision of written epochs.
+constexpr double kEpochSlack_s = 1e-6;
+
 // The keyword lines of one META block, by keyword.
 struct MetaBlock {
   std::map<std::string, KvnLine> keys;
@@ -101,8 +105,8 @@ OemSegment SegmentFromMeta(const std::string& source, const MetaBlock& m) {
 
 void CheckPoints(const std::string& source, const OemSegment& s, const KvnLine& line) {
   const OemPoint& p = s.points.back();
-  constexpr double kSlack = 1e-6;  // s, the precision of written epochs
-  if (p.epoch.SecondsSince(s.start_time) < -kSlack || s.stop_time.SecondsSince(p.epoch) < -kSlack) {
+  if (p.epoch.SecondsSince(s.start_time) < -kEpochSlack_s ||
+      s.stop_time.SecondsSince(p.epoch) < -kEpochSlack_s) {
     KvnFail(source, line, "epoch outside the segment's [START_TIME, STOP_TIME]");
   }
   if (s.points.size() > 1 && !(p.epoch.SecondsSince(s.points[s.points.size() - 2].epoch) > 0)) {
@@ -122,7 +126,7 @@ std::string FormatOem(const OemFile& f) {
     if (s.points.empty()) throw std::invalid_argument("FormatOem: a segment without data lines");
     for (size_t k = 0; k < s.points.size(); ++k) {
       const double t = s.points[k].epoch.SecondsSince(s.start_time);
-      if (t < -1e-6 || s.stop_time.SecondsSince(s.points[k].epoch) < -1e-6 ||
+      if (t < -kEpochSlack_s || s.stop_time.SecondsSince(s.points[k].epoch) < -kEpochSlack_s ||
           (k > 0 && !(s.points[k].epoch.SecondsSince(s.points[k - 1].epoch) > 0))) {
         throw std::invalid_argument(
             "FormatOem: points must increase within [start_time, stop_time]");

@@ -75,82 +75,94 @@ std::string CommandLine(int argc, char** argv) {
   return s;
 }
 
-}  // namespace
-
-int RunCli(int argc, char** argv, const RunHooks& hooks) {
-  CLI::App cli{
-      "thrustsched: minimum-fuel on-off thruster firing schedules (station keeping, rendezvous) "
-      "by mixed-integer linear programming.\n"
-      "Scenario files are JSON, documented in data/scenarios/README.md.\n"
-      "Exit codes: 0 solved (optimal or feasible) or check passed, 1 internal error, 2 bad input, "
-      "3 infeasible, 4 no solution within the time limit, 5 check failed."};
-  cli.set_version_flag("-V,--version", std::string("thrustsched ") + THRUSTSCHED_VERSION + " (" +
-                                           milp::CbcVersion() + ")");
-  cli.require_subcommand(1);
-
-  // solve
+// The subcommands' arguments, filled by CLI11 while parsing.
+struct Subcommands {
   SolveArgs solve;
   OverrideFlags solve_flags;
   bool solve_no_diagnose = false;
   bool solve_no_search = false;
-  CLI::App* c_solve = cli.add_subcommand(
+  CLI::App* c_solve = nullptr;
+  ExportArgs exp;
+  OverrideFlags export_flags;
+  CLI::App* c_export = nullptr;
+  CheckArgs check;
+  CLI::App* c_check = nullptr;
+  ImportArgs imp;
+  OverrideFlags import_flags;
+  CLI::App* c_import = nullptr;
+  ValidateArgs val;
+  bool no_build = false;
+  OverrideFlags validate_flags;
+  CLI::App* c_validate = nullptr;
+  SimulateArgs sim;
+  CLI::App* c_simulate = nullptr;
+};
+
+// `solve`: build, solve, check, write.
+void AddSolveCommand(CLI::App* cli, Subcommands* c) {
+  c->c_solve = cli->add_subcommand(
       "solve",
       "Build, solve, check and write results (summary.json, schedule.csv, trajectory.csv, SVG "
       "plots). Command-line options override the scenario.");
-  c_solve->add_option("scenario", solve.scenario, "scenario file (JSON)")->required();
-  c_solve->add_option("--out", solve.out_dir,
-                      "output directory (default out/<scenario file stem>)");
-  solve_flags.AddSolverOptions(c_solve);
-  solve_flags.AddModelOptions(c_solve);
-  c_solve->add_option("--export-mps", solve.export_mps, "also write the model as free MPS");
-  c_solve->add_option("--export-lp", solve.export_lp, "also write the model as CPLEX LP");
-  AddCcsdsOptions(c_solve, &solve.ccsds);
-  c_solve->add_flag("--quiet", solve.quiet, "no progress messages on stderr");
-  c_solve->add_flag("--no-plots", solve.no_plots,
-                    "write the gnuplot scripts but do not run gnuplot");
-  c_solve->add_flag("--no-report", solve.no_report,
-                    "do not write report.html (the self-contained page with the scenario, result, "
-                    "checker verdict, plots and schedule)");
-  c_solve->add_flag("--force", solve.force,
-                    "replace the files of an earlier run in the --out folder (without it, such a "
-                    "folder is refused with exit 2)");
-  c_solve->add_flag("--no-search", solve_no_search,
-                    "hand the whole MILP to CBC, without the problem-aware search (scenario field "
-                    "solver.search; for comparisons with the first release)");
-  c_solve->add_flag("--no-diagnose", solve_no_diagnose,
-                    "after a solve that stops with no schedule, do not look for a proof of "
-                    "infeasibility (scenario field solver.diagnosis_time_limit_s, default 30 s)");
+  c->c_solve->add_option("scenario", c->solve.scenario, "scenario file (JSON)")->required();
+  c->c_solve->add_option("--out", c->solve.out_dir,
+                         "output directory (default out/<scenario file stem>)");
+  c->solve_flags.AddSolverOptions(c->c_solve);
+  c->solve_flags.AddModelOptions(c->c_solve);
+  c->c_solve->add_option("--export-mps", c->solve.export_mps, "also write the model as free MPS");
+  c->c_solve->add_option("--export-lp", c->solve.export_lp, "also write the model as CPLEX LP");
+  AddCcsdsOptions(c->c_solve, &c->solve.ccsds);
+  c->c_solve->add_flag("--quiet", c->solve.quiet, "no progress messages on stderr");
+  c->c_solve->add_flag("--no-plots", c->solve.no_plots,
+                       "write the gnuplot scripts but do not run gnuplot");
+  c->c_solve->add_flag(
+      "--no-report", c->solve.no_report,
+      "do not write report.html (the self-contained page with the scenario, result, "
+      "checker verdict, plots and schedule)");
+  c->c_solve->add_flag(
+      "--force", c->solve.force,
+      "replace the files of an earlier run in the --out folder (without it, such a "
+      "folder is refused with exit 2)");
+  c->c_solve->add_flag(
+      "--no-search", c->solve_no_search,
+      "hand the whole MILP to CBC, without the problem-aware search (scenario field "
+      "solver.search; for comparisons with the first release)");
+  c->c_solve->add_flag(
+      "--no-diagnose", c->solve_no_diagnose,
+      "after a solve that stops with no schedule, do not look for a proof of "
+      "infeasibility (scenario field solver.diagnosis_time_limit_s, default 30 s)");
+}
 
-  // export
-  ExportArgs exp;
-  OverrideFlags export_flags;
-  CLI::App* c_export = cli.add_subcommand(
+// `export`: the model file only.
+void AddExportCommand(CLI::App* cli, Subcommands* c) {
+  c->c_export = cli->add_subcommand(
       "export", "Write the model only, as free MPS (FILE.mps) or CPLEX LP (FILE.lp).");
-  c_export->add_option("scenario", exp.scenario, "scenario file (JSON)")->required();
-  c_export->add_option("file", exp.file, "output model file, .mps or .lp")->required();
-  export_flags.AddModelOptions(c_export);
-  c_export->add_flag("--obfuscate-names", exp.obfuscate_names,
-                     "name columns/rows C000001/R000001 (import-solution needs the same flag)");
+  c->c_export->add_option("scenario", c->exp.scenario, "scenario file (JSON)")->required();
+  c->c_export->add_option("file", c->exp.file, "output model file, .mps or .lp")->required();
+  c->export_flags.AddModelOptions(c->c_export);
+  c->c_export->add_flag("--obfuscate-names", c->exp.obfuscate_names,
+                        "name columns/rows C000001/R000001 (import-solution needs the same flag)");
+}
 
-  // check
-  CheckArgs check;
-  CLI::App* c_check = cli.add_subcommand(
+// `check`: the independent checker on a schedule file.
+void AddCheckCommand(CLI::App* cli, Subcommands* c) {
+  c->c_check = cli->add_subcommand(
       "check",
       "Run the independent checker on a schedule (schedule.csv, or impulses.csv for impulsive "
       "scenarios), e.g. one produced by another solver. Exit 0 if it passes, 5 if not.");
-  c_check->add_option("scenario", check.scenario, "scenario file (JSON)")->required();
-  c_check->add_option("schedule", check.schedule, "schedule CSV")->required();
-  c_check->add_option("--out", check.out_dir,
-                      "also write check.json, trajectory.csv and plots to this directory");
-  c_check->add_flag("--no-plots", check.no_plots, "with --out: do not run gnuplot");
-  c_check->add_flag("--force", check.force,
-                    "with --out: replace the files of an earlier run in that folder");
-  AddCcsdsOptions(c_check, &check.ccsds);
+  c->c_check->add_option("scenario", c->check.scenario, "scenario file (JSON)")->required();
+  c->c_check->add_option("schedule", c->check.schedule, "schedule CSV")->required();
+  c->c_check->add_option("--out", c->check.out_dir,
+                         "also write check.json, trajectory.csv and plots to this directory");
+  c->c_check->add_flag("--no-plots", c->check.no_plots, "with --out: do not run gnuplot");
+  c->c_check->add_flag("--force", c->check.force,
+                       "with --out: replace the files of an earlier run in that folder");
+  AddCcsdsOptions(c->c_check, &c->check.ccsds);
+}
 
-  // import-solution
-  ImportArgs imp;
-  OverrideFlags import_flags;
-  CLI::App* c_import = cli.add_subcommand(
+// `import-solution`: another solver's solution back to a schedule.
+void AddImportCommand(CLI::App* cli, Subcommands* c) {
+  c->c_import = cli->add_subcommand(
       "import-solution",
       "Map another solver's solution of the exported model back to a schedule, by column names.\n"
       "  cbc model.mps sec 60 solve solu sol.txt            -> --format cbc\n"
@@ -158,69 +170,73 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       "  glpsol --freemps model.mps --tmlim 60 -w sol.raw   -> --format glpsol-raw (full "
       "precision)\n"
       "Use the same --scheme/--formulation/--encoding as for the export.");
-  c_import->add_option("scenario", imp.scenario, "scenario file (JSON)")->required();
-  c_import->add_option("solution", imp.solution, "the solver's solution file")->required();
-  c_import->add_option("--format", imp.format, "cbc | glpsol | glpsol-raw")->required();
-  c_import->add_option("--out", imp.out, "schedule CSV to write")->required();
-  import_flags.AddModelOptions(c_import);
-  c_import->add_flag("--obfuscate-names", imp.obfuscate_names,
-                     "the model was exported with --obfuscate-names");
+  c->c_import->add_option("scenario", c->imp.scenario, "scenario file (JSON)")->required();
+  c->c_import->add_option("solution", c->imp.solution, "the solver's solution file")->required();
+  c->c_import->add_option("--format", c->imp.format, "cbc | glpsol | glpsol-raw")->required();
+  c->c_import->add_option("--out", c->imp.out, "schedule CSV to write")->required();
+  c->import_flags.AddModelOptions(c->c_import);
+  c->c_import->add_flag("--obfuscate-names", c->imp.obfuscate_names,
+                        "the model was exported with --obfuscate-names");
+}
 
-  // validate
-  ValidateArgs val;
-  bool no_build = false;
-  OverrideFlags validate_flags;
-  CLI::App* c_validate = cli.add_subcommand(
+// `validate`: parse and build, no solve.
+void AddValidateCommand(CLI::App* cli, Subcommands* c) {
+  c->c_validate = cli->add_subcommand(
       "validate", "Parse and validate a scenario and build its model (no solve); exit 0 or 2.");
-  c_validate->add_option("scenario", val.scenario, "scenario file (JSON)")->required();
-  c_validate->add_flag("--no-build", no_build, "only parse and validate");
-  validate_flags.AddModelOptions(c_validate);
+  c->c_validate->add_option("scenario", c->val.scenario, "scenario file (JSON)")->required();
+  c->c_validate->add_flag("--no-build", c->no_build, "only parse and validate");
+  c->validate_flags.AddModelOptions(c->c_validate);
+}
 
-  // simulate
-  SimulateArgs sim;
-  CLI::App* c_simulate = cli.add_subcommand(
+// `simulate`: the long-horizon loop.
+void AddSimulateCommand(CLI::App* cli, Subcommands* c) {
+  c->c_simulate = cli->add_subcommand(
       "simulate",
       "Long station-keeping simulation (thesis ch. 5): chained cycle MILPs closed through the "
       "nonlinear GEO model, from the scenario's \"long_horizon\" section. Writes cycles.csv, "
       "year.json, trajectory.csv, per-cycle schedules, checkpoint.json and SVG plots. Exit 0 "
       "when every requested cycle ran (fallbacks are reported, not errors), 4 if interrupted "
       "(continue with --resume).");
-  c_simulate
-      ->add_option("scenario", sim.scenario, "scenario file (JSON) with a long_horizon section")
+  c->c_simulate
+      ->add_option("scenario", c->sim.scenario, "scenario file (JSON) with a long_horizon section")
       ->required();
-  c_simulate->add_option("--out", sim.out_dir,
-                         "output directory (default out/<scenario file stem>)");
-  c_simulate->add_option("--cycles", sim.cycles, "stop once this many cycles (in total) are done")
+  c->c_simulate->add_option("--out", c->sim.out_dir,
+                            "output directory (default out/<scenario file stem>)");
+  c->c_simulate
+      ->add_option("--cycles", c->sim.cycles, "stop once this many cycles (in total) are done")
       ->check(CLI::PositiveNumber);
-  c_simulate->add_flag("--resume", sim.resume,
-                       "continue from the checkpoint in the output directory");
-  c_simulate->add_flag("--force", sim.force,
-                       "start over in an output directory that holds an earlier run (its files "
-                       "are removed; without --resume or --force such a directory is refused "
-                       "with exit 2)");
-  c_simulate->add_flag("--quiet", sim.quiet, "no progress messages on stderr");
-  c_simulate->add_flag("--no-plots", sim.no_plots,
-                       "write the gnuplot scripts but do not run gnuplot");
-  c_simulate->add_flag("--no-report", sim.no_report,
-                       "do not write report.html (nor the year plots only it shows)");
-  AddCcsdsOptions(c_simulate, &sim.ccsds);
+  c->c_simulate->add_flag("--resume", c->sim.resume,
+                          "continue from the checkpoint in the output directory");
+  c->c_simulate->add_flag("--force", c->sim.force,
+                          "start over in an output directory that holds an earlier run (its files "
+                          "are removed; without --resume or --force such a directory is refused "
+                          "with exit 2)");
+  c->c_simulate->add_flag("--quiet", c->sim.quiet, "no progress messages on stderr");
+  c->c_simulate->add_flag("--no-plots", c->sim.no_plots,
+                          "write the gnuplot scripts but do not run gnuplot");
+  c->c_simulate->add_flag("--no-report", c->sim.no_report,
+                          "do not write report.html (nor the year plots only it shows)");
+  AddCcsdsOptions(c->c_simulate, &c->sim.ccsds);
+}
 
-  // `thrustsched help [command]`, and a misspelt command named as such.
+// `thrustsched help [command]`, and a misspelt command named as such: the
+// exit code, or nothing when the command line is for CLI11.
+std::optional<int> AnswerHelpOrUnknown(CLI::App* cli, int argc, char** argv) {
   if (argc >= 2 && std::string(argv[1]) == "help") {
     if (argc >= 3) {
-      for (CLI::App* sub : cli.get_subcommands({})) {
+      for (CLI::App* sub : cli->get_subcommands({})) {
         if (sub->get_name() == argv[2]) {
           std::cout << sub->help();
           return kExitOk;
         }
       }
     }
-    std::cout << cli.help();
+    std::cout << cli->help();
     return kExitOk;
   }
   if (argc >= 2 && argv[1][0] != '-') {
     std::vector<std::string> names;
-    for (CLI::App* sub : cli.get_subcommands({})) names.push_back(sub->get_name());
+    for (CLI::App* sub : cli->get_subcommands({})) names.push_back(sub->get_name());
     const std::string word = argv[1];
     if (std::find(names.begin(), names.end(), word) == names.end()) {
       const std::string near = ClosestName(word, names);
@@ -231,50 +247,42 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       return kExitBadInput;
     }
   }
+  return std::nullopt;
+}
 
+// Runs the subcommand CLI11 parsed; bad input (ScenarioError and the
+// library's invalid-input exceptions) exits 2, other failures 1.
+int RunParsed(Subcommands* c, int argc, char** argv, const RunHooks& hooks) {
   try {
-    cli.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return cli.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return cli.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return cli.exit(e);
-  } catch (const CLI::ParseError& e) {
-    cli.exit(e);  // prints the message
-    return kExitBadInput;
-  }
-
-  try {
-    if (c_solve->parsed()) {
-      solve.overrides = solve_flags.Get();
-      solve.overrides.no_diagnose = solve_no_diagnose;
-      solve.overrides.no_search = solve_no_search;
-      solve.command_line = CommandLine(argc, argv);
-      solve.hooks = hooks;
-      return RunSolve(solve);
+    if (c->c_solve->parsed()) {
+      c->solve.overrides = c->solve_flags.Get();
+      c->solve.overrides.no_diagnose = c->solve_no_diagnose;
+      c->solve.overrides.no_search = c->solve_no_search;
+      c->solve.command_line = CommandLine(argc, argv);
+      c->solve.hooks = hooks;
+      return RunSolve(c->solve);
     }
-    if (c_export->parsed()) {
-      exp.overrides = export_flags.Get();
-      return RunExport(exp);
+    if (c->c_export->parsed()) {
+      c->exp.overrides = c->export_flags.Get();
+      return RunExport(c->exp);
     }
-    if (c_check->parsed()) {
-      check.command_line = CommandLine(argc, argv);
-      return RunCheck(check);
+    if (c->c_check->parsed()) {
+      c->check.command_line = CommandLine(argc, argv);
+      return RunCheck(c->check);
     }
-    if (c_import->parsed()) {
-      imp.overrides = import_flags.Get();
-      return RunImportSolution(imp);
+    if (c->c_import->parsed()) {
+      c->imp.overrides = c->import_flags.Get();
+      return RunImportSolution(c->imp);
     }
-    if (c_simulate->parsed()) {
-      sim.command_line = CommandLine(argc, argv);
-      sim.hooks = hooks;
-      return RunSimulate(sim);
+    if (c->c_simulate->parsed()) {
+      c->sim.command_line = CommandLine(argc, argv);
+      c->sim.hooks = hooks;
+      return RunSimulate(c->sim);
     }
-    if (c_validate->parsed()) {
-      val.build = !no_build;
-      val.overrides = validate_flags.Get();
-      return RunValidate(val);
+    if (c->c_validate->parsed()) {
+      c->val.build = !c->no_build;
+      c->val.overrides = c->validate_flags.Get();
+      return RunValidate(c->val);
     }
   } catch (const std::invalid_argument& e) {
     // ScenarioError and the library's documented invalid-input exceptions.
@@ -288,6 +296,41 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
     return kExitInternal;
   }
   return kExitInternal;
+}
+
+}  // namespace
+
+int RunCli(int argc, char** argv, const RunHooks& hooks) {
+  CLI::App cli{
+      "thrustsched: minimum-fuel on-off thruster firing schedules (station keeping, rendezvous) "
+      "by mixed-integer linear programming.\n"
+      "Scenario files are JSON, documented in data/scenarios/README.md.\n"
+      "Exit codes: 0 solved (optimal or feasible) or check passed, 1 internal error, 2 bad input, "
+      "3 infeasible, 4 no solution within the time limit, 5 check failed."};
+  cli.set_version_flag("-V,--version", std::string("thrustsched ") + THRUSTSCHED_VERSION + " (" +
+                                           milp::CbcVersion() + ")");
+  cli.require_subcommand(1);
+  Subcommands c;
+  AddSolveCommand(&cli, &c);
+  AddExportCommand(&cli, &c);
+  AddCheckCommand(&cli, &c);
+  AddImportCommand(&cli, &c);
+  AddValidateCommand(&cli, &c);
+  AddSimulateCommand(&cli, &c);
+  if (const std::optional<int> code = AnswerHelpOrUnknown(&cli, argc, argv)) return *code;
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);  // prints the message
+    return kExitBadInput;
+  }
+  return RunParsed(&c, argc, argv, hooks);
 }
 
 int RunCli(const std::vector<std::string>& args, const RunHooks& hooks) {

@@ -120,22 +120,6 @@ void WriteScenarioModelFile(const std::string& path, const milp::LpData& model,
   }
 }
 
-// Runs the checker on burns; a failing nonlinear replay (e.g. the orbit leaves
-// the model's validity) is reported and the linear check kept.
-transcription::CheckReport RunChecker(const Scenario& s,
-                                      const std::vector<transcription::Burn>& burns,
-                                      std::string* nonlinear_error) {
-  try {
-    return transcription::CheckSchedule(s.problem, burns, s.check);
-  } catch (const std::runtime_error& e) {
-    if (!s.check.nonlinear) throw;
-    *nonlinear_error = e.what();
-    transcription::CheckOptions o = s.check;
-    o.nonlinear.reset();
-    return transcription::CheckSchedule(s.problem, burns, o);
-  }
-}
-
 void PrintCheck(std::ostream& os, const Scenario& s, const transcription::CheckReport& r,
                 const CheckVerdict& v) {
   const double k = s.window_unit_per_output_unit;
@@ -246,22 +230,18 @@ std::string ProgressLine(const milp::SolveProgress& p, double best) {
   return os.str();
 }
 
-}  // namespace
+// What a solve run produced besides the model.
+struct SolveRun {
+  transcription::ScheduleResult result;
+  std::optional<transcription::ConjunctionSolve> rounds;  // budget rounds of a conjunction
+  std::optional<transcription::ConjunctionCheckReport> conjunction;  // the plan's verification
+  std::string nonlinear_error;  // the nonlinear replay failed (the linear check kept)
+  bool interrupted = false;
+};
 
-int RunSolve(const SolveArgs& a) {
-  const Clock::time_point t_start = Clock::now();
-  Scenario s = LoadWithOverrides(a.scenario, a.overrides);
-  if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
-  if (!a.export_lp.empty()) ModelFileExtension(a.export_lp, "--export-lp");
-  CheckFlightDynamicsFiles(s, a.ccsds, s.problem.grid.front(), s.problem.grid.back());
-  const std::string target =
-      a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
-  RunFolder folder(target, a.force, a.command_line);
-  const std::string& dir = folder.path();
-  std::ostream& err = std::cerr;
-  if (!a.quiet) err << "building the model: " << ModelLine(s) << "\n";
-
-  const transcription::ScheduleMilp milp(s.problem, s.build);
+// The built model's size and notes on stderr, and the --export-* files.
+void ReportBuild(const SolveArgs& a, const Scenario& s, const transcription::ScheduleMilp& milp,
+                 std::ostream& err) {
   if (!a.quiet) {
     err << "model: " << MilpLine(milp, s) << "; discretised in "
         << Secs(milp.stats().discretise_seconds) << ", built in "
@@ -272,12 +252,16 @@ int RunSolve(const SolveArgs& a) {
   }
   if (!a.export_mps.empty()) WriteScenarioModelFile(a.export_mps, milp.lp(), s.name, false);
   if (!a.export_lp.empty()) WriteScenarioModelFile(a.export_lp, milp.lp(), s.name, false);
+}
 
-  // Solve (progress on stderr once the solve has run for a few seconds).
+// The scenario's solve options with the CLI's observers: progress on stderr
+// once the solve has run for a few seconds, Ctrl-C, the diagnosis notice.
+transcription::SolveScheduleOptions CliSolveOptions(const SolveArgs& a, const Scenario& s,
+                                                    std::ostream& err) {
   transcription::SolveScheduleOptions opt{};
   opt.build = s.build;
   opt.milp = s.solve;
-  opt.check_schedule = false;  // checked below, with its own timing and messages
+  opt.check_schedule = false;  // checked by CheckRun, with its own timing and messages
   opt.search.enabled = s.search;
   const bool quiet = a.quiet;
   // The best incumbent seen so far: progress reports between incumbents may
@@ -295,152 +279,157 @@ int RunSolve(const SolveArgs& a) {
   opt.announce = [quiet, &err](const std::string& what) {
     if (!quiet) err << what << " (--no-diagnose skips this)\n";
   };
+  return opt;
+}
+
+// Solves under the Ctrl-C watcher (budget rounds for a conjunction).
+void SolveUnderWatcher(const SolveArgs& a, const Scenario& s,
+                       const transcription::ScheduleMilp& milp,
+                       const transcription::SolveScheduleOptions& opt, Clock::time_point t_start,
+                       SolveRun* run, std::ostream& err) {
   if (!a.quiet) {
     err << "solving with " << milp::CbcVersion() << " (time limit " << F(s.solve.time_limit_s)
         << " s, relative gap " << F(s.solve.relative_gap) << ", " << s.solve.threads
         << " thread(s)); Ctrl-C stops and keeps the best schedule found\n";
   }
   const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
-  transcription::ScheduleResult r;
-  std::optional<transcription::ConjunctionSolve> rounds;  // budget rounds of a conjunction
-  bool interrupted = false;
   {
     InterruptWatcher watcher;
     if (s.problem.conjunction) {
-      rounds = transcription::SolveConjunction(milp, *solver, opt, s.conjunction_solve);
-      r = rounds->result;
+      run->rounds = transcription::SolveConjunction(milp, *solver, opt, s.conjunction_solve);
+      run->result = run->rounds->result;
     } else {
-      r = transcription::SolveBuilt(milp, *solver, opt);
+      run->result = transcription::SolveBuilt(milp, *solver, opt);
     }
   }
-  interrupted = InterruptWatcher::interrupted();
-  if (interrupted) {
+  run->interrupted = InterruptWatcher::interrupted();
+  if (run->interrupted) {
     err << "interrupted (" << InterruptWatcher::signal_name() << ") after " << Secs(Since(t_start))
         << ": "
-        << (r.has_schedule() ? "checking and writing the best schedule found"
-                             : "no schedule was found; writing the summary")
+        << (run->result.has_schedule() ? "checking and writing the best schedule found"
+                                       : "no schedule was found; writing the summary")
         << "\n";
   }
+}
 
-  // Check.
-  std::string nonlinear_error;
-  if (r.has_schedule()) {
-    if (!a.quiet) {
-      err << "checking the schedule"
-          << (s.check.nonlinear ? " (linear re-propagation and nonlinear replay)" : "") << "\n";
-    }
-    const Clock::time_point tc = Clock::now();
-    if (s.impulsive()) {
-      r.impulsive_check = transcription::CheckImpulses(s.problem, r.schedule.impulses);
-    } else {
-      r.check = RunChecker(s, r.schedule.burns, &nonlinear_error);
-    }
-    r.checked = true;
-    r.check_seconds = Since(tc);
+// The checker on the schedule found, and the conjunction's verification.
+void CheckRun(const SolveArgs& a, const Scenario& s, SolveRun* run, std::ostream& err) {
+  transcription::ScheduleResult& r = run->result;
+  if (!r.has_schedule()) return;
+  if (!a.quiet) {
+    err << "checking the schedule"
+        << (s.check.nonlinear ? " (linear re-propagation and nonlinear replay)" : "") << "\n";
   }
-  std::optional<transcription::ConjunctionCheckReport> conjunction;
-  if (r.has_schedule() && s.problem.conjunction) {
-    if (!a.quiet) err << "verifying the conjunction (computed risk, Monte Carlo)\n";
-    conjunction = VerifyConjunction(s, r.schedule.burns, r.schedule.impulses);
+  const Clock::time_point tc = Clock::now();
+  if (s.impulsive()) {
+    r.impulsive_check = transcription::CheckImpulses(s.problem, r.schedule.impulses);
+  } else {
+    r.check = CheckWithLinearFallback(s, r.schedule.burns, &run->nonlinear_error);
   }
-
-  // Files.
-  std::vector<std::string> files = {"summary.json"};
-  if (r.has_schedule()) {
-    if (s.impulsive()) {
-      WriteImpulsesCsv(dir + "/impulses.csv", s, r.schedule.impulses);
-      WriteScheduleCsv(dir + "/schedule.csv", s, {});
-      WriteImpulsiveTrajectoryCsv(dir + "/trajectory.csv", s, r.schedule.impulses);
-      files.insert(files.end(), {"schedule.csv", "impulses.csv", "trajectory.csv"});
-    } else {
-      WriteScheduleCsv(dir + "/schedule.csv", s, r.schedule.burns);
-      WriteTrajectoryCsv(dir + "/trajectory.csv", s, r.check, r.schedule.burns);
-      files.insert(files.end(), {"schedule.csv", "trajectory.csv"});
-    }
-    WritePlotsReport(folder, s, r.check.nonlinear_checked, a.no_plots, &files, err);
-    if (a.ccsds.any()) {
-      for (const std::string& f : WriteFlightDynamicsFiles(
-               s, InFolder(a.ccsds, folder),
-               {ScenarioReplayLeg(s, r.schedule.burns, r.check.sample_times)})) {
-        files.push_back(ShownPath(folder, f));
-      }
-    }
-  }
-  RunFacts facts;
-  facts.interrupted = interrupted;
-  facts.command_line = a.command_line;
-  facts.total_seconds = Since(t_start);
-  nlohmann::json summary = SummaryJson(s, milp, r, facts);
-  if (!nonlinear_error.empty() && summary["check"].is_object()) {
-    summary["check"]["nonlinear_error"] = nonlinear_error;
-  }
+  r.checked = true;
+  r.check_seconds = Since(tc);
   if (s.problem.conjunction) {
-    summary["conjunction"] = ConjunctionJson(milp.keep_out(), rounds ? &*rounds : nullptr,
-                                             conjunction ? &*conjunction : nullptr);
+    if (!a.quiet) err << "verifying the conjunction (computed risk, Monte Carlo)\n";
+    run->conjunction = VerifyConjunction(s, r.schedule.burns, r.schedule.impulses);
   }
-  WriteJsonFile(dir + "/summary.json", summary);
-  if (!a.no_report) {
-    try {
-      WriteSolveReport(dir, s, summary);
-      files.push_back(kReportName);
-    } catch (const std::exception& e) {
-      err << "note: " << kReportName << " not written: " << e.what() << "\n";
+}
+
+// schedule.csv (impulses.csv), trajectory.csv, the plots and the CCSDS
+// files of a run with a schedule; appends their names to `files`.
+void WriteScheduleFiles(const SolveArgs& a, const Scenario& s, const RunFolder& folder,
+                        const transcription::ScheduleResult& r, std::vector<std::string>* files,
+                        std::ostream& err) {
+  if (!r.has_schedule()) return;
+  const std::string& dir = folder.path();
+  if (s.impulsive()) {
+    WriteImpulsesCsv(dir + "/impulses.csv", s, r.schedule.impulses);
+    WriteScheduleCsv(dir + "/schedule.csv", s, {});
+    WriteImpulsiveTrajectoryCsv(dir + "/trajectory.csv", s, r.schedule.impulses);
+    files->insert(files->end(), {"schedule.csv", "impulses.csv", "trajectory.csv"});
+  } else {
+    WriteScheduleCsv(dir + "/schedule.csv", s, r.schedule.burns);
+    WriteTrajectoryCsv(dir + "/trajectory.csv", s, r.check, r.schedule.burns);
+    files->insert(files->end(), {"schedule.csv", "trajectory.csv"});
+  }
+  WritePlotsReport(folder, s, r.check.nonlinear_checked, a.no_plots, files, err);
+  if (a.ccsds.any()) {
+    for (const std::string& f :
+         WriteFlightDynamicsFiles(s, InFolder(a.ccsds, folder),
+                                  {ScenarioReplayLeg(s, r.schedule.burns, r.check.sample_times)})) {
+      files->push_back(ShownPath(folder, f));
     }
   }
-  const std::string replaced = folder.Commit();
-  if (!replaced.empty()) err << "note: " << replaced << "\n";
+}
 
-  // Human summary.
-  std::ostream& out = std::cout;
+// summary.json and report.html (a report that fails is a note, not an error).
+void WriteSummaryAndReport(const SolveArgs& a, const Scenario& s, const std::string& dir,
+                           const nlohmann::json& summary, std::vector<std::string>* files,
+                           std::ostream& err) {
+  WriteJsonFile(dir + "/summary.json", summary);
+  if (a.no_report) return;
+  try {
+    WriteSolveReport(dir, s, summary);
+    files->push_back(kReportName);
+  } catch (const std::exception& e) {
+    err << "note: " << kReportName << " not written: " << e.what() << "\n";
+  }
+}
+
+// The status, objective, consumption and burns lines of the human summary.
+void PrintOutcome(std::ostream& out, const Scenario& s, const SolveRun& run) {
+  const transcription::ScheduleResult& r = run.result;
   const milp::SolveResult& sr = r.solve;
-  out << "scenario      " << s.name << " (" << a.scenario << ")\n";
-  out << "model         " << ModelLine(s) << "\n";
-  out << "MILP          " << MilpLine(milp, s) << "\n";
-  if (milp.keep_out()) PrintKeepOut(out, *milp.keep_out());
   out << "status        " << StatusName(sr.status);
-  if (interrupted) out << " (interrupted)";
+  if (run.interrupted) out << " (interrupted)";
   if (sr.has_solution()) {
     out << ", objective " << F(sr.objective, 8) << " (" << ToString(s.problem.objective.kind)
         << "), best bound " << F(sr.best_bound, 8) << ", gap " << FormatPercent(sr.gap);
   }
   out << "\n";
-  if (rounds) PrintConjunctionSolve(out, *rounds);
+  if (run.rounds) PrintConjunctionSolve(out, *run.rounds);
   if (!sr.detail.empty() && !sr.has_solution()) out << "solver says   " << sr.detail << "\n";
   for (const std::string& reason : r.infeasibility_reasons)
     out << "reason        " << reason << "\n";
-  if (r.has_schedule()) {
-    const transcription::Schedule& sch = r.schedule;
-    out << "consumption   " << F(sch.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
-        << F(sch.delta_v_m_s, 6) << " m/s, propellant " << F(sch.propellant_kg, 6) << " kg\n";
-    if (s.impulsive()) {
-      out << "impulses      " << sch.impulses.size()
-          << (sch.impulses.empty() ? "" : ": " + BurnCounts(s, sch)) << "\n";
-    } else {
-      out << "burns         " << sch.burns.size()
-          << (sch.burns.empty() ? "" : ": " + BurnCounts(s, sch)) << "\n";
-    }
+  if (!r.has_schedule()) return;
+  const transcription::Schedule& sch = r.schedule;
+  out << "consumption   " << F(sch.consumption_l1_m_s, 6) << " m/s (L1 thesis metric), delta-v "
+      << F(sch.delta_v_m_s, 6) << " m/s, propellant " << F(sch.propellant_kg, 6) << " kg\n";
+  if (s.impulsive()) {
+    out << "impulses      " << sch.impulses.size()
+        << (sch.impulses.empty() ? "" : ": " + BurnCounts(s, sch)) << "\n";
+  } else {
+    out << "burns         " << sch.burns.size()
+        << (sch.burns.empty() ? "" : ": " + BurnCounts(s, sch)) << "\n";
   }
+}
+
+// The times line and the checker's lines of the human summary.
+void PrintTimesAndCheck(std::ostream& out, const Scenario& s, const SolveRun& run,
+                        double total_seconds) {
+  const transcription::ScheduleResult& r = run.result;
+  const milp::SolveResult& sr = r.solve;
   out << "times         discretise " << Secs(r.stats.discretise_seconds) << ", build "
       << Secs(r.stats.build_seconds) << ", solve " << Secs(sr.wall_seconds);
   if (!sr.incumbents.empty())
     out << " (first solution " << Secs(sr.incumbents.front().wall_seconds) << ")";
   if (r.diagnosis_seconds > 0.0) out << ", diagnose " << Secs(r.diagnosis_seconds);
   if (r.checked) out << ", check " << Secs(r.check_seconds);
-  out << ", total " << Secs(facts.total_seconds) << "\n";
+  out << ", total " << Secs(total_seconds) << "\n";
   if (r.checked) {
     if (s.impulsive()) {
       PrintImpulsiveCheck(out, s, r.impulsive_check, JudgeImpulsive(s, r.impulsive_check));
     } else {
       PrintCheck(out, s, r.check, Judge(s, r.check));
     }
-    if (!nonlinear_error.empty())
-      out << "note          nonlinear replay failed: " << nonlinear_error << "\n";
+    if (!run.nonlinear_error.empty())
+      out << "note          nonlinear replay failed: " << run.nonlinear_error << "\n";
   }
-  if (conjunction) PrintConjunctionCheck(out, *conjunction);
-  out << "output        " << target << " (" << JoinNames(files) << ")\n";
-  out.flush();
+  if (run.conjunction) PrintConjunctionCheck(out, *run.conjunction);
+}
 
-  switch (sr.status) {
+// The exit code of a solve that ended with `status` (commands.h).
+int SolveExitCode(milp::SolveStatus status) {
+  switch (status) {
     case milp::SolveStatus::kOptimal:
     case milp::SolveStatus::kFeasible:
       return kExitOk;
@@ -453,6 +442,51 @@ int RunSolve(const SolveArgs& a) {
       return kExitInternal;
   }
   return kExitInternal;
+}
+
+}  // namespace
+
+int RunSolve(const SolveArgs& a) {
+  const Clock::time_point t_start = Clock::now();
+  Scenario s = LoadWithOverrides(a.scenario, a.overrides);
+  if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
+  if (!a.export_lp.empty()) ModelFileExtension(a.export_lp, "--export-lp");
+  CheckFlightDynamicsFiles(s, a.ccsds, s.problem.grid.front(), s.problem.grid.back());
+  const std::string target =
+      a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
+  RunFolder folder(target, a.force, a.command_line);
+  std::ostream& err = std::cerr;
+  if (!a.quiet) err << "building the model: " << ModelLine(s) << "\n";
+  const transcription::ScheduleMilp milp(s.problem, s.build);
+  ReportBuild(a, s, milp, err);
+
+  SolveRun run;
+  SolveUnderWatcher(a, s, milp, CliSolveOptions(a, s, err), t_start, &run, err);
+  CheckRun(a, s, &run, err);
+
+  std::vector<std::string> files = {"summary.json"};
+  WriteScheduleFiles(a, s, folder, run.result, &files, err);
+  RunFacts facts;
+  facts.interrupted = run.interrupted;
+  facts.command_line = a.command_line;
+  facts.total_seconds = Since(t_start);
+  facts.nonlinear_error = run.nonlinear_error;
+  facts.conjunction_solve = run.rounds ? &*run.rounds : nullptr;
+  facts.conjunction_check = run.conjunction ? &*run.conjunction : nullptr;
+  WriteSummaryAndReport(a, s, folder.path(), SummaryJson(s, milp, run.result, facts), &files, err);
+  const std::string replaced = folder.Commit();
+  if (!replaced.empty()) err << "note: " << replaced << "\n";
+
+  std::ostream& out = std::cout;
+  out << "scenario      " << s.name << " (" << a.scenario << ")\n";
+  out << "model         " << ModelLine(s) << "\n";
+  out << "MILP          " << MilpLine(milp, s) << "\n";
+  if (milp.keep_out()) PrintKeepOut(out, *milp.keep_out());
+  PrintOutcome(out, s, run);
+  PrintTimesAndCheck(out, s, run, facts.total_seconds);
+  out << "output        " << target << " (" << JoinNames(files) << ")\n";
+  out.flush();
+  return SolveExitCode(run.result.solve.status);
 }
 
 int RunExport(const ExportArgs& a) {
@@ -505,7 +539,7 @@ int RunCheck(const CheckArgs& a) {
   } else {
     const std::vector<transcription::Burn> burns = ReadScheduleCsv(a.schedule, s);
     std::string nonlinear_error;
-    const transcription::CheckReport r = RunChecker(s, burns, &nonlinear_error);
+    const transcription::CheckReport r = CheckWithLinearFallback(s, burns, &nonlinear_error);
     const CheckVerdict v = Judge(s, r);
     transcription::Schedule sch;
     sch.burns = burns;

@@ -148,6 +148,8 @@ void ParseConjunction(JsonObject c, Scenario* s) {
 
   std::string err;
   if (!spec.IsValid(&err)) throw ScenarioError(c.path() + ": " + err);
+  if (!check.IsValid(&err)) throw ScenarioError(c.FieldPath("verification") + "." + err);
+  if (!s->conjunction_solve.IsValid(&err)) throw ScenarioError(c.FieldPath("solve") + "." + err);
   s->problem.conjunction = spec;
   s->conjunction_check = check;
 }

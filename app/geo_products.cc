@@ -18,6 +18,8 @@ namespace {
 using transcription::Burn;
 constexpr double kTimeTolerance = 1e-6;  // s: two times closer than this are one instant
 constexpr int kMaxInterpolationDegree = 7;
+// A leg's number of sample steps is whole up to this (rounding of end - start).
+constexpr double kStepCountSlack = 1e-9;
 
 std::shared_ptr<const dynamics::GeoSimulator> Simulator(const Scenario& s) {
   if (!s.geo) throw std::invalid_argument("flight-dynamics products need a GEO scenario");
@@ -279,7 +281,8 @@ ReplayLeg CycleReplayLeg(const planning::CycleRecord& c, double step_s) {
   leg.end_s = c.applied_end_s;
   leg.eci = c.eci_start;
   leg.burns = c.burns;
-  const int n = static_cast<int>(std::ceil((c.applied_end_s - c.start_s) / step_s - 1e-9));
+  const int n =
+      static_cast<int>(std::ceil((c.applied_end_s - c.start_s) / step_s - kStepCountSlack));
   for (int k = 0; k <= n; ++k)
     leg.sample_times.push_back(std::min(c.start_s + k * step_s, c.applied_end_s));
   return leg;

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/conjunction_report.h"
 #include "common/constants.h"
 #include "common/format.h"
 #include "dynamics/geo_simulator.h"
@@ -30,6 +31,11 @@ namespace {
 
 using common::kPi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A start_utc/end_utc cell names its time in seconds to this (s; 1 ms).
+constexpr double kUtcLabelTolerance_s = 1e-3;
+// A derived time cell (duration_s, an impulse's time_s) agrees with the
+// times it is derived from to this, relative to max(1 s, |time|).
+constexpr double kDerivedTimeRelativeTolerance = 1e-6;
 
 // JSON number or null for non-finite values (nlohmann writes NaN/inf as null anyway;
 // being explicit keeps the intent visible).
@@ -154,7 +160,7 @@ void CheckUtcCell(const std::string& path, const CsvTable::Row& row, const CsvTa
   if (!s.geo) throw ScenarioError(where + ": the scenario has no UTC epoch (GEO models only)");
   const dynamics::Epoch label = Wrap(where, [&] { return dynamics::Epoch::Parse(cell); });
   const double dt = label.SecondsSince(dynamics::Epoch::Parse(s.geo->epoch)) - t_s;
-  if (std::abs(dt) > 1e-3) {
+  if (std::abs(dt) > kUtcLabelTolerance_s) {
     throw ScenarioError(where + " is not the UTC time of " + Fmt(t_s) + " s after the epoch " +
                         s.geo->epoch + " (off by " + Fmt(dt) + " s)");
   }
@@ -257,24 +263,33 @@ CheckVerdict JudgeImpulsive(const Scenario& s, const transcription::ImpulsiveChe
                            " (tolerance " + Fmt(s.verdict.window_tolerance) + ")");
     }
   }
-  if (c.terminal_error > 1e-6) {
+  if (c.terminal_error > transcription::kTerminalTolerance) {
     v.findings.push_back("terminal constraint violated (scaled error " + Fmt(c.terminal_error) +
-                         ", tolerance 1e-06)");
+                         ", tolerance " + Fmt(transcription::kTerminalTolerance) + ")");
   }
   v.passed = v.findings.empty();
   return v;
 }
 
-nlohmann::json CheckJson(const Scenario& s, const transcription::CheckReport& r,
-                         const CheckVerdict& verdict, double check_seconds) {
-  nlohmann::json j;
-  j["passed"] = verdict.passed;
-  j["findings"] = verdict.findings;
-  j["operational_ok"] = r.operational_ok;
+transcription::CheckReport CheckWithLinearFallback(const Scenario& s,
+                                                   const std::vector<transcription::Burn>& burns,
+                                                   std::string* nonlinear_error) {
+  try {
+    return transcription::CheckSchedule(s.problem, burns, s.check);
+  } catch (const std::runtime_error& e) {
+    if (!s.check.nonlinear) throw;
+    *nonlinear_error = e.what();
+    transcription::CheckOptions o = s.check;
+    o.nonlinear.reset();
+    return transcription::CheckSchedule(s.problem, burns, o);
+  }
+}
+
+void AddRuleViolations(const std::vector<transcription::RuleViolation>& violations,
+                       const std::vector<std::string>& names, nlohmann::json* j) {
   nlohmann::json msgs = nlohmann::json::array();
   nlohmann::json details = nlohmann::json::array();
-  const std::vector<std::string> names = s.thruster_names();
-  for (const transcription::RuleViolation& v : r.rule_violations) {
+  for (const transcription::RuleViolation& v : violations) {
     msgs.push_back(v.message);
     details.push_back({{"rule", v.rule},
                        {"thruster", v.thruster >= 0 && v.thruster < static_cast<int>(names.size())
@@ -283,8 +298,17 @@ nlohmann::json CheckJson(const Scenario& s, const transcription::CheckReport& r,
                        {"time_s", FiniteOrNull(v.time_s)},
                        {"message", v.message}});
   }
-  j["rule_violations"] = msgs;
-  j["rule_violation_details"] = details;
+  (*j)["rule_violations"] = msgs;
+  (*j)["rule_violation_details"] = details;
+}
+
+nlohmann::json CheckJson(const Scenario& s, const transcription::CheckReport& r,
+                         const CheckVerdict& verdict, double check_seconds) {
+  nlohmann::json j;
+  j["passed"] = verdict.passed;
+  j["findings"] = verdict.findings;
+  j["operational_ok"] = r.operational_ok;
+  AddRuleViolations(r.rule_violations, s.thruster_names(), &j);
   j["window_unit"] =
       s.window_unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.window_unit);
   j["window_tolerance"] =
@@ -327,29 +351,25 @@ nlohmann::json ImpulsiveCheckJson(const Scenario& s, const transcription::Impuls
   j["max_window_violation"] = OutputToWindow(s, c.max_window_violation);
   j["max_window_violation_nodes"] = OutputToWindow(s, c.max_window_violation);
   j["terminal_error"] = c.terminal_error;
-  j["terminal_ok"] = c.terminal_error <= 1e-6;
+  j["terminal_ok"] = c.terminal_error <= transcription::kTerminalTolerance;
   std::vector<double> fs(c.final_state.data(), c.final_state.data() + c.final_state.size());
   j["final_state"] = fs;
   j["check_seconds"] = check_seconds;
   return j;
 }
 
-nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp& milp,
-                           const transcription::ScheduleResult& r, const RunFacts& facts) {
+nlohmann::json SolveResultJson(const transcription::ScheduleResult& r,
+                               const std::vector<std::string>& names,
+                               transcription::ObjectiveKind objective_kind, bool interrupted,
+                               double total_seconds) {
   nlohmann::json j;
   const milp::SolveResult& sr = r.solve;
   const transcription::Schedule& sch = r.schedule;
-  const std::vector<std::string> names = s.thruster_names();
-  j["name"] = s.name;
-  j["scenario_file"] = s.path;
-  j["command_line"] = facts.command_line;
-  j["model"] = std::string(ToString(s.model_type));
-  j["input_mode"] = s.impulsive() ? "impulsive" : "on_off";
   j["status"] = StatusName(sr.status);
   j["solver_detail"] = sr.detail;
   j["solver_version"] = sr.solver_version;
-  j["interrupted"] = facts.interrupted;
-  j["objective_kind"] = std::string(transcription::ToString(s.problem.objective.kind));
+  j["interrupted"] = interrupted;
+  j["objective_kind"] = std::string(transcription::ToString(objective_kind));
   j["objective"] = sr.has_solution() ? FiniteOrNull(sr.objective) : nullptr;
   j["best_bound"] = FiniteOrNull(sr.best_bound);
   j["gap"] = FiniteOrNull(sr.gap);
@@ -367,22 +387,6 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   }
   j["n_burns"] = sch.burns.size();
   j["burns"] = burns;
-  if (s.impulsive()) {
-    nlohmann::json imp = nlohmann::json::array();
-    for (const transcription::Impulse& i : sch.impulses) {
-      imp.push_back({{"thruster", names[i.thruster]},
-                     {"node", i.node},
-                     {"time_s", i.time_s},
-                     {"delta_v_m_s", i.delta_v_m_s}});
-    }
-    j["n_impulses"] = sch.impulses.size();
-    j["impulses"] = imp;
-  }
-  nlohmann::json on_time = nlohmann::json::object();
-  for (size_t i = 0; i < sch.on_time_s.size() && i < names.size(); ++i) {
-    on_time[names[i]] = sch.on_time_s[i];
-  }
-  j["on_time_s"] = on_time;
   j["n_binaries"] = r.stats.num_binaries;
   j["n_columns"] = r.stats.num_columns;
   j["n_rows"] = r.stats.num_rows;
@@ -391,9 +395,7 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
   j["build_seconds"] = r.stats.build_seconds;
   j["solve_seconds"] = sr.wall_seconds;
   j["check_seconds"] = r.check_seconds;
-  j["time_to_first_s"] = sr.incumbents.empty() ? nlohmann::json(nullptr)
-                                               : FiniteOrNull(sr.incumbents.front().wall_seconds);
-  j["total_seconds"] = facts.total_seconds;
+  j["total_seconds"] = total_seconds;
   nlohmann::json inc = nlohmann::json::array();
   for (const milp::Incumbent& c : sr.incumbents) {
     inc.push_back({{"wall_seconds", c.wall_seconds},
@@ -401,18 +403,47 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
                    {"best_bound", FiniteOrNull(c.best_bound)}});
   }
   j["incumbents"] = inc;
-  j["scheme"] = std::string(dynamics::ToString(s.build.discretisation.scheme));
-  j["formulation"] = std::string(ToString(s.build.formulation));
-  j["encoding"] = std::string(ToString(s.build.encoding));
-  j["threads"] = s.solve.threads;
-  j["time_limit_s"] = FiniteOrNull(s.solve.time_limit_s);
-  j["relative_gap"] = s.solve.relative_gap;
-  j["grid"] = {{"start_s", s.problem.grid.front()},
-               {"end_s", s.problem.grid.back()},
-               {"step_s", s.step_s},
-               {"num_intervals", s.num_intervals}};
+  j["infeasibility_reasons"] = r.infeasibility_reasons;
+  return j;
+}
+
+namespace {
+
+// summary.json's impulses and on-times (SummaryJson).
+void AddScheduleDetails(const Scenario& s, const transcription::Schedule& sch,
+                        const std::vector<std::string>& names, nlohmann::json* j) {
+  if (s.impulsive()) {
+    nlohmann::json imp = nlohmann::json::array();
+    for (const transcription::Impulse& i : sch.impulses) {
+      imp.push_back({{"thruster", names[i.thruster]},
+                     {"node", i.node},
+                     {"time_s", i.time_s},
+                     {"delta_v_m_s", i.delta_v_m_s}});
+    }
+    (*j)["n_impulses"] = sch.impulses.size();
+    (*j)["impulses"] = imp;
+  }
+  nlohmann::json on_time = nlohmann::json::object();
+  for (size_t i = 0; i < sch.on_time_s.size() && i < names.size(); ++i) {
+    on_time[names[i]] = sch.on_time_s[i];
+  }
+  (*j)["on_time_s"] = on_time;
+}
+
+// summary.json's settings: scheme, formulation, encoding, solver limits, grid, window.
+void AddSettings(const Scenario& s, nlohmann::json* j) {
+  (*j)["scheme"] = std::string(dynamics::ToString(s.build.discretisation.scheme));
+  (*j)["formulation"] = std::string(ToString(s.build.formulation));
+  (*j)["encoding"] = std::string(ToString(s.build.encoding));
+  (*j)["threads"] = s.solve.threads;
+  (*j)["time_limit_s"] = FiniteOrNull(s.solve.time_limit_s);
+  (*j)["relative_gap"] = s.solve.relative_gap;
+  (*j)["grid"] = {{"start_s", s.problem.grid.front()},
+                  {"end_s", s.problem.grid.back()},
+                  {"step_s", s.step_s},
+                  {"num_intervals", s.num_intervals}};
   if (s.problem.window.enabled()) {
-    j["window"] = {
+    (*j)["window"] = {
         {"unit", s.window_unit},
         {"half_widths", s.window_half_widths},
         {"outputs",
@@ -420,42 +451,71 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
         {"enforce_from_s", FiniteOrNull(s.problem.window.enforce_from_s)},
         {"soft", s.problem.window.soft}};
   } else {
-    j["window"] = nullptr;
+    (*j)["window"] = nullptr;
   }
-  if (!s.impulsive()) {
-    const transcription::OperationalEncoding& e = milp.encoding();
-    const transcription::OperationalRules& rules = s.problem.rules;
-    j["effective_rules"] = {
-        {"max_simultaneous", rules.max_simultaneous},
-        {"min_burn_s", e.effective_min_burn_s},
-        {"min_off_same_s", e.effective_min_off_same_s},
-        {"min_gap_other_s", e.effective_min_gap_other_s},
-        {"min_burn_intervals", {e.min_burn_intervals_min, e.min_burn_intervals_max}},
-        {"min_off_same_intervals", {e.min_off_same_intervals_min, e.min_off_same_intervals_max}},
-        {"min_gap_other_intervals", {e.min_gap_other_intervals_min, e.min_gap_other_intervals_max}},
-        {"requested",
-         {{"min_burn_s", rules.min_burn_s},
-          {"min_off_same_s", rules.min_off_same_s},
-          {"min_gap_other_s", rules.min_gap_other_s},
-          {"max_burn_s", FiniteOrNull(rules.max_burn_s)},
-          {"max_burns_per_thruster", rules.max_burns_per_thruster}}}};
-  }
-  j["infeasibility_reasons"] = r.infeasibility_reasons;
-  if (has && !sch.states.empty()) {
+}
+
+// summary.json's "effective_rules": the rules as the grid encodes them, and as asked.
+nlohmann::json EffectiveRulesJson(const Scenario& s, const transcription::ScheduleMilp& milp) {
+  const transcription::OperationalEncoding& e = milp.encoding();
+  const transcription::OperationalRules& rules = s.problem.rules;
+  return {
+      {"max_simultaneous", rules.max_simultaneous},
+      {"min_burn_s", e.effective_min_burn_s},
+      {"min_off_same_s", e.effective_min_off_same_s},
+      {"min_gap_other_s", e.effective_min_gap_other_s},
+      {"min_burn_intervals", {e.min_burn_intervals_min, e.min_burn_intervals_max}},
+      {"min_off_same_intervals", {e.min_off_same_intervals_min, e.min_off_same_intervals_max}},
+      {"min_gap_other_intervals", {e.min_gap_other_intervals_min, e.min_gap_other_intervals_max}},
+      {"requested",
+       {{"min_burn_s", rules.min_burn_s},
+        {"min_off_same_s", rules.min_off_same_s},
+        {"min_gap_other_s", rules.min_gap_other_s},
+        {"max_burn_s", FiniteOrNull(rules.max_burn_s)},
+        {"max_burns_per_thruster", rules.max_burns_per_thruster}}}};
+}
+
+// summary.json's "check" object (null when the schedule was not checked).
+nlohmann::json SummaryCheckJson(const Scenario& s, const transcription::ScheduleResult& r,
+                                const std::string& nonlinear_error) {
+  if (!r.checked) return nullptr;
+  nlohmann::json j = s.impulsive()
+                         ? ImpulsiveCheckJson(s, r.impulsive_check,
+                                              JudgeImpulsive(s, r.impulsive_check), r.check_seconds)
+                         : CheckJson(s, r.check, Judge(s, r.check), r.check_seconds);
+  if (!nonlinear_error.empty()) j["nonlinear_error"] = nonlinear_error;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp& milp,
+                           const transcription::ScheduleResult& r, const RunFacts& facts) {
+  const std::vector<std::string> names = s.thruster_names();
+  const transcription::Schedule& sch = r.schedule;
+  nlohmann::json j =
+      SolveResultJson(r, names, s.problem.objective.kind, facts.interrupted, facts.total_seconds);
+  j["name"] = s.name;
+  j["scenario_file"] = s.path;
+  j["command_line"] = facts.command_line;
+  j["model"] = std::string(ToString(s.model_type));
+  j["input_mode"] = s.impulsive() ? "impulsive" : "on_off";
+  AddScheduleDetails(s, sch, names, &j);
+  j["time_to_first_s"] = r.solve.incumbents.empty()
+                             ? nlohmann::json(nullptr)
+                             : FiniteOrNull(r.solve.incumbents.front().wall_seconds);
+  AddSettings(s, &j);
+  if (!s.impulsive()) j["effective_rules"] = EffectiveRulesJson(s, milp);
+  if (r.has_schedule() && !sch.states.empty()) {
     const Eigen::VectorXd& xf = sch.states.back();
     j["final_state_discrete"] = std::vector<double>(xf.data(), xf.data() + xf.size());
     if (s.model_type == ModelType::kHcw)
       j["final_drift_term_m"] = FiniteOrNull(HcwDriftTerm(s, xf));
   }
-  if (r.checked) {
-    if (s.impulsive()) {
-      j["check"] = ImpulsiveCheckJson(s, r.impulsive_check, JudgeImpulsive(s, r.impulsive_check),
-                                      r.check_seconds);
-    } else {
-      j["check"] = CheckJson(s, r.check, Judge(s, r.check), r.check_seconds);
-    }
-  } else {
-    j["check"] = nullptr;
+  j["check"] = SummaryCheckJson(s, r, facts.nonlinear_error);
+  if (s.problem.conjunction) {
+    j["conjunction"] =
+        ConjunctionJson(milp.keep_out(), facts.conjunction_solve, facts.conjunction_check);
   }
   return j;
 }
@@ -555,7 +615,8 @@ std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const 
     auto d = t.column.find("duration_s");
     if (d != t.column.end()) {
       const double dur = CellNumber(path, row, "duration_s", d->second);
-      if (std::abs(dur - b.duration_s()) > 1e-6 * std::max(1.0, std::abs(b.end_s))) {
+      if (std::abs(dur - b.duration_s()) >
+          kDerivedTimeRelativeTolerance * std::max(1.0, std::abs(b.end_s))) {
         throw ScenarioError(path + ":" + std::to_string(row.line) + ": duration_s " + Fmt(dur) +
                             " disagrees with end_s - start_s = " + Fmt(b.duration_s()));
       }
@@ -585,7 +646,8 @@ std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path, con
     auto tc = t.column.find("time_s");
     if (tc != t.column.end() && !row.cells[tc->second].empty()) {
       const double time = CellNumber(path, row, "time_s", tc->second);
-      if (std::abs(time - im.time_s) > 1e-6 * std::max(1.0, std::abs(im.time_s))) {
+      if (std::abs(time - im.time_s) >
+          kDerivedTimeRelativeTolerance * std::max(1.0, std::abs(im.time_s))) {
         throw ScenarioError(path + ":" + std::to_string(row.line) + ": time_s " + Fmt(time) +
                             " is not the time of node " + std::to_string(im.node) + " (" +
                             Fmt(im.time_s) + ")");

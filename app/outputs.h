@@ -20,6 +20,8 @@
 #include "app/geo_products.h"
 #include "app/scenario.h"
 #include "transcription/checker.h"
+#include "transcription/conjunction_check.h"
+#include "transcription/conjunction_solve.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
 
@@ -37,8 +39,21 @@ struct CheckVerdict {
 /// replay if verdict.include_nonlinear) is <= verdict.window_tolerance.
 CheckVerdict Judge(const Scenario& scenario, const transcription::CheckReport& report);
 /// Impulsive schedules: window at nodes <= tolerance and terminal error
-/// (state-scale units) <= 1e-6.
+/// (state-scale units) <= transcription::kTerminalTolerance.
 CheckVerdict JudgeImpulsive(const Scenario& scenario, const transcription::ImpulsiveCheck& check);
+
+/// The scenario's checker on burns (its CheckOptions); a failing nonlinear
+/// replay (e.g. the orbit leaves the model's validity) is reported in
+/// `*nonlinear_error` and the linear check kept: the check of `solve`,
+/// `check` and the Python package.
+transcription::CheckReport CheckWithLinearFallback(const Scenario& scenario,
+                                                   const std::vector<transcription::Burn>& burns,
+                                                   std::string* nonlinear_error);
+
+/// Sets j["rule_violations"] (the messages) and j["rule_violation_details"]
+/// (rule, thruster name or null, time_s, message), as in the "check" object.
+void AddRuleViolations(const std::vector<transcription::RuleViolation>& violations,
+                       const std::vector<std::string>& thruster_names, nlohmann::json* j);
 
 /// The "check" object of summary.json (and of check.json).
 nlohmann::json CheckJson(const Scenario& scenario, const transcription::CheckReport& report,
@@ -52,12 +67,30 @@ struct RunFacts {
   bool interrupted = false;    // SIGINT stopped the solve
   double total_seconds = 0.0;  // whole command, wall clock
   std::string command_line;
+  /// The nonlinear replay failed (CheckWithLinearFallback): check.nonlinear_error.
+  std::string nonlinear_error;
+  /// Scenarios with a conjunction: the budget rounds (null: solved without
+  /// them) and the plan's verification (null: no schedule).
+  const transcription::ConjunctionSolve* conjunction_solve = nullptr;
+  const transcription::ConjunctionCheckReport* conjunction_check = nullptr;
 };
 
-/// summary.json content (field list in the README). `result.checked` decides
-/// whether a "check" object is included (null otherwise).
+/// summary.json content (field list in the README), the one writer of the
+/// CLI's `solve` and the Python package. `result.checked` decides whether a
+/// "check" object is included (null otherwise); scenarios with a
+/// conjunction get its "conjunction" object.
 nlohmann::json SummaryJson(const Scenario& scenario, const transcription::ScheduleMilp& milp,
                            const transcription::ScheduleResult& result, const RunFacts& facts);
+
+/// The fields of summary.json that need no scenario (status, objective,
+/// bound, gap, nodes, consumption, burns, model size, times, incumbents,
+/// infeasibility reasons): SummaryJson's start, and the whole summary of
+/// the Python package's problems from arrays. `thruster_names` name the
+/// burns' thrusters.
+nlohmann::json SolveResultJson(const transcription::ScheduleResult& result,
+                               const std::vector<std::string>& thruster_names,
+                               transcription::ObjectiveKind objective_kind, bool interrupted,
+                               double total_seconds);
 
 /// Status name used in summary.json: optimal, feasible, infeasible, unbounded,
 /// no_solution, error.

@@ -14,6 +14,7 @@
 
 #include "app/outputs.h"
 #include "common/constants.h"
+#include "common/error.h"
 #include "common/format.h"
 
 namespace thrustsched::app {
@@ -458,8 +459,17 @@ bool GnuplotAvailable(const std::string& program) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+bool PlotOptions::IsValid(std::string* error) const {
+  if (run_gnuplot && gnuplot.empty()) {
+    return common::Fail(error, "gnuplot must name a program when run_gnuplot is set, got \"\"");
+  }
+  return true;
+}
+
 PlotResult WritePlots(const std::string& dir, const Scenario& s, bool has_nonlinear,
                       const PlotOptions& options) {
+  std::string err;
+  if (!options.IsValid(&err)) throw std::invalid_argument("PlotOptions: " + err);
   PlotResult r;
   const bool nl = has_nonlinear && s.model_type == ModelType::kGeo;
   const std::vector<int> fired = FiredThrusters(dir, s);

@@ -28,6 +28,10 @@ namespace thrustsched::app {
 struct PlotOptions {
   bool run_gnuplot = true;          // false: write the scripts only
   std::string gnuplot = "gnuplot";  // program looked up in PATH
+
+  /// gnuplot not empty when run_gnuplot. On failure `*error` (if given)
+  /// names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct PlotResult {
@@ -42,7 +46,7 @@ struct PlotResult {
 /// hold trajectory.csv and schedule.csv or impulses.csv) and runs gnuplot on
 /// them (its messages go to dir/gnuplot.log). Never throws for a missing or
 /// failing gnuplot (see PlotResult); @throws std::runtime_error if a script
-/// cannot be written.
+/// cannot be written, std::invalid_argument if !options.IsValid().
 PlotResult WritePlots(const std::string& dir, const Scenario& scenario, bool has_nonlinear,
                       const PlotOptions& options = {});
 

@@ -6,6 +6,7 @@
 
 #include "app/conjunction_section.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <sstream>
 
 #include "common/constants.h"
+#include "common/error.h"
 #include "dynamics/discretisation.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
@@ -27,6 +29,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounds that keep every model and grid well defined (documented in the README).
 constexpr double kMaxAbsTime = 1e10;  // s, |start_s| and |end|
 constexpr double kMaxDuration = 1e9;  // s, ~31.7 years
+// A step is no longer than the horizon up to this relative rounding.
+constexpr double kStepFitsRelativeSlack = 1e-12;
+// A step divides the horizon when duration / step is this close to a whole
+// number, relative to max(1, duration / step).
+constexpr double kWholeStepsRelativeTolerance = 1e-9;
 
 std::string Join(const std::vector<std::string>& v) {
   std::string s;
@@ -320,7 +327,7 @@ void ParseHorizon(JsonObject h, Scenario* s) {
   int n = 0;
   if (h.Has("step_s")) {
     const double step = h.Number("step_s", Bound::kPositive);
-    if (step > duration * (1 + 1e-12)) {
+    if (step > duration * (1 + kStepFitsRelativeSlack)) {
       h.Fail("step_s", FormatNumber(step) + " s is longer than the horizon (" +
                            FormatNumber(duration) + " s)");
     }
@@ -330,7 +337,7 @@ void ParseHorizon(JsonObject h, Scenario* s) {
                            " intervals; at most " + std::to_string(kMaxIntervals) + " are allowed");
     }
     const double rounded = std::round(ratio);
-    if (std::abs(ratio - rounded) > 1e-9 * std::max(1.0, ratio)) {
+    if (std::abs(ratio - rounded) > kWholeStepsRelativeTolerance * std::max(1.0, ratio)) {
       h.Fail("step_s", FormatNumber(step) + " s does not divide the horizon duration " +
                            FormatNumber(duration) + " s (" + FormatNumber(ratio) + " steps)");
     }
@@ -623,7 +630,32 @@ std::vector<std::string> ScenarioSections() {
           "input_mode",    "max_impulse_m_s", "check",      "conjunction"};
 }
 
+bool ScenarioParseOptions::IsValid(std::string* error) const {
+  if (source.empty()) return common::Fail(error, "source must not be empty");
+  const std::vector<std::string> known = ScenarioSections();
+  for (size_t k = 0; k < extra_sections.size(); ++k) {
+    const std::string& name = extra_sections[k];
+    const std::string where = "extra_sections[" + std::to_string(k) + "]";
+    if (name.empty()) return common::Fail(error, where + " must not be empty");
+    if (std::find(known.begin(), known.end(), name) != known.end()) {
+      return common::Fail(
+          error, where + " \"" + name + "\" is a section the scenario parser reads itself");
+    }
+  }
+  return true;
+}
+
+bool VerdictOptions::IsValid(std::string* error) const {
+  if (!(window_tolerance >= 0.0) || !std::isfinite(window_tolerance)) {
+    return common::Fail(
+        error, "window_tolerance must be finite and >= 0, got " + FormatNumber(window_tolerance));
+  }
+  return true;
+}
+
 Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& options) {
+  std::string err;
+  if (!options.IsValid(&err)) throw std::invalid_argument("ScenarioParseOptions: " + err);
   Scenario s;
   s.raw = json;
   JsonObject top(s.raw, "scenario");
@@ -668,12 +700,13 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
     s.check.nonlinear = std::make_shared<const dynamics::GeoSimulator>(*s.geo);
   }
   if (!s.window_half_widths.empty()) {
-    s.verdict.window_tolerance = 1e-3 * std::min(s.window_half_widths[0], s.window_half_widths[1]);
+    s.verdict.window_tolerance = kDefaultWindowToleranceFraction *
+                                 std::min(s.window_half_widths[0], s.window_half_widths[1]);
   }
   if (top.Has("check")) ParseCheck(top.Object("check"), &s);
   top.Finish();
 
-  std::string err;
+  if (!s.verdict.IsValid(&err)) throw ScenarioError("scenario.check." + err);
   if (!s.problem.IsValid(&err)) throw ScenarioError("scenario: " + err);
   return s;
 }

@@ -53,7 +53,16 @@ struct ScenarioParseOptions {
   std::vector<std::string> extra_sections;
   /// Used in messages when parsing text (LoadScenario sets the file path).
   std::string source = "scenario";
+
+  /// extra_sections: names not empty, none a section the parser reads
+  /// itself (ScenarioSections); source not empty. On failure `*error` (if
+  /// given) names the field and the value.
+  bool IsValid(std::string* error) const;
 };
+
+/// check.window_tolerance when the scenario gives none: this fraction of the
+/// smaller window half width.
+inline constexpr double kDefaultWindowToleranceFraction = 1e-3;
 
 /// Checker verdict settings (see data/scenarios/README.md, "check").
 struct VerdictOptions {
@@ -63,6 +72,10 @@ struct VerdictOptions {
   bool include_intersample = false;
   /// GEO: the nonlinear replay's violation also decides the verdict.
   bool include_nonlinear = false;
+
+  /// window_tolerance finite and >= 0. On failure `*error` (if given) names
+  /// the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct Scenario {

@@ -21,6 +21,10 @@ namespace fs = std::filesystem;
 using planning::CycleRecord;
 using planning::Fallback;
 
+// A replay sample is on the trajectory's grid when (t - t0) / spacing is
+// this close to a whole number.
+constexpr double kOnSampleGridTolerance = 1e-7;
+
 // ---------------------------------------------------------------------------
 // Output files.
 
@@ -39,7 +43,8 @@ std::string TrajectoryRows(const SimulationSetup& setup, const CycleRecord& c, b
     const double t = c.sample_times[k];
     if (k + 1 == c.sample_times.size() && !last_cycle) break;
     const double r = (t - t0) / spacing;
-    if (std::abs(r - std::round(r)) > 1e-7 && !(last_cycle && k + 1 == c.sample_times.size())) {
+    if (std::abs(r - std::round(r)) > kOnSampleGridTolerance &&
+        !(last_cycle && k + 1 == c.sample_times.size())) {
       continue;
     }
     const Eigen::Vector3d& y = c.sample_outputs[k];

@@ -55,8 +55,6 @@ namespace {
 
 constexpr double kTol = kTimeTolerance;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// Terminal constraints are met when the scaled error is at most this.
-constexpr double kTerminalTolerance = 1e-6;
 
 struct Interval {
   double start;
@@ -334,10 +332,6 @@ std::vector<double> SampleTimes(const std::vector<double>& grid, int per_interva
 
 using common::kRadToDeg;
 
-// Relative tolerance of the end-of-horizon set judgement: the re-propagated
-// final state differs from the MILP's discrete one by the scheme's error.
-constexpr double kSkSetTolerance = 1e-3;
-
 // End-of-horizon station-keeping sets, judged on the exact (round) sets that
 // the MILP's inscribed polygons approximate from inside (terminal_sets.h), in
 // HCW coordinates zeta = (x, y, z, xdot, ydot, zdot) computed here from the
@@ -480,6 +474,21 @@ bool CheckOptions::IsValid(std::string* error) const {
   return true;
 }
 
+double TerminalError(const TerminalSpec& term, const Eigen::VectorXd& final_state,
+                     const Eigen::VectorXd& scale) {
+  if (term.kind != TerminalKind::kFixedState && term.kind != TerminalKind::kStateBox) return 0.0;
+  double worst = 0.0;
+  for (int c = 0; c < final_state.size(); ++c) {
+    double dev = std::abs(final_state(c) - term.target(c));
+    if (term.kind == TerminalKind::kStateBox) {
+      const double tol = term.tolerance(c);
+      dev = std::isinf(tol) ? 0.0 : std::max(0.0, dev - tol);
+    }
+    worst = std::max(worst, dev / scale(c));
+  }
+  return worst;
+}
+
 CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn>& burns,
                           const CheckOptions& options) {
   std::string err;
@@ -557,23 +566,13 @@ CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn
   // Terminal constraint, in units of the model's state scale.
   const TerminalSpec& term = problem.terminal;
   if (term.kind == TerminalKind::kFixedState || term.kind == TerminalKind::kStateBox) {
-    const Eigen::VectorXd scale = model.state_scale();
-    double worst = 0.0;
-    for (int c = 0; c < r.final_state.size(); ++c) {
-      double dev = std::abs(r.final_state(c) - term.target(c));
-      if (term.kind == TerminalKind::kStateBox) {
-        const double tol = term.tolerance(c);
-        dev = std::isinf(tol) ? 0.0 : std::max(0.0, dev - tol);
-      }
-      worst = std::max(worst, dev / scale(c));
-    }
-    r.terminal_error = worst;
-    r.terminal_ok = worst <= kTerminalTolerance;
+    r.terminal_error = TerminalError(term, r.final_state, model.state_scale());
+    r.terminal_ok = r.terminal_error <= kTerminalTolerance;
   }
 
   if (term.kind == TerminalKind::kStationKeepingSets) {
     r.terminal_error = StationKeepingExcess(problem, r.final_state);
-    r.terminal_ok = r.terminal_error <= kSkSetTolerance;
+    r.terminal_ok = r.terminal_error <= kStationKeepingSetTolerance;
   }
 
   if (options.nonlinear) {

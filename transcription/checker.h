@@ -43,6 +43,22 @@ std::vector<RuleViolation> CheckOperationalRules(const OperationalRules& rules,
                                                  int num_thrusters, double t0, double tf,
                                                  const std::vector<Burn>& burns);
 
+/// Fixed-state and state-box terminal constraints hold when their scaled
+/// error (TerminalError) is at most this (state-scale units).
+inline constexpr double kTerminalTolerance = 1e-6;
+/// Station-keeping terminal sets hold when the final state's excess over
+/// the exact sets (relative to their half widths) is at most this: the
+/// re-propagated final state differs from the MILP's discrete one by the
+/// discretisation scheme's error.
+inline constexpr double kStationKeepingSetTolerance = 1e-3;
+
+/// The scaled terminal error of `final_state`: max over components of the
+/// deviation from terminal.target (kFixedState) or its excess over
+/// terminal.tolerance (kStateBox; 0 for an infinite tolerance), divided by
+/// `state_scale`; 0 for the other kinds.
+double TerminalError(const TerminalSpec& terminal, const Eigen::VectorXd& final_state,
+                     const Eigen::VectorXd& state_scale);
+
 struct CheckOptions {
   int samples_per_interval = 4;  // propagation samples strictly inside each interval
   double propagation_tolerance = 1e-11;

@@ -9,6 +9,8 @@
 
 #include <Eigen/LU>
 
+#include "common/error.h"
+#include "common/format.h"
 #include "dynamics/geo_model.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
@@ -21,6 +23,9 @@ namespace thrustsched::transcription {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// The Monte Carlo grid's number of steps is whole up to this (rounding of the
+// window's length over the step).
+constexpr double kStepCountSlack = 1e-9;
 
 // Sorted union of time lists; Index() finds a member exactly.
 struct Timeline {
@@ -225,6 +230,22 @@ Inertial MakeInertial(const ScheduleProblem& p, const std::vector<Burn>& burns,
 
 }  // namespace
 
+bool ConjunctionCheckOptions::IsValid(std::string* error) const {
+  if (monte_carlo_samples < 0) {
+    return common::Fail(
+        error, "monte_carlo_samples must be >= 0, got " + std::to_string(monte_carlo_samples));
+  }
+  if (!(sample_step_s >= 0.0) || !std::isfinite(sample_step_s)) {
+    return common::Fail(
+        error, "sample_step_s must be finite and >= 0, got " + common::FormatG(sample_step_s, 10));
+  }
+  if (!(propagation_tolerance > 0.0) || !std::isfinite(propagation_tolerance)) {
+    return common::Fail(error, "propagation_tolerance must be finite and > 0, got " +
+                                   common::FormatG(propagation_tolerance, 10));
+  }
+  return true;
+}
+
 ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vector<Burn>& burns,
                                         const std::vector<Impulse>& impulses,
                                         const ConjunctionCheckOptions& o) {
@@ -233,15 +254,13 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
   if (!p.IsValid(&err)) throw std::invalid_argument(err);
   if (!p.conjunction)
     throw std::invalid_argument("CheckConjunction: the problem has no conjunction");
-  if (o.monte_carlo_samples < 0 || !(o.sample_step_s >= 0.0)) {
-    throw std::invalid_argument("CheckConjunction: samples and sample_step_s must be >= 0");
-  }
+  if (!o.IsValid(&err)) throw std::invalid_argument("CheckConjunction: " + err);
   const ConjunctionSpec& c = *p.conjunction;
   const std::vector<double> checks = c.CheckTimes(p.grid.front(), p.grid.back());
   const double a = std::isnan(c.check_start_s) ? p.grid.front() : c.check_start_s;
   const double b = std::isnan(c.check_end_s) ? p.grid.back() : c.check_end_s;
   const double step = o.sample_step_s > 0.0 ? o.sample_step_s : (b - a) / 2000.0;
-  const int steps = std::max(1, static_cast<int>(std::ceil((b - a) / step - 1e-9)));
+  const int steps = std::max(1, static_cast<int>(std::ceil((b - a) / step - kStepCountSlack)));
   std::vector<double> fine(steps + 1);
   for (int k = 0; k <= steps; ++k) fine[k] = a + (b - a) * k / steps;
   const Timeline tl = Merge({fine, checks, {c.state_time_s}});

@@ -54,6 +54,11 @@ struct ConjunctionCheckOptions {
   double sample_step_s = 0.0;
   bool nonlinear = true;  // also the two-body Monte Carlo, where available
   double propagation_tolerance = 1e-11;
+
+  /// monte_carlo_samples >= 0; sample_step_s finite and >= 0;
+  /// propagation_tolerance finite and > 0. On failure `*error` (if given)
+  /// names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct ConjunctionCheckReport {

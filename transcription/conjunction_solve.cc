@@ -8,6 +8,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "common/error.h"
+#include "common/format.h"
 #include "common/timing.h"
 #include "milp/lp_data.h"
 #include "transcription/search.h"
@@ -310,16 +312,25 @@ void DecodeAndCheck(const ScheduleMilp& m, const SolveScheduleOptions& options, 
 
 }  // namespace
 
+bool ConjunctionSolveOptions::IsValid(std::string* error) const {
+  if (!(restart_ratio > 0.0 && restart_ratio <= 1.0)) {
+    return common::Fail(
+        error, "restart_ratio must be in (0, 1], got " + common::FormatG(restart_ratio, 10));
+  }
+  if (max_rounds < 1) {
+    return common::Fail(error, "max_rounds must be >= 1, got " + std::to_string(max_rounds));
+  }
+  return true;
+}
+
 ConjunctionSolve SolveConjunction(const ScheduleMilp& first, const milp::Solver& solver,
                                   const SolveScheduleOptions& options,
                                   const ConjunctionSolveOptions& co) {
   if (!first.problem().conjunction || !first.keep_out()) {
     throw std::invalid_argument("SolveConjunction: the problem has no conjunction");
   }
-  if (!(co.restart_ratio > 0.0 && co.restart_ratio <= 1.0) || co.max_rounds < 1) {
-    throw std::invalid_argument(
-        "SolveConjunction: restart_ratio must be in (0, 1] and max_rounds >= 1");
-  }
+  std::string err;
+  if (!co.IsValid(&err)) throw std::invalid_argument("SolveConjunction: " + err);
   const Clock::time_point t0 = Clock::now();
   const double limit = options.milp.time_limit_s;
   ConjunctionSolve out;

@@ -52,6 +52,10 @@ struct ConjunctionSolveOptions {
   /// (BuildOptions::keep_out_bound_solver).
   bool lp_bounds = true;
   int max_rounds = 10;
+
+  /// restart_ratio in (0, 1]; max_rounds >= 1. On failure `*error` (if
+  /// given) names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 struct BudgetRound {

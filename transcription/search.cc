@@ -1,7 +1,6 @@
 #include "transcription/search.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "common/format.h"
+#include "common/timing.h"
 #include "milp/lazy_rows.h"
 #include "milp/lp_bound.h"
 #include "transcription/dormant.h"
@@ -24,7 +24,6 @@ using common::FormatG;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Slack on a count of slots from an interior point's on-values.
@@ -48,7 +47,7 @@ class Search {
         options_(options),
         search_(search),
         report_(report),
-        start_(Clock::now()) {
+        clock_(options.time_limit_s, options.interrupt) {
     step_ = options.objective_step > 0.0 ? options.objective_step : milp.objective_step();
   }
 
@@ -91,11 +90,9 @@ class Search {
  private:
   // ---------------------------------------------------------------- clock
 
-  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  double Remaining() const { return options_.time_limit_s - Elapsed(); }
-  bool Interrupted() const {
-    return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
-  }
+  double Elapsed() const { return clock_.Elapsed(); }
+  double Remaining() const { return clock_.Remaining(); }
+  bool Interrupted() const { return clock_.Interrupted(); }
   bool Stopped() const { return Interrupted() || Remaining() <= 0.0; }
   bool has_incumbent() const { return x_.size() > 0; }
 
@@ -1032,7 +1029,7 @@ class Search {
   const milp::SolveOptions& options_;
   const SearchOptions& search_;
   SearchReport* report_;
-  Clock::time_point start_;
+  common::SolveClock clock_;
   double step_ = 0.0;
   // The fired thrusters' net comes after this many widenings: the first
   // nets are small and cheap (infeasible in 0.4-0.9 s on a GEO week).

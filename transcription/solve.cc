@@ -103,14 +103,7 @@ ImpulsiveCheck CheckImpulses(const ScheduleProblem& p, const std::vector<Impulse
     x = dynamics::PropagateLinear(model, no_input, x, p.grid[j], {}, {p.grid[j + 1]})[0];
   }
   out.final_state = x;
-  if (p.terminal.kind == TerminalKind::kFixedState || p.terminal.kind == TerminalKind::kStateBox) {
-    const Eigen::VectorXd s = model.state_scale();
-    for (int c = 0; c < model.num_states(); ++c) {
-      const double tol = p.terminal.kind == TerminalKind::kStateBox ? p.terminal.tolerance[c] : 0.0;
-      const double excess = std::abs(x[c] - p.terminal.target[c]) - tol;
-      out.terminal_error = std::max(out.terminal_error, excess / s[c]);
-    }
-  }
+  out.terminal_error = TerminalError(p.terminal, x, model.state_scale());
   return out;
 }
 

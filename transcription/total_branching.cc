@@ -1,13 +1,13 @@
 #include "transcription/total_branching.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <utility>
 #include <vector>
 
 #include "common/format.h"
+#include "common/timing.h"
 #include "milp/lp_bound.h"
 
 namespace thrustsched::transcription {
@@ -15,8 +15,6 @@ namespace thrustsched::transcription {
 using common::FormatG;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Totals closer than this to an integer are not branched on (the interior
 // point stops short of exact vertices).
@@ -158,7 +156,7 @@ class Tree {
         groups_(TotalGroups(milp, tree.axis_groups)),
         window_levels_(tree.window_levels),
         max_window_lps_(tree.max_window_lps),
-        start_(Clock::now()) {}
+        clock_(options.time_limit_s, options.interrupt) {}
 
   TotalBranching Run(const Eigen::VectorXd& root_x, double root_bound, int max_lps) {
     if (window_levels_ > 0 && root_x.size() == milp_.lp().num_cols()) {
@@ -461,11 +459,9 @@ class Tree {
     if (!std::isfinite(incumbent_)) return bound < milp::kInfinity;  // no incumbent
     return bound < incumbent_ - 1e-7 * std::max(1.0, std::abs(incumbent_));
   }
-  double Elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  double Remaining() const { return options_.time_limit_s - Elapsed(); }
-  bool Interrupted() const {
-    return options_.interrupt != nullptr && options_.interrupt->load(std::memory_order_relaxed);
-  }
+  double Elapsed() const { return clock_.Elapsed(); }
+  double Remaining() const { return clock_.Remaining(); }
+  bool Interrupted() const { return clock_.Interrupted(); }
 
   bool warm_;
   bool leaf_pivot_limit_;
@@ -483,7 +479,7 @@ class Tree {
   std::vector<ThrusterGroup> groups_;
   int window_levels_;
   int max_window_lps_;
-  Clock::time_point start_;
+  common::SolveClock clock_;
   std::vector<Leaf> leaves_;
   int lps_ = 0;
   int whole_lps_ = 0;   // LPs of splits on whole-horizon totals (max_lps)

@@ -39,6 +39,27 @@ struct SolveSettings {
   double progress_interval_s = 1.0;
   bool check = true;
 };
+/// The solve keywords of ts.solve, BuiltSchedule.solve and
+/// ScheduleProblem.solve as SolveSettings (array problems have no
+/// diagnosis limit: nullopt).
+inline SolveSettings MakeSolveSettings(
+    std::optional<double> time_limit_s, std::optional<double> relative_gap,
+    std::optional<int> threads, std::optional<long long> max_nodes, std::optional<bool> search,
+    std::optional<double> diagnosis_time_limit_s, std::optional<int> log_level,
+    std::optional<int> random_seed, bool check, double progress_interval_s) {
+  SolveSettings st;
+  st.time_limit_s = time_limit_s;
+  st.relative_gap = relative_gap;
+  st.threads = threads;
+  st.max_nodes = max_nodes;
+  st.search = search;
+  st.diagnosis_time_limit_s = diagnosis_time_limit_s;
+  st.log_level = log_level;
+  st.random_seed = random_seed;
+  st.check = check;
+  st.progress_interval_s = progress_interval_s;
+  return st;
+}
 /// @throws std::invalid_argument naming the keyword and value.
 void ApplySettings(const SolveSettings& settings, transcription::SolveScheduleOptions* options);
 

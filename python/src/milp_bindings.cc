@@ -171,7 +171,48 @@ std::shared_ptr<SolveOutcome> SolveBuiltSchedule(const BuiltSchedule& built,
       built.ctx, [milp] { return milp; }, req, std::make_shared<Job>(), std::move(callback));
 }
 
-void BindMilp(py::module_& m) {
+namespace {
+
+// Arithmetic and comparisons on expressions and (through them) variables:
+// `+`, `-`, `*`, `/` by a number, and `<=`, `>=`, `==` giving constraints.
+template <typename Class>
+void BindArithmetic(Class& cls) {
+  using T = typename Class::type;
+  cls.def(
+         "__add__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) + b; },
+         py::is_operator())
+      .def(
+          "__radd__", [](const T& a, const LinearExpr& b) { return b + LinearExpr(a); },
+          py::is_operator())
+      .def(
+          "__sub__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) - b; },
+          py::is_operator())
+      .def(
+          "__rsub__", [](const T& a, const LinearExpr& b) { return b - LinearExpr(a); },
+          py::is_operator())
+      .def(
+          "__mul__", [](const T& a, double c) { return LinearExpr(a) * c; }, py::is_operator())
+      .def(
+          "__rmul__", [](const T& a, double c) { return c * LinearExpr(a); }, py::is_operator())
+      .def(
+          "__truediv__", [](const T& a, double c) { return LinearExpr(a) * (1.0 / c); },
+          py::is_operator())
+      .def(
+          "__neg__", [](const T& a) { return -LinearExpr(a); }, py::is_operator())
+      .def(
+          "__le__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) <= b; },
+          py::is_operator())
+      .def(
+          "__ge__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) >= b; },
+          py::is_operator())
+      .def(
+          "__eq__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) == b; },
+          py::is_operator());
+  cls.attr("__hash__") = py::none();
+}
+
+// Variable, LinearExpr and BoundedLinearExpr.
+void BindExpressions(py::module_& m) {
   py::class_<Variable> var_cls(m, "Variable", "One column of a Model (a handle: index and model).");
   var_cls.def_property_readonly("index", &Variable::index).def("__repr__", [](const Variable& v) {
     return "Variable(" + std::to_string(v.index()) + ")";
@@ -241,44 +282,12 @@ void BindMilp(py::module_& m) {
                " <= " + app::FormatNumber(b.upper);
       });
 
-  // Arithmetic and comparisons, on expressions and (through them) variables.
-  auto ops = [](auto& cls) {
-    using T = typename std::remove_reference_t<decltype(cls)>::type;
-    cls.def(
-           "__add__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) + b; },
-           py::is_operator())
-        .def(
-            "__radd__", [](const T& a, const LinearExpr& b) { return b + LinearExpr(a); },
-            py::is_operator())
-        .def(
-            "__sub__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) - b; },
-            py::is_operator())
-        .def(
-            "__rsub__", [](const T& a, const LinearExpr& b) { return b - LinearExpr(a); },
-            py::is_operator())
-        .def(
-            "__mul__", [](const T& a, double c) { return LinearExpr(a) * c; }, py::is_operator())
-        .def(
-            "__rmul__", [](const T& a, double c) { return c * LinearExpr(a); }, py::is_operator())
-        .def(
-            "__truediv__", [](const T& a, double c) { return LinearExpr(a) * (1.0 / c); },
-            py::is_operator())
-        .def(
-            "__neg__", [](const T& a) { return -LinearExpr(a); }, py::is_operator())
-        .def(
-            "__le__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) <= b; },
-            py::is_operator())
-        .def(
-            "__ge__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) >= b; },
-            py::is_operator())
-        .def(
-            "__eq__", [](const T& a, const LinearExpr& b) { return LinearExpr(a) == b; },
-            py::is_operator());
-    cls.attr("__hash__") = py::none();
-  };
-  ops(var_cls);
-  ops(expr_cls);
+  BindArithmetic(var_cls);
+  BindArithmetic(expr_cls);
+}
 
+// VarBlock and LpData (a frozen MILP).
+void BindVarBlockAndLpData(py::module_& m) {
   py::class_<VarBlock>(m, "VarBlock", "Contiguous columns of one Model.")
       .def("__len__", &VarBlock::size)
       .def("__getitem__",
@@ -329,7 +338,10 @@ void BindMilp(py::module_& m) {
             return lp.MaxViolation(ToVector(x, "x", lp.num_cols()));
           },
           py::arg("x"));
+}
 
+// Model, a MILP under construction.
+void BindModel(py::module_& m) {
   py::class_<milp::Model>(m, "Model", "A MILP under construction (milp/model.h).")
       .def(py::init<std::string>(), py::arg("name") = "")
       .def_property_readonly("name", &milp::Model::name)
@@ -382,7 +394,10 @@ void BindMilp(py::module_& m) {
       .def("variable", &milp::Model::variable, py::arg("index"))
       .def("variable_name", &milp::Model::variable_name, py::arg("variable"))
       .def("to_lp", &milp::Model::ToLpData, "Freezes into an LpData (the model stays usable).");
+}
 
+// SolveResult and the module's functions: quicksum, dot, solve, write, to_*_string.
+void BindSolveAndWrite(py::module_& m) {
   py::class_<milp::SolveResult, std::shared_ptr<milp::SolveResult>>(m, "SolveResult",
                                                                     "A MILP solve's result.")
       .def_property_readonly("status",
@@ -434,17 +449,18 @@ void BindMilp(py::module_& m) {
       py::arg("model"));
 }
 
-void BindBuilt(py::module_& m) {
-  py::class_<BuiltSchedule, std::shared_ptr<BuiltSchedule>>(
-      m, "BuiltSchedule", "A schedule MILP, to extend with rows and columns and solve again.")
-      .def(
-          "on",
-          [](const BuiltSchedule& b, const py::handle& thruster, int interval) {
-            CheckInterval(b, interval);
-            return b.milp->on(ThrusterIndex(b, thruster), interval);
-          },
-          py::arg("thruster"), py::arg("interval"),
-          "The binary \"thruster on in interval j\" (thruster by name or index).")
+using BuiltClass = py::class_<BuiltSchedule, std::shared_ptr<BuiltSchedule>>;
+
+// The columns and expressions of a built schedule: on, state, outputs, intervals.
+void BindBuiltColumns(BuiltClass& cls) {
+  cls.def(
+         "on",
+         [](const BuiltSchedule& b, const py::handle& thruster, int interval) {
+           CheckInterval(b, interval);
+           return b.milp->on(ThrusterIndex(b, thruster), interval);
+         },
+         py::arg("thruster"), py::arg("interval"),
+         "The binary \"thruster on in interval j\" (thruster by name or index).")
       .def_property_readonly(
           "on_columns",
           [](const BuiltSchedule& b) {
@@ -500,20 +516,24 @@ void BindBuilt(py::module_& m) {
               throw std::out_of_range("t_s outside the horizon");
             return static_cast<int>(std::upper_bound(g.begin(), g.end(), t_s) - g.begin()) - 1;
           },
-          py::arg("t_s"), "Index of the interval holding t.")
-      .def(
-          "add_variable",
-          [](BuiltSchedule& b, double lower, double upper, const std::string& type,
-             std::string name) {
-            Variable v;
-            b.milp->Modify([&](milp::Model& mo) {
-              v = mo.AddVariable(lower, upper, ParseVarType(type), std::move(name));
-            });
-            b.modified = true;
-            return v;
-          },
-          py::arg("lower") = 0.0, py::arg("upper") = milp::kInfinity,
-          py::arg("type") = "continuous", py::arg("name") = "")
+          py::arg("t_s"), "Index of the interval holding t.");
+}
+
+// Rows, columns, bounds and objective terms added to a built schedule (refrozen).
+void BindBuiltEdits(BuiltClass& cls) {
+  cls.def(
+         "add_variable",
+         [](BuiltSchedule& b, double lower, double upper, const std::string& type,
+            std::string name) {
+           Variable v;
+           b.milp->Modify([&](milp::Model& mo) {
+             v = mo.AddVariable(lower, upper, ParseVarType(type), std::move(name));
+           });
+           b.modified = true;
+           return v;
+         },
+         py::arg("lower") = 0.0, py::arg("upper") = milp::kInfinity, py::arg("type") = "continuous",
+         py::arg("name") = "")
       .def(
           "add_constraint",
           [](BuiltSchedule& b, const BoundedLinearExpr& c, std::string name) {
@@ -551,8 +571,12 @@ void BindBuilt(py::module_& m) {
             b.milp->Modify([&](milp::Model& mo) { mo.AddObjectiveTerm(v, c); });
             b.modified = true;
           },
-          py::arg("variable"), py::arg("coefficient"))
-      .def_property_readonly("modified", [](const BuiltSchedule& b) { return b.modified; })
+          py::arg("variable"), py::arg("coefficient"));
+}
+
+// Read-only facts of a built schedule: its size, grid, scaling and names.
+void BindBuiltProperties(BuiltClass& cls) {
+  cls.def_property_readonly("modified", [](const BuiltSchedule& b) { return b.modified; })
       .def_property_readonly(
           "lp", [](const BuiltSchedule& b) { return b.milp->lp(); }, "A copy of the frozen MILP.")
       .def_property_readonly("num_rows",
@@ -583,15 +607,19 @@ void BindBuilt(py::module_& m) {
       .def_property_readonly("thruster_names",
                              [](const BuiltSchedule& b) { return b.ctx.thruster_names(); })
       .def("variable_name",
-           [](const BuiltSchedule& b, Variable v) { return b.milp->model().variable_name(v); })
-      .def(
-          "write",
-          [](const BuiltSchedule& b, const std::string& path, bool obfuscate_names) {
-            milp::LpData lp = b.milp->lp();
-            if (b.ctx.scenario) lp.name = b.ctx.scenario->name;
-            app::WriteModelFile(path, lp, obfuscate_names);
-          },
-          py::arg("path"), py::arg("obfuscate_names") = false, "Writes MPS (.mps) or LP (.lp).")
+           [](const BuiltSchedule& b, Variable v) { return b.milp->model().variable_name(v); });
+}
+
+// The model file (MPS or LP) and the solve of a built schedule.
+void BindBuiltWriteAndSolve(BuiltClass& cls) {
+  cls.def(
+         "write",
+         [](const BuiltSchedule& b, const std::string& path, bool obfuscate_names) {
+           milp::LpData lp = b.milp->lp();
+           if (b.ctx.scenario) lp.name = b.ctx.scenario->name;
+           app::WriteModelFile(path, lp, obfuscate_names);
+         },
+         py::arg("path"), py::arg("obfuscate_names") = false, "Writes MPS (.mps) or LP (.lp).")
       .def(
           "solve",
           [](const BuiltSchedule& b, std::optional<double> time_limit_s,
@@ -600,17 +628,9 @@ void BindBuilt(py::module_& m) {
              std::optional<double> diagnosis_time_limit_s, std::optional<int> log_level,
              std::optional<int> random_seed, bool check, double progress_interval_s,
              py::object callback) {
-            SolveSettings st;
-            st.time_limit_s = time_limit_s;
-            st.relative_gap = relative_gap;
-            st.threads = threads;
-            st.max_nodes = max_nodes;
-            st.search = search;
-            st.diagnosis_time_limit_s = diagnosis_time_limit_s;
-            st.log_level = log_level;
-            st.random_seed = random_seed;
-            st.check = check;
-            st.progress_interval_s = progress_interval_s;
+            const SolveSettings st = MakeSolveSettings(
+                time_limit_s, relative_gap, threads, max_nodes, search, diagnosis_time_limit_s,
+                log_level, random_seed, check, progress_interval_s);
             return SolveBuiltSchedule(b, st, std::move(callback));
           },
           py::arg("time_limit_s") = py::none(), py::arg("relative_gap") = py::none(),
@@ -619,7 +639,10 @@ void BindBuilt(py::module_& m) {
           py::arg("log_level") = py::none(), py::arg("random_seed") = py::none(),
           py::arg("check") = true, py::arg("progress_interval_s") = 1.0,
           py::arg("callback") = py::none());
+}
 
+// build_scenario: a scenario's schedule MILP, to extend.
+void BindBuildScenario(py::module_& m) {
   m.def(
       "build_scenario",
       [](const std::shared_ptr<app::Scenario>& s, std::optional<std::string> scheme,
@@ -640,6 +663,25 @@ void BindBuilt(py::module_& m) {
       py::arg("scenario"), py::arg("scheme") = py::none(), py::arg("formulation") = py::none(),
       py::arg("encoding") = py::none(),
       "Builds a scenario's schedule MILP (to extend, then solve).");
+}
+
+}  // namespace
+
+void BindMilp(py::module_& m) {
+  BindExpressions(m);
+  BindVarBlockAndLpData(m);
+  BindModel(m);
+  BindSolveAndWrite(m);
+}
+
+void BindBuilt(py::module_& m) {
+  BuiltClass cls(m, "BuiltSchedule",
+                 "A schedule MILP, to extend with rows and columns and solve again.");
+  BindBuiltColumns(cls);
+  BindBuiltEdits(cls);
+  BindBuiltProperties(cls);
+  BindBuiltWriteAndSolve(cls);
+  BindBuildScenario(m);
 }
 
 }  // namespace thrustsched::python

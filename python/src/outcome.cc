@@ -30,8 +30,6 @@ namespace {
 
 using common::Clock;
 
-constexpr double kTerminalTolerance = 1e-6;  // the checker's (transcription/checker.cc)
-
 }  // namespace
 
 ProblemContext ScenarioContext(std::shared_ptr<const app::Scenario> scenario) {
@@ -85,21 +83,11 @@ DiscreteCheck CheckDiscrete(const transcription::ScheduleProblem& p,
   const transcription::TerminalSpec& term = p.terminal;
   if (term.kind == transcription::TerminalKind::kFixedState ||
       term.kind == transcription::TerminalKind::kStateBox) {
-    const Eigen::VectorXd scale = p.model->state_scale();
-    double worst = 0.0;
-    for (int i = 0; i < x.size(); ++i) {
-      double dev = std::abs(x(i) - term.target(i));
-      if (term.kind == transcription::TerminalKind::kStateBox) {
-        const double tol = term.tolerance(i);
-        dev = std::isinf(tol) ? 0.0 : std::max(0.0, dev - tol);
-      }
-      worst = std::max(worst, dev / scale(i));
-    }
-    c.terminal_error = worst;
-    c.terminal_ok = worst <= kTerminalTolerance;
+    c.terminal_error = transcription::TerminalError(term, x, p.model->state_scale());
+    c.terminal_ok = c.terminal_error <= transcription::kTerminalTolerance;
     if (!c.terminal_ok) {
-      c.findings.push_back("terminal constraint violated (scaled error " + FormatG(worst, 17) +
-                           ")");
+      c.findings.push_back("terminal constraint violated (scaled error " +
+                           FormatG(c.terminal_error, 17) + ")");
     }
   }
   return c;
@@ -117,16 +105,7 @@ void RunCheck(CheckedSchedule* c) {
     c->impulsive_check = transcription::CheckImpulses(*ctx.problem, c->impulses);
   } else {
     // As the CLI: a failing nonlinear replay is reported and the linear check kept.
-    const app::Scenario& s = *ctx.scenario;
-    try {
-      c->report = transcription::CheckSchedule(s.problem, c->burns, s.check);
-    } catch (const std::runtime_error& e) {
-      if (!s.check.nonlinear) throw;
-      c->nonlinear_error = e.what();
-      transcription::CheckOptions o = s.check;
-      o.nonlinear.reset();
-      c->report = transcription::CheckSchedule(s.problem, c->burns, o);
-    }
+    c->report = app::CheckWithLinearFallback(*ctx.scenario, c->burns, &c->nonlinear_error);
   }
   if (ctx.scenario && ctx.scenario->problem.conjunction) {
     c->conjunction = app::VerifyConjunction(*ctx.scenario, c->burns, c->impulses);
@@ -140,23 +119,11 @@ std::string CheckedSchedule::CheckJson() const {
   nlohmann::json j;
   if (discrete) {
     const DiscreteCheck& d = *discrete;
-    const std::vector<std::string> names = ctx.thruster_names();
     j["kind"] = "discrete";
     j["passed"] = d.passed();
     j["findings"] = d.findings;
     j["operational_ok"] = d.operational_ok;
-    nlohmann::json msgs = nlohmann::json::array(), details = nlohmann::json::array();
-    for (const transcription::RuleViolation& v : d.rule_violations) {
-      msgs.push_back(v.message);
-      details.push_back({{"rule", v.rule},
-                         {"thruster", v.thruster >= 0 && v.thruster < static_cast<int>(names.size())
-                                          ? nlohmann::json(names[v.thruster])
-                                          : nlohmann::json(nullptr)},
-                         {"time_s", app::FiniteOrNull(v.time_s)},
-                         {"message", v.message}});
-    }
-    j["rule_violations"] = msgs;
-    j["rule_violation_details"] = details;
+    app::AddRuleViolations(d.rule_violations, ctx.thruster_names(), &j);
     j["window_unit"] = nullptr;
     j["max_window_violation_nodes"] = d.max_window_violation_at_nodes;
     j["max_window_violation"] = d.max_window_violation_at_nodes;
@@ -234,61 +201,6 @@ std::string CheckedSchedule::TrajectoryCsv() const {
   return os.str();
 }
 
-namespace {
-
-// summary.json for array problems (the fields that do not need a scenario).
-nlohmann::json ArraySummaryJson(const ProblemContext& ctx, const transcription::ScheduleResult& r,
-                                bool interrupted, double total_seconds) {
-  nlohmann::json j;
-  const milp::SolveResult& sr = r.solve;
-  const transcription::Schedule& sch = r.schedule;
-  const std::vector<std::string> names = ctx.thruster_names();
-  j["model"] = "arrays";
-  j["input_mode"] = "on_off";
-  j["status"] = StatusName(sr.status);
-  j["solver_detail"] = sr.detail;
-  j["solver_version"] = sr.solver_version;
-  j["interrupted"] = interrupted;
-  j["objective_kind"] = std::string(transcription::ToString(ctx.problem->objective.kind));
-  j["objective"] = sr.has_solution() ? app::FiniteOrNull(sr.objective) : nullptr;
-  j["best_bound"] = app::FiniteOrNull(sr.best_bound);
-  j["gap"] = app::FiniteOrNull(sr.gap);
-  j["nodes"] = sr.nodes;
-  const bool has = r.has_schedule();
-  j["consumption_l1_m_s"] = has ? app::FiniteOrNull(sch.consumption_l1_m_s) : nullptr;
-  j["delta_v_m_s"] = has ? app::FiniteOrNull(sch.delta_v_m_s) : nullptr;
-  j["propellant_kg"] = has ? app::FiniteOrNull(sch.propellant_kg) : nullptr;
-  nlohmann::json burns = nlohmann::json::array();
-  for (const transcription::Burn& b : sch.burns) {
-    burns.push_back({{"thruster", names[b.thruster]},
-                     {"start_s", b.start_s},
-                     {"duration_s", b.duration_s()},
-                     {"end_s", b.end_s}});
-  }
-  j["n_burns"] = sch.burns.size();
-  j["burns"] = burns;
-  j["n_binaries"] = r.stats.num_binaries;
-  j["n_columns"] = r.stats.num_columns;
-  j["n_rows"] = r.stats.num_rows;
-  j["n_nonzeros"] = r.stats.num_nonzeros;
-  j["discretise_seconds"] = r.stats.discretise_seconds;
-  j["build_seconds"] = r.stats.build_seconds;
-  j["solve_seconds"] = sr.wall_seconds;
-  j["check_seconds"] = r.check_seconds;
-  j["total_seconds"] = total_seconds;
-  nlohmann::json inc = nlohmann::json::array();
-  for (const milp::Incumbent& c : sr.incumbents) {
-    inc.push_back({{"wall_seconds", c.wall_seconds},
-                   {"objective", app::FiniteOrNull(c.objective)},
-                   {"best_bound", app::FiniteOrNull(c.best_bound)}});
-  }
-  j["incumbents"] = inc;
-  j["infeasibility_reasons"] = r.infeasibility_reasons;
-  return j;
-}
-
-}  // namespace
-
 std::shared_ptr<SolveOutcome> SolveAndCheck(
     const ProblemContext& ctx,
     std::function<std::shared_ptr<const transcription::ScheduleMilp>()> build, SolveRequest request,
@@ -340,22 +252,22 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
     out->total_seconds = Since(t_start);
     nlohmann::json summary;
     if (ctx.scenario) {
+      // The CLI's summary.json (app::SummaryJson), with the check's kind.
       app::RunFacts facts;
       facts.interrupted = out->interrupted;
       facts.command_line = "python: thrustsched.solve";
       facts.total_seconds = out->total_seconds;
+      facts.nonlinear_error = out->checked->nonlinear_error;
+      facts.conjunction_solve = rounds ? &*rounds : nullptr;
+      facts.conjunction_check = out->checked->conjunction ? &*out->checked->conjunction : nullptr;
       summary = app::SummaryJson(*ctx.scenario, *milp, r, facts);
       if (summary["check"].is_object()) summary["check"]["kind"] = "continuous";
-      if (!out->checked->nonlinear_error.empty() && summary["check"].is_object()) {
-        summary["check"]["nonlinear_error"] = out->checked->nonlinear_error;
-      }
-      if (ctx.scenario->problem.conjunction) {
-        summary["conjunction"] =
-            app::ConjunctionJson(milp->keep_out(), rounds ? &*rounds : nullptr,
-                                 out->checked->conjunction ? &*out->checked->conjunction : nullptr);
-      }
     } else {
-      summary = ArraySummaryJson(ctx, r, out->interrupted, out->total_seconds);
+      // Array problems: the summary's fields that need no scenario.
+      summary = app::SolveResultJson(r, ctx.thruster_names(), ctx.problem->objective.kind,
+                                     out->interrupted, out->total_seconds);
+      summary["model"] = "arrays";
+      summary["input_mode"] = "on_off";
       summary["check"] = nlohmann::json::parse(out->checked->CheckJson());
     }
     out->summary_json = summary.dump();

@@ -37,6 +37,9 @@ namespace thrustsched::python {
 
 namespace {
 
+// A time is a grid node's when it is this close, relative to max(1 s, |t|).
+constexpr double kGridNodeRelativeTolerance = 1e-9;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const char* const kNoContinuousModel =
     "this problem was built from arrays (Phi, Gamma, drift): its continuous-time matrices are "
@@ -73,7 +76,7 @@ class ArrayModel final : public dynamics::LinearModel {
       return o;
     }
     for (size_t j = 0; j < grid_.size(); ++j) {
-      if (std::abs(grid_[j] - t) <= 1e-9 * std::max(1.0, std::abs(t))) {
+      if (std::abs(grid_[j] - t) <= kGridNodeRelativeTolerance * std::max(1.0, std::abs(t))) {
         o.c = c_[j];
         return o;
       }
@@ -282,16 +285,9 @@ void BindProblem(py::module_& m) {
              std::optional<int> log_level, std::optional<int> random_seed,
              std::optional<std::string> formulation, std::optional<std::string> encoding,
              bool check, double progress_interval_s, py::object callback) {
-            SolveSettings st;
-            st.time_limit_s = time_limit_s;
-            st.relative_gap = relative_gap;
-            st.threads = threads;
-            st.max_nodes = max_nodes;
-            st.search = search;
-            st.log_level = log_level;
-            st.random_seed = random_seed;
-            st.check = check;
-            st.progress_interval_s = progress_interval_s;
+            const SolveSettings st =
+                MakeSolveSettings(time_limit_s, relative_gap, threads, max_nodes, search,
+                                  std::nullopt, log_level, random_seed, check, progress_interval_s);
             transcription::SolveScheduleOptions opt;
             ApplyBuildSettings(std::nullopt, formulation, encoding, &opt.build);
             ApplySettings(st, &opt);

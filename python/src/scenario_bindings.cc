@@ -451,17 +451,9 @@ void BindScenario(py::module_& m) {
          std::optional<int> random_seed, std::optional<std::string> scheme,
          std::optional<std::string> formulation, std::optional<std::string> encoding, bool check,
          double progress_interval_s, py::object callback) {
-        SolveSettings st;
-        st.time_limit_s = time_limit_s;
-        st.relative_gap = relative_gap;
-        st.threads = threads;
-        st.max_nodes = max_nodes;
-        st.search = search;
-        st.diagnosis_time_limit_s = diagnosis_time_limit_s;
-        st.log_level = log_level;
-        st.random_seed = random_seed;
-        st.check = check;
-        st.progress_interval_s = progress_interval_s;
+        const SolveSettings st = MakeSolveSettings(time_limit_s, relative_gap, threads, max_nodes,
+                                                   search, diagnosis_time_limit_s, log_level,
+                                                   random_seed, check, progress_interval_s);
         return SolveScenario(s, scheme, formulation, encoding, st, std::move(callback));
       },
       py::arg("scenario"), py::arg("time_limit_s") = py::none(),

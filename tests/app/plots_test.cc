@@ -306,5 +306,16 @@ TEST(HtmlReport, InlinedSvgHasNoPrologAndAScalableSize) {
   EXPECT_EQ(HtmlEscape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
 }
 
+TEST(PlotOptionsIsValid, RunningGnuplotNeedsAProgramName) {
+  PlotOptions o;
+  std::string e;
+  EXPECT_TRUE(o.IsValid(&e));
+  o.gnuplot.clear();
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "gnuplot must name a program when run_gnuplot is set, got \"\"");
+  o.run_gnuplot = false;  // the scripts only: no program needed
+  EXPECT_TRUE(o.IsValid(&e));
+}
+
 }  // namespace
 }  // namespace thrustsched::app

@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -692,6 +694,59 @@ TEST(ScenarioFiles, AllShippedScenariosParse) {
     }
   }
   EXPECT_GE(count, 27);
+}
+
+TEST(ScenarioOptionsIsValid, VerdictOptionsNamesTheWindowTolerance) {
+  VerdictOptions o;
+  std::string e;
+  EXPECT_TRUE(o.IsValid(&e));
+  o.window_tolerance = -0.5;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "window_tolerance must be finite and >= 0, got -0.5");
+  o.window_tolerance = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(o.IsValid(nullptr));
+}
+
+TEST(ScenarioOptionsIsValid, ParseOptionsRefuseABuiltInOrEmptySection) {
+  ScenarioParseOptions o;
+  std::string e;
+  EXPECT_TRUE(o.IsValid(&e));
+  o.extra_sections = {"long_horizon", "window"};
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "extra_sections[1] \"window\" is a section the scenario parser reads itself");
+  o.extra_sections = {""};
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "extra_sections[0] must not be empty");
+  o.extra_sections.clear();
+  o.source.clear();
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "source must not be empty");
+  // The parser refuses such options before it reads the scenario.
+  ScenarioParseOptions bad;
+  bad.extra_sections = {"model"};
+  try {
+    ParseScenario(HcwBase(), bad);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& ex) {
+    EXPECT_NE(std::string(ex.what()).find("ScenarioParseOptions: extra_sections[0] \"model\""),
+              std::string::npos)
+        << ex.what();
+  }
+}
+
+TEST(ScenarioOptionsIsValid, ConjunctionSolveAndVerificationValuesNameTheirField) {
+  const json base = json::parse(std::ifstream(std::string(THRUSTSCHED_SOURCE_DIR) +
+                                              "/data/scenarios/serra_avoidance_ex1.json"));
+  json j = base;
+  j["conjunction"]["solve"]["restart_ratio"] = 1.5;
+  try {
+    ParseScenario(j);
+    FAIL() << "no exception";
+  } catch (const ScenarioError& ex) {
+    EXPECT_NE(std::string(ex.what()).find("restart_ratio"), std::string::npos) << ex.what();
+    EXPECT_NE(std::string(ex.what()).find("1.5"), std::string::npos) << ex.what();
+  }
+  EXPECT_NO_THROW(ParseScenario(base));
 }
 
 }  // namespace

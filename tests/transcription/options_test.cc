@@ -12,6 +12,8 @@
 #include "milp/cbc_solver.h"
 #include "tests/transcription/thesis_cases.h"
 #include "transcription/checker.h"
+#include "transcription/conjunction_check.h"
+#include "transcription/conjunction_solve.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
 #include "transcription/terminal_sets.h"
@@ -125,6 +127,41 @@ TEST(OptionsIsValid, SkSetOptions) {
   bad.lookahead_s = {0.0, -60.0};
   EXPECT_FALSE(bad.IsValid(&e));
   EXPECT_THAT(e, HasSubstr("lookahead_s"));
+}
+
+TEST(OptionsIsValid, ConjunctionCheckOptions) {
+  ConjunctionCheckOptions o;
+  std::string e;
+  EXPECT_TRUE(o.IsValid(&e));
+  o.monte_carlo_samples = -1;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "monte_carlo_samples must be >= 0, got -1");
+  o = {};
+  o.sample_step_s = -2.5;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "sample_step_s must be finite and >= 0, got -2.5");
+  o.sample_step_s = kNaN;
+  EXPECT_FALSE(o.IsValid(nullptr));
+  o = {};
+  o.propagation_tolerance = 0.0;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "propagation_tolerance must be finite and > 0, got 0");
+}
+
+TEST(OptionsIsValid, ConjunctionSolveOptions) {
+  ConjunctionSolveOptions o;
+  std::string e;
+  EXPECT_TRUE(o.IsValid(&e));
+  o.restart_ratio = 1.5;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "restart_ratio must be in (0, 1], got 1.5");
+  o.restart_ratio = 0.0;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "restart_ratio must be in (0, 1], got 0");
+  o = {};
+  o.max_rounds = 0;
+  EXPECT_FALSE(o.IsValid(&e));
+  EXPECT_EQ(e, "max_rounds must be >= 1, got 0");
 }
 
 }  // namespace
