@@ -200,12 +200,14 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
       return false;
     }
     if (t >= next_sample_h || done) {
+      const bool off = o.on_off && eff < windows.threshold;
       FeedbackSample fs{t * u.time_s,
                         u.FromScaled(x),
                         s[6],
                         v,
-                        (o.on_off && eff < windows.threshold) ? 0.0 : c.norm(),
-                        eff};
+                        off ? 0.0 : c.norm(),
+                        eff,
+                        off ? Eigen::Vector3d::Zero() : c};
       r.trajectory.push_back(fs);
       next_sample_h = t + o.sample_step_s / u.time_s;
     }
@@ -236,7 +238,8 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
   r.final_lyapunov = LyapunovValue(xf, p.target, o.weights, u);
   r.revolutions = (xf(5) - l0) / (2 * common::kPi);
   if (r.trajectory.empty() || r.trajectory.back().t_s != r.duration_s) {
-    r.trajectory.push_back({r.duration_s, r.final_elements, y[6], r.final_lyapunov, 0.0, 0.0});
+    r.trajectory.push_back({r.duration_s, r.final_elements, y[6], r.final_lyapunov, 0.0, 0.0,
+                            Eigen::Vector3d::Zero()});
   }
   return r;
 }

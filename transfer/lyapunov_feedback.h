@@ -69,8 +69,9 @@ struct FeedbackSample {
   Equinoctial elements;
   double mass_kg = 0.0;
   double lyapunov = 0.0;
-  double throttle = 0.0;    // |u| in [0, 1]
-  double efficiency = 0.0;  // |F^T grad V|, scaled units
+  double throttle = 0.0;                                  // |u| in [0, 1]
+  double efficiency = 0.0;                                // |F^T grad V|, scaled units
+  Eigen::Vector3d command_qsw = Eigen::Vector3d::Zero();  // u (QSW), |u| = throttle
 };
 
 struct FeedbackResult {

@@ -353,7 +353,11 @@ ContinuationResult ContinueOnThrust(const MinTimeProblem& p, const MinTimeSoluti
   ContinuationResult c;
   c.solution = start;
   c.thrust_n = p.thrust_n;
-  double log_step = 0.25;  // ln of the thrust ratio per step
+  // ln of the thrust ratio per step. Capped: longer steps at low thrust jump
+  // to extremals with other revolution counts (60 N to 0.2 N with steps up
+  // to e reached a 239.8-revolution extremal 0.4 % slower than Bombrun's).
+  constexpr double kMaxLogStep = 0.35;
+  double log_step = 0.25;
   const double direction = final_thrust_n < p.thrust_n ? -1.0 : 1.0;
   while (c.thrust_n != final_thrust_n && log_step > 1e-4) {
     double next = c.thrust_n * std::exp(direction * log_step);
@@ -369,7 +373,7 @@ ContinuationResult ContinueOnThrust(const MinTimeProblem& p, const MinTimeSoluti
     if (progress) progress(step);
     if (s.converged) {
       c.solution = s, c.thrust_n = next;
-      log_step = std::min(1.5 * log_step, 1.0);
+      log_step = std::min(1.5 * log_step, kMaxLogStep);
     } else {
       log_step /= 2;
     }
