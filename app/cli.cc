@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "app/json_reader.h"
 #include "app/simulate.h"
+#include "app/transfer_command.h"
 #include "milp/cbc_solver.h"
 
 #ifndef THRUSTSCHED_VERSION
@@ -205,6 +206,19 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
                        "do not write report.html (nor the year plots only it shows)");
   AddCcsdsOptions(c_simulate, &sim.ccsds);
 
+  // transfer (orbit raising, app/transfer_command.h)
+  TransferArgs transfer;
+  CLI::App* c_transfer = cli.add_subcommand(
+      "transfer",
+      "Orbit transfer (minimum time by shooting, Lyapunov feedback, two impulses) "
+      "from a transfer scenario; writes summary.json and trajectory.csv.");
+  c_transfer->add_option("scenario", transfer.scenario, "transfer scenario file (JSON)")
+      ->required();
+  c_transfer->add_option("--out", transfer.out_dir, "output directory (default out/<file stem>)");
+  c_transfer->add_option("--method", transfer.method, "minimum_time, feedback or two_impulse");
+  c_transfer->add_flag("--force", transfer.force, "replace an earlier run's files in --out");
+  c_transfer->add_flag("--quiet", transfer.quiet, "no progress messages on stderr");
+
   // `thrustsched help [command]`, and a misspelt command named as such.
   if (argc >= 2 && std::string(argv[1]) == "help") {
     if (argc >= 3) {
@@ -270,6 +284,10 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
       sim.command_line = CommandLine(argc, argv);
       sim.hooks = hooks;
       return RunSimulate(sim);
+    }
+    if (c_transfer->parsed()) {
+      transfer.command_line = CommandLine(argc, argv);
+      return RunTransfer(transfer);
     }
     if (c_validate->parsed()) {
       val.build = !no_build;
