@@ -98,6 +98,21 @@ TEST(MinTimeShootingTest, ContinuationOnTheThrustKeepsThrustTimesTimeNearlyConst
   EXPECT_LT(Eccentricity(c.solution.final_elements), 1e-8);
 }
 
+// A guess with t_f 30 % short: the direct solve fails, the homotopy on the
+// target (from the orbit that guess reaches to GEO) finds the 60 N optimum.
+TEST(MinTimeShootingTest, TargetHomotopyRecoversFromAShortGuess) {
+  const MinTimeProblem p = CaillauGtoProblem(60.0);
+  ShootingGuess g = InitialGuess(p);
+  g.duration_s *= 0.7;
+  ShootingOptions o;
+  o.target_homotopy_steps = 0;
+  EXPECT_FALSE(SolveMinTime(p, g, o).converged);
+  o.target_homotopy_steps = 20;
+  const MinTimeSolution s = SolveMinTime(p, g, o);
+  ASSERT_TRUE(s.converged);
+  EXPECT_NEAR(s.duration_s / kHour, 14.800364, 2e-6);
+}
+
 TEST(MinTimeShootingTest, BadProblemsAreRefusedNamingTheField) {
   std::string error;
   MinTimeProblem p = CaillauGtoProblem(-1.0);

@@ -42,6 +42,27 @@ TEST(TransferCli, Caillau60NewtonScenarioWritesTheSummaryAndTrajectory) {
   EXPECT_EQ(rows.rows.front().size(), 14u);
 }
 
+// --method feedback on the same scenario: Bombrun's feedback stops where
+// |F^T grad V| <= delta (16.4 h, far from GEO at 60 N), the minimum-time end
+// joins GEO; the whole cannot beat the minimum time.
+TEST(TransferCli, FeedbackMethodWithItsOptimalEnd) {
+  const std::string out = TempDir("transfer_fb60");
+  const RunResult r = RunCli({"transfer", kScenarios + "gto_geo_caillau_60n.json", "--method",
+                              "feedback", "--out", out, "--quiet", "--force"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  const nlohmann::json s = ReadJson(out + "/summary.json");
+  EXPECT_EQ(s["method"], "feedback");
+  EXPECT_EQ(s["feedback"]["stop_reason"], "saturation");
+  EXPECT_LE(s["feedback"]["max_lyapunov_increase"].get<double>(), 1e-12);
+  EXPECT_TRUE(s["optimal_end"]["converged"].get<bool>());
+  EXPECT_GT(s["duration_h"].get<double>(), 14.800364);
+  EXPECT_LT(std::abs(s["errors"]["a_m"].get<double>()), 1.0);
+  EXPECT_NEAR(
+      s["duration_s"].get<double>(),
+      s["feedback"]["duration_s"].get<double>() + s["optimal_end"]["duration_s"].get<double>(),
+      1e-6);
+}
+
 TEST(TransferCli, Map434TwoImpulseIsHohmann) {
   const std::string out = TempDir("transfer_map434");
   const RunResult r =
