@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "app/json_reader.h"
 #include "app/simulate.h"
+#include "app/transfer_command.h"
 #include "milp/cbc_solver.h"
 
 #ifndef THRUSTSCHED_VERSION
@@ -96,6 +97,8 @@ struct Subcommands {
   CLI::App* c_validate = nullptr;
   SimulateArgs sim;
   CLI::App* c_simulate = nullptr;
+  TransferArgs transfer;
+  CLI::App* c_transfer = nullptr;
 };
 
 // `solve`: build, solve, check, write.
@@ -219,6 +222,22 @@ void AddSimulateCommand(CLI::App* cli, Subcommands* c) {
   AddCcsdsOptions(c->c_simulate, &c->sim.ccsds);
 }
 
+// `transfer`: orbit raising (app/transfer_command.h).
+void AddTransferCommand(CLI::App* cli, Subcommands* c) {
+  c->c_transfer = cli->add_subcommand(
+      "transfer",
+      "Orbit transfer (minimum time by shooting, Lyapunov feedback, two impulses) "
+      "from a transfer scenario; writes summary.json and trajectory.csv.");
+  c->c_transfer->add_option("scenario", c->transfer.scenario, "transfer scenario file (JSON)")
+      ->required();
+  c->c_transfer->add_option("--out", c->transfer.out_dir,
+                            "output directory (default out/<file stem>)");
+  c->c_transfer->add_option("--method", c->transfer.method,
+                            "minimum_time, feedback or two_impulse");
+  c->c_transfer->add_flag("--force", c->transfer.force, "replace an earlier run's files in --out");
+  c->c_transfer->add_flag("--quiet", c->transfer.quiet, "no progress messages on stderr");
+}
+
 // `thrustsched help [command]`, and a misspelt command named as such: the
 // exit code, or nothing when the command line is for CLI11.
 std::optional<int> AnswerHelpOrUnknown(CLI::App* cli, int argc, char** argv) {
@@ -279,6 +298,10 @@ int RunParsed(Subcommands* c, int argc, char** argv, const RunHooks& hooks) {
       c->sim.hooks = hooks;
       return RunSimulate(c->sim);
     }
+    if (c->c_transfer->parsed()) {
+      c->transfer.command_line = CommandLine(argc, argv);
+      return RunTransfer(c->transfer);
+    }
     if (c->c_validate->parsed()) {
       c->val.build = !c->no_build;
       c->val.overrides = c->validate_flags.Get();
@@ -317,6 +340,7 @@ int RunCli(int argc, char** argv, const RunHooks& hooks) {
   AddImportCommand(&cli, &c);
   AddValidateCommand(&cli, &c);
   AddSimulateCommand(&cli, &c);
+  AddTransferCommand(&cli, &c);
   if (const std::optional<int> code = AnswerHelpOrUnknown(&cli, argc, argv)) return *code;
   try {
     cli.parse(argc, argv);

@@ -1,0 +1,68 @@
+// Transfer scenario files: a JSON file whose "transfer" section describes an
+// orbit transfer for `thrustsched transfer` (fields in
+// data/scenarios/transfer/README.md).
+//
+//   {"name": "...", "description": "...",
+//    "transfer": {
+//      "initial": {"keplerian": {"a_m": 24505.9e3, "e": 0.725, "i_deg": 5.2,
+//                                "raan_deg": 0, "arg_perigee_deg": 0, "true_anomaly_deg": 0}},
+//      "target":  {"a_m": 42165e3, "ex": 0, "ey": 0, "hx": 0, "hy": 0, "free": []},
+//      "thrust_n": 0.35, "isp_s": 2000, "mass_kg": 2000,
+//      "method": "feedback"}}
+//
+//   app::TransferScenario s = app::LoadTransferScenario("data/scenarios/transfer/x.json");
+//   transfer::MinTimeSolution r = transfer::SolveMinTime(s.problem, ...);
+//
+// "initial" is {"equinoctial": {"p_m", "ex", "ey", "hx", "hy", "l_deg"}} or
+// {"keplerian": {...}}; "target" gives "p_m" or "a_m" and the equinoctial
+// ex, ey, hx, hy (hx + j hy = tan(i/2) exp(j RAAN)), "free" lists the ones
+// left free (the final longitude is always free). Strict: unknown keys,
+// negative thrust, a hyperbolic start, a perigee below the Earth's surface
+// or a target beyond the Earth's sphere of influence throw ScenarioError
+// naming the field and the value (exit 2).
+#ifndef THRUSTSCHED_APP_TRANSFER_SCENARIO_H_
+#define THRUSTSCHED_APP_TRANSFER_SCENARIO_H_
+
+#include <optional>
+#include <string>
+
+#include "app/json_reader.h"
+#include "transfer/lyapunov_feedback.h"
+#include "transfer/min_time_shooting.h"
+
+namespace thrustsched::app {
+
+enum class TransferMethod { kMinimumTime, kFeedback, kTwoImpulse };
+
+/// "minimum_time", "feedback", "two_impulse".
+std::string ToString(TransferMethod m);
+/// @throws ScenarioError listing the choices.
+TransferMethod ParseTransferMethod(const std::string& name, const std::string& path);
+
+struct TransferScenario {
+  std::string path;  // the file ("" when parsed from text)
+  std::string name, description;
+  TransferMethod method = TransferMethod::kMinimumTime;
+  transfer::MinTimeProblem problem;
+  // minimum_time
+  /// Continue on the thrust from this one (a converged shooting there from
+  /// the first guess) down to problem.thrust_n; none: shoot directly.
+  std::optional<double> continuation_from_thrust_n;
+  std::optional<transfer::ShootingGuess> guess;  // "costate_guess"; none: InitialGuess
+  transfer::ShootingOptions shooting;
+  // feedback
+  transfer::FeedbackOptions feedback;
+  bool optimal_end = true;  // Bombrun's minimum-time end after the feedback
+};
+
+/// Earth's equatorial radius and sphere-of-influence radius used by the checks, m.
+inline constexpr double kEarthRadiusM = 6378137.0;
+inline constexpr double kEarthSphereOfInfluenceM = 9.25e8;
+
+TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::string& path);
+/// @throws ScenarioError on unreadable files and on every error above.
+TransferScenario LoadTransferScenario(const std::string& path);
+
+}  // namespace thrustsched::app
+
+#endif  // THRUSTSCHED_APP_TRANSFER_SCENARIO_H_
