@@ -8,6 +8,8 @@ case "${1:-}" in -h|--help) sed -n "2,4p" "$0" | sed "s/^# \{0,1\}//"; exit 0 ;;
 PACKAGES=(
   build-essential cmake pkgconf
   libeigen3-dev libboost-dev
+  # orbit raising (transfer/): MINPACK for the shooting
+  libcminpack-dev
   coinor-libcbc-dev coinor-libclp-dev coinor-libcgl-dev coinor-libosi-dev coinor-libcoinutils-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
