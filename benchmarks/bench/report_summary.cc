@@ -14,6 +14,9 @@
 namespace thrustsched::bench::report_internal {
 namespace {
 
+// "3.56 s", or "not reached" (no unit).
+std::string Seconds(double v) { return std::isfinite(v) ? Sec(v) + " s" : Sec(v); }
+
 std::string Repeats(const Group& g) { return "n=" + std::to_string(g.rows.size()); }
 
 // The slowest scheme's median of `col` over the 7-day GEO grid's cost cases.
@@ -30,7 +33,7 @@ void AddSlowestScheme(MdTable* t, const std::vector<const Group*>& cost, const s
     return;
   }
   t->Add({what, "< " + G(limit_s) + " s",
-          Sec(worst) + " s (" + slowest->Get("scheme") + ", slowest of " +
+          Seconds(worst) + " (" + slowest->Get("scheme") + ", slowest of " +
               std::to_string(cost.size()) + " schemes; " + Repeats(*slowest) + ")",
           Verdict(worst, limit_s)});
 }
@@ -42,7 +45,7 @@ void AddSolveTarget(MdTable* t, const Index& idx, const std::string& scenario,
     if (g->Get("scenario") != scenario) continue;
     const double v = MedianOf(g->Values(col), true);
     t->Add(
-        {what, "< " + G(limit_s) + " s", Sec(v) + " s (" + Repeats(*g) + ")", Verdict(v, limit_s)});
+        {what, "< " + G(limit_s) + " s", Seconds(v) + " (" + Repeats(*g) + ")", Verdict(v, limit_s)});
     return;
   }
   t->Add({what, "< " + G(limit_s) + " s", "not run", "-"});
@@ -61,7 +64,7 @@ void AddSolverTargets(MdTable* t, const std::vector<Row>& rows) {
   for (const SolverTarget& s : SolverSpeedTargets(rows)) {
     if (!s.gap_target) {
       t->Add({"search, " + ShortCase(s.case_id) + ": " + s.measure, "< " + G(s.limit_s) + " s",
-              Sec(s.median_s) + " s", Verdict(s.median_s, s.limit_s)});
+              Seconds(s.median_s), Verdict(s.median_s, s.limit_s)});
       continue;
     }
     const auto key = std::make_pair(s.measure, s.limit_s);
@@ -84,7 +87,7 @@ void AddSolverTargets(MdTable* t, const std::vector<Row>& rows) {
                              key.first + " in " + G(key.second) + " s";
     const std::string measured = std::to_string(g.size() - n_missed) + " of " +
                                  std::to_string(g.size()) + " met; slowest " +
-                                 Sec(slowest->median_s) + " s";
+                                 Seconds(slowest->median_s);
     t->Add({what, "each < " + G(key.second) + " s", measured,
             n_missed == 0 ? "met (slowest at " + G(100.0 * slowest->median_s / key.second, 3) +
                                 " % of the limit)"
