@@ -48,12 +48,6 @@ std::vector<Pair> Pairs(const std::vector<Row>& rows) {
   return out;
 }
 
-// The case id as the section's tables print it (the section names it).
-std::string ShortId(const std::string& id) {
-  const std::string prefix = std::string(kSectionSolverSpeed) + "-";
-  return id.rfind(prefix, 0) == 0 ? id.substr(prefix.size()) : id;
-}
-
 double MedianCol(const std::vector<const Row*>& rows, const std::string& col, bool missing_is_inf) {
   std::vector<double> v;
   for (const Row* r : rows) v.push_back(r->Num(col));
@@ -135,7 +129,7 @@ void WriteLazyLpAblation(std::ostream& md, const std::vector<Pair>& pairs) {
       } else if (std::isfinite(on) && on > 0.0) {
         ratio = "< " + G(on / limit, 3) + "x";
       }
-      t.Add({ShortId(p.id), m.name, Sec(on), Sec(off), ratio,
+      t.Add({SolverCaseShortId(p.id), m.name, Sec(on), Sec(off), ratio,
              PerArm({&p.search, &p.unpresolved}, "objective", false),
              PerArm({&p.search, &p.unpresolved}, "gap", true)});
     }
@@ -215,6 +209,11 @@ std::map<std::string, std::string> WriteStepLogs(const std::vector<Pair>& pairs,
 
 }  // namespace
 
+std::string SolverCaseShortId(const std::string& case_id) {
+  const std::string prefix = std::string(kSectionSolverSpeed) + "-";
+  return case_id.rfind(prefix, 0) == 0 ? case_id.substr(prefix.size()) : case_id;
+}
+
 std::vector<SolverTarget> SolverSpeedTargets(const std::vector<Row>& rows) {
   std::vector<SolverTarget> out;
   for (const Pair& p : Pairs(rows)) {
@@ -276,7 +275,7 @@ void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows, const std:
                                   : G(before / now, 3) + "x";
       };
       const double previous = value(p.previous), first = value(p.cbc);
-      t.Add({ShortId(p.id), m.name, G(limit, 3), Sec(now), Sec(previous), ratio(previous),
+      t.Add({SolverCaseShortId(p.id), m.name, G(limit, 3), Sec(now), Sec(previous), ratio(previous),
              Sec(first), ratio(first), Verdict(now, limit),
              PerArm({&p.search, &p.previous, &p.cbc}, "objective", false),
              PerArm({&p.search, &p.previous, &p.cbc}, "gap", true)});
@@ -289,7 +288,7 @@ void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows, const std:
     for (const Pair& p : pairs) {
       const auto it = logs.find(p.id);
       if (it == logs.end()) continue;
-      md << "- [" << ShortId(p.id) << "](" << it->second << ")\n";
+      md << "- [" << SolverCaseShortId(p.id) << "](" << it->second << ")\n";
     }
     md << "\n";
   }

@@ -27,6 +27,9 @@ struct SolverTarget {
   double median_s = 0.0;  // median over the repeats; +inf: not reached in most
 };
 
+/// A solver-speed case id as the report prints it, without "solver_speed-".
+std::string SolverCaseShortId(const std::string& case_id);
+
 /// The targets of every solver-speed case in `rows`, in the order of the rows.
 std::vector<SolverTarget> SolverSpeedTargets(const std::vector<Row>& rows);
 

@@ -44,16 +44,11 @@ void AddSolveTarget(MdTable* t, const Index& idx, const std::string& scenario,
   for (const Group* g : idx.Section(kSectionTargets)) {
     if (g->Get("scenario") != scenario) continue;
     const double v = MedianOf(g->Values(col), true);
-    t->Add(
-        {what, "< " + G(limit_s) + " s", Seconds(v) + " (" + Repeats(*g) + ")", Verdict(v, limit_s)});
+    t->Add({what, "< " + G(limit_s) + " s", Seconds(v) + " (" + Repeats(*g) + ")",
+            Verdict(v, limit_s)});
     return;
   }
   t->Add({what, "< " + G(limit_s) + " s", "not run", "-"});
-}
-
-std::string ShortCase(const std::string& id) {
-  const std::string prefix = std::string(kSectionSolverSpeed) + "-";
-  return id.rfind(prefix, 0) == 0 ? id.substr(prefix.size()) : id;
 }
 
 // The solver-speed targets: one row per time target, one per group of gap
@@ -63,8 +58,8 @@ void AddSolverTargets(MdTable* t, const std::vector<Row>& rows) {
   std::vector<std::pair<std::string, double>> gap_order;
   for (const SolverTarget& s : SolverSpeedTargets(rows)) {
     if (!s.gap_target) {
-      t->Add({"search, " + ShortCase(s.case_id) + ": " + s.measure, "< " + G(s.limit_s) + " s",
-              Seconds(s.median_s), Verdict(s.median_s, s.limit_s)});
+      t->Add({"search, " + SolverCaseShortId(s.case_id) + ": " + s.measure,
+              "< " + G(s.limit_s) + " s", Seconds(s.median_s), Verdict(s.median_s, s.limit_s)});
       continue;
     }
     const auto key = std::make_pair(s.measure, s.limit_s);
@@ -80,7 +75,7 @@ void AddSolverTargets(MdTable* t, const std::vector<Row>& rows) {
       if (!(s.median_s <= slowest->median_s)) slowest = &s;
       if (!(s.median_s < s.limit_s)) {
         ++n_missed;
-        missed += (missed.empty() ? "" : ", ") + ShortCase(s.case_id);
+        missed += (missed.empty() ? "" : ", ") + SolverCaseShortId(s.case_id);
       }
     }
     const std::string what = "search, hard weeks (" + std::to_string(g.size()) + "): each " +

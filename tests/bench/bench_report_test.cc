@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -224,22 +225,18 @@ Row Make(const std::map<std::string, std::string>& cells) {
 TEST(BenchReport, SummaryVerdictsAndProvenanceOnSyntheticRows) {
   const TempDir tmp;
   std::vector<Row> rows;
-  for (const char* d : {"0.05", "0.25", "0.3"}) {  // median 0.25 > 0.2: missed by 0.05 s
+  // The 7-day GEO grid's discretise and build cases of one scheme.
+  auto cost = [&rows](const std::string& scheme, const char* discretise_s, const char* build_s) {
     rows.push_back(Make({{"section", kSectionCost},
-                         {"case_id", "cost-geo-exact_zoh"},
-                         {"scheme", "exact_zoh"},
+                         {"case_id", "cost-geo-" + scheme},
+                         {"scheme", scheme},
                          {"horizon_s", "604800"},
                          {"step_s", "300"},
-                         {"discretise_s", d},
-                         {"build_s", "0.5"}}));
-  }
-  rows.push_back(Make({{"section", kSectionCost},
-                       {"case_id", "cost-geo-euler"},
-                       {"scheme", "euler"},
-                       {"horizon_s", "604800"},
-                       {"step_s", "300"},
-                       {"discretise_s", "0.01"},
-                       {"build_s", "0.6"}}));
+                         {"discretise_s", discretise_s},
+                         {"build_s", build_s}}));
+  };
+  for (const char* d : {"0.05", "0.25", "0.3"}) cost("exact_zoh", d, "0.5");  // 0.25 > 0.2
+  cost("euler", "0.01", "0.6");
   for (const char* t : {"3", "6", "9"}) {  // median 6 of a 30-s target: 20 %
     rows.push_back(Make({{"section", kSectionTargets},
                          {"case_id", "targets-t42"},
@@ -248,30 +245,21 @@ TEST(BenchReport, SummaryVerdictsAndProvenanceOnSyntheticRows) {
   }
   // Solver speed: a timed target met (median 1.5 of 2 s) and two gap targets,
   // one met (ends within 2 % in 30 s), one never within it (missed).
+  auto search = [&rows](const std::string& id, std::map<std::string, std::string> cells) {
+    cells.insert({{"section", kSectionSolverSpeed},
+                  {"case_id", "solver_speed-" + id + "-search"},
+                  {"solver_path", "search"},
+                  {"time_limit_s", "60"}});
+    rows.push_back(Make(cells));
+  };
   for (const char* t : {"1", "1.5", "4"}) {
-    rows.push_back(Make({{"section", kSectionSolverSpeed},
-                         {"case_id", "solver_speed-hcw-1thread-search"},
-                         {"solver_path", "search"},
-                         {"target_1pct_s", "2"},
-                         {"time_to_1pct_s", t},
-                         {"time_limit_s", "60"}}));
+    search("hcw-1thread", {{"target_1pct_s", "2"}, {"time_to_1pct_s", t}});
   }
-  rows.push_back(Make({{"section", kSectionSolverSpeed},
-                       {"case_id", "solver_speed-hard_a-search"},
-                       {"solver_path", "search"},
-                       {"target_gap", "0.02"},
-                       {"target_gap_s", "60"},
-                       {"gap", "0.01"},
-                       {"solve_s", "30"},
-                       {"time_limit_s", "60"}}));
-  rows.push_back(Make({{"section", kSectionSolverSpeed},
-                       {"case_id", "solver_speed-hard_b-search"},
-                       {"solver_path", "search"},
-                       {"target_gap", "0.02"},
-                       {"target_gap_s", "60"},
-                       {"gap", "0.05"},
-                       {"solve_s", "60"},
-                       {"time_limit_s", "60"}}));
+  for (const auto& [id, gap, solve_s] :
+       {std::tuple{"hard_a", "0.01", "30"}, std::tuple{"hard_b", "0.05", "60"}}) {
+    search(id,
+           {{"target_gap", "0.02"}, {"target_gap_s", "60"}, {"gap", gap}, {"solve_s", solve_s}});
+  }
   ReportMeta meta;
   meta.command = "thrustsched-bench --cases x --out d --merge";
   meta.date_utc = "2026-12-02T10:00:00Z";
