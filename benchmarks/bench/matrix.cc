@@ -168,12 +168,12 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
   }
 }
 
-// The problem-aware search against the previous release's search (its LP
-// relaxation on the whole MILP) and the first release's path (CBC on
-// the whole MILP), case by case in the same run so that machine load cancels
-// in the ratios; the targets are those of the solver-speed work.
+// The problem-aware search against the same search with one named switch off
+// (`previous`, its variant says which) and CBC alone on the whole MILP, case
+// by case in the same run so that machine load cancels in the ratios; the
+// targets are those of the solver-speed work.
 void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
-  // cbc_repeats > 0: the first release's arm that many times, not c.repeats.
+  // cbc_repeats > 0: the CBC-alone arm that many times, not c.repeats.
   auto pair = [b](CaseSpec c, const std::string& suffix, int cbc_repeats = 0) {
     auto add = [b, &suffix](const CaseSpec& arm) {
       b->Add(arm, suffix + SolverPathIdSuffix(SolverPath(arm)));

@@ -12,6 +12,7 @@
 #include "app/plots.h"
 #include "benchmarks/bench/report_campaigns.h"
 #include "benchmarks/bench/report_conjunction.h"
+#include "benchmarks/bench/report_format.h"
 #include "benchmarks/bench/report_sections.h"
 #include "benchmarks/bench/report_solver.h"
 
@@ -43,6 +44,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   plot.gnuplot = app::GnuplotAvailable();
   std::ostringstream md;
   WriteHeader(md, meta);
+  WriteSummary(md, idx, rows, meta, ref);
   WriteTargets(md, idx, meta, ref, &plot);
   WriteAccuracy(md, idx, &plot);
   WriteCost(md, idx, ref, &plot);
@@ -51,7 +53,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteOperations(md, idx, ref);
   WriteYear(md, meta, ref);
   WriteCollisionAvoidance(md, rows);
-  WriteSolverSpeed(md, rows);
+  WriteSolverSpeed(md, rows, dir);
   WriteCampaigns(md, dir);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);
@@ -64,7 +66,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
     md << "\n";
   }
   std::ofstream out(dir + "/report.md");
-  out << md.str();
+  out << WrapMarkdown(md.str(), kReportWrapChars);
   if (!out) throw std::runtime_error("cannot write " + dir + "/report.md");
 }
 

@@ -1,24 +1,36 @@
-// report.md and the SVG plots of thrustsched-bench, generated from the rows
-// of results.csv alone (plus the progress traces in DIR/runs/ when present),
-// so `thrustsched-bench --report-only DIR` regenerates them after a run.
+// report.md, the SVG plots and the search's step logs (DIR/logs/) of
+// thrustsched-bench, generated from the rows of results.csv alone (plus the
+// solve targets' progress traces, DIR/runs/targets-*.trace.csv, when
+// present), so `thrustsched-bench --report-only DIR` regenerates them after a
+// run. Which runs made the rows (command, date, revision, machine) is in
+// DIR/meta.json; the report links it in one line. No line of report.md is
+// longer than kReportMaxLineChars.
 //
 //   bench::ReportMeta meta = bench::CollectMeta(argc, argv, /*quick=*/false);
 //   bench::WriteMetaJson("out/meta.json", meta);
 //   bench::WriteReport("out", bench::ReadResultsCsv("out/results.csv"), meta);
 //
-// Sections (headings the test suite checks): "## Targets",
+// Sections (headings the test suite checks): "## Summary" (one row per
+// performance target), "## Targets",
 // "## 1. Accuracy", "## 2. Cost per scheme", "## 3. Formulations and encodings",
 // "## 4. Scaling", "## 5. Operational constraints", "## Method and definitions",
 // "## Not run or skipped".
 #ifndef THRUSTSCHED_BENCHMARKS_BENCH_REPORT_H_
 #define THRUSTSCHED_BENCHMARKS_BENCH_REPORT_H_
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 #include "benchmarks/bench/results.h"
 
 namespace thrustsched::bench {
+
+/// No line of report.md is longer than this (characters): tables wider than it
+/// are split (report_format.h), prose is wrapped, long logs go to logs/.
+constexpr size_t kReportMaxLineChars = 200;
+/// Prose lines of report.md are wrapped at this width (characters).
+constexpr size_t kReportWrapChars = 100;
 
 /// A run whose rows a partial re-run (`--merge`) kept.
 struct EarlierRun {
@@ -62,8 +74,9 @@ ReportMeta CollectMeta(int argc, char** argv, bool quick);
 void WriteMetaJson(const std::string& path, const ReportMeta& meta);
 ReportMeta ReadMetaJson(const std::string& path);
 
-/// Writes dir/report.md and the plots (dir/*.svg via gnuplot, scripts and
-/// data dir/plots/*.gp, *.dat; skipped with a note if gnuplot is missing).
+/// Writes dir/report.md, dir/logs/*.log (the search's steps per solver-speed
+/// case) and the plots (dir/*.svg via gnuplot, scripts and data
+/// dir/plots/*.gp, *.dat; skipped with a note if gnuplot is missing).
 /// @throws std::runtime_error if report.md cannot be written.
 void WriteReport(const std::string& dir, const std::vector<Row>& rows, const ReportMeta& meta);
 

@@ -1,6 +1,7 @@
 #include "benchmarks/bench/report_conjunction.h"
 
 #include <string>
+#include <vector>
 
 #include "benchmarks/bench/matrix.h"
 #include "benchmarks/bench/report_format.h"
@@ -15,29 +16,41 @@ std::string Collisions(const Row& r, const char* linear, const char* nonlinear) 
 }
 
 // One case: cost and time next to the published ones, then the verification.
-void WriteCase(std::ostream& md, const Row& r) {
-  md << "| " << r.Get("scenario") << " | " << r.Get("status") << " | "
-     << G(1e3 * r.Num("objective"), 5) << " | " << G(1e3 * r.Num("published"), 5) << " | "
-     << G(r.Num("ratio"), 4) << " | " << Sec(r.Num("time_to_opt_s")) << " | "
-     << G(r.Num("published_time_s"), 4) << " | " << r.Get("budget_rounds") << " | "
-     << r.Get("keep_out_binaries") << " | " << G(r.Num("max_risk"), 3) << " | "
-     << G(r.Num("max_risk_unmanoeuvred"), 4) << " (" << G(r.Num("published_risk_unmanoeuvred"), 3)
-     << ") | " << Collisions(r, "mc_collisions_linear", "mc_collisions_nonlinear") << " ("
-     << r.Get("mc_samples") << ") |\n";
+std::vector<std::string> CaseCells(const Row& r) {
+  return {r.Get("scenario"),
+          r.Get("status"),
+          G(1e3 * r.Num("objective"), 5),
+          G(1e3 * r.Num("published"), 5),
+          G(r.Num("ratio"), 4),
+          Sec(r.Num("time_to_opt_s")),
+          G(r.Num("published_time_s"), 4),
+          r.Get("budget_rounds"),
+          r.Get("keep_out_binaries"),
+          G(r.Num("max_risk"), 3),
+          G(r.Num("max_risk_unmanoeuvred"), 4) + " (" + G(r.Num("published_risk_unmanoeuvred"), 3) +
+              ")",
+          Collisions(r, "mc_collisions_linear", "mc_collisions_nonlinear") + " (" +
+              r.Get("mc_samples") + ")"};
 }
 
 // One on-off case: the plan against the same problem's plan without the
 // conjunction, both verified against it.
-void WriteOnOffCase(std::ostream& md, const Row& r) {
-  md << "| " << r.Get("scenario") << " | " << r.Get("status") << " | " << G(r.Num("objective"), 6)
-     << " | " << G(r.Num("without_conjunction"), 6) << " | " << G(r.Num("extra_cost"), 3) << " ("
-     << Pct(r.Num("extra_cost") / r.Num("without_conjunction")) << ") | "
-     << G(r.Num("best_bound"), 6) << " | " << Pct(r.Num("gap")) << " | " << Sec(r.Num("solve_s"))
-     << " | " << r.Get("budget_rounds") << " | " << G(r.Num("max_risk"), 3) << " | "
-     << G(r.Num("without_max_risk"), 3) << " | "
-     << Collisions(r, "mc_collisions_linear", "mc_collisions_nonlinear") << " | "
-     << Collisions(r, "without_mc_collisions_linear", "without_mc_collisions_nonlinear") << " ("
-     << r.Get("mc_samples") << ") |\n";
+std::vector<std::string> OnOffCells(const Row& r) {
+  return {r.Get("scenario"),
+          r.Get("status"),
+          G(r.Num("objective"), 6),
+          G(r.Num("without_conjunction"), 6),
+          G(r.Num("extra_cost"), 3) + " (" +
+              Pct(r.Num("extra_cost") / r.Num("without_conjunction")) + ")",
+          G(r.Num("best_bound"), 6),
+          Pct(r.Num("gap")),
+          Sec(r.Num("solve_s")),
+          r.Get("budget_rounds"),
+          G(r.Num("max_risk"), 3),
+          G(r.Num("without_max_risk"), 3),
+          Collisions(r, "mc_collisions_linear", "mc_collisions_nonlinear"),
+          Collisions(r, "without_mc_collisions_linear", "without_mc_collisions_nonlinear") + " (" +
+              r.Get("mc_samples") + ")"};
 }
 
 }  // namespace
@@ -61,14 +74,12 @@ void WriteCollisionAvoidance(std::ostream& md, const std::vector<Row>& rows) {
           "(not sampled) at the check times; the Monte Carlo has the scenario's sample count, "
           "linear and two-body. Data defects and the covariance repair: data/scenarios/README.md "
           "section 11.\n\n";
-    md << "| scenario | status | cost (mm/s) | published (mm/s) | ratio | CBC time to optimum (s) "
-          "| "
-          "Gurobi (s) "
-          "| rounds | keep-out binaries (last round) | max risk | unmanoeuvred risk (published) "
-          "| Monte Carlo collisions: linear, two-body (samples) |\n";
-    md << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const Row* r : cases) WriteCase(md, *r);
-    md << "\n";
+    MdTable t({"scenario", "status", "cost (mm/s)", "published (mm/s)", "ratio",
+               "CBC time to optimum (s)", "Gurobi (s)", "rounds", "keep-out binaries (last round)",
+               "max risk", "unmanoeuvred risk (published)",
+               "Monte Carlo collisions: linear, two-body (samples)"});
+    for (const Row* r : cases) t.Add(CaseCells(*r));
+    md << t.Str() << "\n";
   }
   if (on_off.empty()) return;
   md << "Avoidance with on-off thrusters (data/scenarios/README.md section 11): station keeping, "
@@ -78,12 +89,11 @@ void WriteCollisionAvoidance(std::ostream& md, const std::vector<Row>& rows) {
         "lower bound; both plans are verified against the conjunction (computed risk, Monte "
         "Carlo linear and two-body). Time: the whole solve on 2 threads (the box and rules check "
         "included, the conjunction verification not).\n\n";
-  md << "| scenario | status | cost (m/s) | without the conjunction (m/s) | extra cost (m/s) | "
-        "bound | gap | time (s) | rounds | max risk | max risk without | Monte Carlo "
-        "collisions: linear, two-body | without (samples) |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const Row* r : on_off) WriteOnOffCase(md, *r);
-  md << "\n";
+  MdTable t({"scenario", "status", "cost (m/s)", "without the conjunction (m/s)",
+             "extra cost (m/s)", "bound", "gap", "time (s)", "rounds", "max risk",
+             "max risk without", "Monte Carlo collisions: linear, two-body", "without (samples)"});
+  for (const Row* r : on_off) t.Add(OnOffCells(*r));
+  md << t.Str() << "\n";
 }
 
 }  // namespace thrustsched::bench

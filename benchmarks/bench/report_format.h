@@ -28,10 +28,18 @@ double MedianOf(std::vector<double> v, bool missing_is_inf);
 /// "met (x % of the limit)" or "**missed** by ..." for a time against its limit.
 std::string Verdict(double value, double limit);
 
+/// Characters (UTF-8 code points) of `s`.
+size_t CharCount(const std::string& s);
+
 /// A Markdown table; '|' inside a cell is escaped, empty cells print "-".
+/// A table whose lines would be longer than kReportMaxLineChars is printed
+/// as several tables of consecutive columns, each repeating the first
+/// `key_columns` (the row's name), so that no line of report.md is wider
+/// than a screen.
 class MdTable {
  public:
-  explicit MdTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  explicit MdTable(std::vector<std::string> header, size_t key_columns = 1)
+      : header_(std::move(header)), key_columns_(key_columns) {}
   void Add(std::vector<std::string> row) {
     row.resize(header_.size());
     rows_.push_back(std::move(row));
@@ -41,8 +49,15 @@ class MdTable {
 
  private:
   std::vector<std::string> header_;
+  size_t key_columns_;
   std::vector<std::vector<std::string>> rows_;
 };
+
+/// Markdown with every prose line longer than `width` characters broken at
+/// spaces (list items continue indented under their text); tables, headings
+/// and fenced code are left as they are. Never breaks before a word that
+/// would start a Markdown block ("-", "1.", "#", "|", ...).
+std::string WrapMarkdown(const std::string& md, size_t width);
 
 }  // namespace thrustsched::bench
 

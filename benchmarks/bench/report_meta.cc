@@ -4,6 +4,7 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -42,28 +43,19 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
                    "working; the numbers below are not the benchmark. The full report is "
                    "docs/bench/report.md.\n\n"
                  : "");
-  md << "- Command: `" << m.command << "`\n";
-  md << "- Date (UTC): " << m.date_utc << "; total wall time " << Sec(m.total_wall_s) << " s\n";
-  md << "- Machine: " << m.machine << "; load average at start: " << m.load_average << "\n";
-  md << "- Source revision: " << m.git_revision << "; build type " << m.build_type << "\n";
-  md << "- Solver linked: " << m.solver << "; external programs: " << m.external << "\n";
-  md << "- Matrix solves: " << m.threads << " CBC thread(s), time limit " << G(m.time_limit_s)
-     << " s each, scenarios matching `" << m.scenario_glob << "`\n";
-  if (!m.earlier.empty()) {
-    md << "- **Partial re-run** (`--merge`): this command re-ran the cases matching `"
-       << m.cases_glob << "`; every other row comes from an earlier run:\n";
-    for (const EarlierRun& e : m.earlier) {
-      md << "  - " << e.date_utc << ", revision " << e.git_revision << ", cases `" << e.cases_glob
-         << "`, machine " << e.machine << ", load average at start " << e.load_average << ", "
-         << Sec(e.total_wall_s) << " s: `" << e.command << "`\n";
-    }
+  // One line: which runs made the rows lives in meta.json (command, date,
+  // revision, machine and load of each), not here.
+  std::string first = m.date_utc;
+  for (const EarlierRun& e : m.earlier) first = std::min(first, e.date_utc);
+  md << "Provenance: ";
+  if (m.earlier.empty()) {
+    md << "one run, " << m.date_utc.substr(0, 10) << ", revision " << m.git_revision;
+  } else {
+    md << m.earlier.size() + 1 << " runs merged (" << first.substr(0, 10) << " to "
+       << m.date_utc.substr(0, 10) << ")";
   }
-  md << "\n";
-  md << "Every run is a separate child process (fork), one after another, so that timings do "
-        "not compete with each other and the peak memory is per configuration. The machine is "
-        "shared with other jobs: wall-clock times vary by up to 2-3x between runs, which is why "
-        "the timing targets are medians of repeated runs with their spread.\n\n";
-  md << "Contents: [Targets](#targets) · [1. Accuracy](#1-accuracy) · "
+  md << "; commands, dates, revisions, machines and loads in [meta.json](meta.json).\n\n";
+  md << "Contents: [Summary](#summary) · [Targets](#targets) · [1. Accuracy](#1-accuracy) · "
         "[2. Cost per scheme](#2-cost-per-scheme) · "
         "[3. Formulations and encodings](#3-formulations-and-encodings) · "
         "[4. Scaling](#4-scaling) · [5. Operational constraints](#5-operational-constraints) · "

@@ -8,6 +8,7 @@
 #define THRUSTSCHED_BENCHMARKS_BENCH_REPORT_SECTIONS_H_
 
 #include <ostream>
+#include <vector>
 
 #include "benchmarks/bench/reference_figures.h"
 #include "benchmarks/bench/report.h"
@@ -16,8 +17,16 @@
 
 namespace thrustsched::bench::report_internal {
 
-/// Title, run metadata and contents (report_meta.cc).
+/// Title, one line of provenance (the rest is in meta.json) and contents (report_meta.cc).
 void WriteHeader(std::ostream& md, const ReportMeta& m);
+/// "## Summary": one row per performance target (report_summary.cc).
+void WriteSummary(std::ostream& md, const Index& idx, const std::vector<Row>& rows,
+                  const ReportMeta& m, const BenchReference& ref);
+/// The discretise/build cases of the 7-day GEO grid at 5 min, one per scheme.
+std::vector<const Group*> WeekGridCostGroups(const Index& idx);
+/// Wall seconds of the complete nominal year (year_anzel4_fixed) among the
+/// runs of m.year_results_dir; NaN when there is none.
+double NominalYearWallS(const ReportMeta& m);
 /// "## Targets": discretise/build and solve targets, medians with spread.
 void WriteTargets(std::ostream& md, const Index& idx, const ReportMeta& m,
                   const BenchReference& ref, Plotter* plot);

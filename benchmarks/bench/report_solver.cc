@@ -1,20 +1,25 @@
 #include "benchmarks/bench/report_solver.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "benchmarks/bench/matrix.h"
+#include "benchmarks/bench/report.h"
 #include "benchmarks/bench/report_format.h"
 
 namespace thrustsched::bench {
 namespace {
 
-// The arms of one case: rows of "<id>-search", "<id>-previous" (the
-// previous release's search), "<id>-lazy-lp-unpresolved" (the search with
-// the lazy rows' first LP unpresolved) and "<id>-cbc" (the first release's
-// path).
+// The arms of one case: rows of "<id>-search" (this release), "<id>-previous"
+// (the search with one switch off, named by the `variant` column),
+// "<id>-lazy-lp-unpresolved" (the search with the lazy rows' first LP
+// unpresolved) and "<id>-cbc" (CBC alone on the whole MILP).
 struct Pair {
   std::string id;
   std::vector<const Row*> search, previous, unpresolved, cbc;
@@ -104,7 +109,8 @@ std::string PerArm(const std::vector<const std::vector<const Row*>*>& arms, cons
 void WriteLazyLpAblation(std::ostream& md, const std::vector<Pair>& pairs) {
   md << "### 8.1 Ablation: the lazy rows' first LP without presolve\n\n";
   MdTable t({"case", "measure", "default (s)", "unpresolved (s)", "default / unpresolved",
-             "objective (default / unpresolved)", "final gap (default / unpresolved)"});
+             "objective (default / unpresolved)", "final gap (default / unpresolved)"},
+            2);
   double log_sum = 0.0;
   int finite_pairs = 0;
   for (const Pair& p : pairs) {
@@ -123,7 +129,7 @@ void WriteLazyLpAblation(std::ostream& md, const std::vector<Pair>& pairs) {
       } else if (std::isfinite(on) && on > 0.0) {
         ratio = "< " + G(on / limit, 3) + "x";
       }
-      t.Add({p.id, m.name, Sec(on), Sec(off), ratio,
+      t.Add({SolverCaseShortId(p.id), m.name, Sec(on), Sec(off), ratio,
              PerArm({&p.search, &p.unpresolved}, "objective", false),
              PerArm({&p.search, &p.unpresolved}, "gap", true)});
     }
@@ -145,70 +151,117 @@ void WriteLazyLpAblation(std::ostream& md, const std::vector<Pair>& pairs) {
   }
 }
 
+// The search's steps (column search_steps, " | "-separated), one per line.
+std::string StepLines(const std::string& steps) {
+  std::string out;
+  size_t pos = 0;
+  while (pos <= steps.size()) {
+    size_t end = steps.find(" | ", pos);
+    if (end == std::string::npos) end = steps.size();
+    std::string step = steps.substr(pos, end - pos);
+    if (step.size() > kReportMaxLineChars) {  // a tree's LPs: one per line
+      for (size_t at = step.find("; "); at != std::string::npos; at = step.find("; ", at + 4)) {
+        step.replace(at, 2, ";\n  ");
+      }
+    }
+    out += step + "\n";
+    pos = end + 3;
+  }
+  return out;
+}
+
+// DIR/logs/<case id>.log for each arm with steps: every repeat, one step per
+// line. Returns the search arm's log name per case ("" when it has no steps).
+std::map<std::string, std::string> WriteStepLogs(const std::vector<Pair>& pairs,
+                                                 const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path logs = fs::path(dir) / "logs";
+  if (fs::is_directory(logs)) {
+    for (const auto& e : fs::directory_iterator(logs)) {
+      if (e.is_regular_file() && e.path().extension() == ".log") fs::remove(e.path());
+    }
+  }
+  std::map<std::string, std::string> search_logs;
+  for (const Pair& p : pairs) {
+    for (const std::vector<const Row*>* arm : {&p.search, &p.previous, &p.unpresolved, &p.cbc}) {
+      std::string text;
+      for (const Row* r : *arm) {
+        if (r->Get("search_steps").empty()) continue;
+        text += "## " + r->Get("case_id") + ", repeat " + r->Get("repeat") + " (" +
+                r->Get("variant") + "): " + r->Get("status") + ", objective " +
+                r->Get("objective") + ", gap " + Pct(r->Num("gap")) + ", " +
+                Sec(r->Num("solve_s")) + " s\n" + StepLines(r->Get("search_steps")) + "\n";
+      }
+      if (text.empty()) continue;
+      const std::string id = arm->front()->Get("case_id");
+      fs::create_directories(logs);
+      const fs::path file = logs / (id + ".log");
+      std::ofstream out(file);
+      out << "# The steps of the schedule search on " << id
+          << ", one per line (results.csv, column search_steps)\n\n"
+          << text;
+      if (!out) throw std::runtime_error("cannot write " + file.string());
+      if (arm == &p.search) search_logs[p.id] = "logs/" + id + ".log";
+    }
+  }
+  return search_logs;
+}
+
 }  // namespace
 
-void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
+std::string SolverCaseShortId(const std::string& case_id) {
+  const std::string prefix = std::string(kSectionSolverSpeed) + "-";
+  return case_id.rfind(prefix, 0) == 0 ? case_id.substr(prefix.size()) : case_id;
+}
+
+std::vector<SolverTarget> SolverSpeedTargets(const std::vector<Row>& rows) {
+  std::vector<SolverTarget> out;
+  for (const Pair& p : Pairs(rows)) {
+    if (p.search.empty()) continue;
+    const Row& spec = *p.search.front();
+    for (const Measure& m : MeasuresOf(spec)) {
+      out.push_back(
+          {p.id, m.name, m.column.empty(), spec.Num(m.target_column), ArmValue(p.search, m, spec)});
+    }
+  }
+  return out;
+}
+
+void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows, const std::string& dir) {
   md << "## 8. Solver speed: the search against the previous release and CBC alone\n\n";
   const std::vector<Pair> pairs = Pairs(rows);
+  const std::map<std::string, std::string> logs = WriteStepLogs(pairs, dir);
   if (pairs.empty()) {
     md << "Not run.\n\n";
     return;
   }
-  md << "Each case is solved by every path in the same run, one after the other, so machine "
-        "load acts on all: `search` is what `thrustsched solve` does (interior-point LP bound "
-        "from safe duals, MILPs restricted to the slots the relaxation uses and solved by row "
-        "generation over their dense window rows, local improvement over wider nets, "
-        "reduced-cost fixing, CBC on the whole MILP only when needed; "
-        "`transcription/search.h`), `previous` is this search as the previous release ran "
-        "it: the first LP of each restricted MILP's row generation with the dense rows its "
-        "column bounds imply, which CLP's presolve then removes "
-        "(`SearchOptions::lazy_rows_skip_implied` off; rows of the weeks not re-run since come "
-        "from earlier runs, whose `previous` was an earlier release (the `variant` column says "
-        "which): where the incumbent is one step above the bound after the lowest leaf's "
-        "restricted MILP, no restricted MILP of the tree's other leaves at the bound "
-        "(`SearchOptions::other_leaf_nets` 0); before it, step 4's exact MILP and "
-        "step 4a's first improvement MILP before step 4b's tree also where step 2's incumbent "
-        "is already one step above the bound (`SearchOptions::tree_first_at_one_step`), with "
-        "glibc's malloc thresholds (`milp/allocator.h`); before it, step 4d (the tree again "
-        "where the incumbent is one step above the bound, splitting the number of slots of "
-        "each fired thruster in a half, quarter, ... of the horizon) only after step 4c's "
-        "exchange, not also between step 4b's tree and its leaves' MILPs "
-        "(`SearchOptions::windows_before_leaves`); before it, without step "
-        "4d (`SearchOptions::total_branching_window_levels` 0), its `search` arm then "
-        "splitting no window on those weeks; before it, step "
-        "2's restricted MILP widened at most twice, not until a net holds a schedule, "
-        "frees every slot or exceeds 6000 slots (`SearchOptions::max_widenings`), and without "
-        "the MILP restricted to every slot of the thrusters the relaxation fires after the "
-        "first two widenings (`SearchOptions::fired_thrusters_net`); before it, step "
-        "4's exact MILP before the tree with all the time left, not 30 % "
-        "(`SearchOptions::exact_time_share`), and the tree's leaves without a pivot limit "
-        "(`SearchOptions::total_branching_leaf_pivot_limit`); before it, step 4a's improvement "
-        "MILPs with a quarter of the time left, not a tenth; before it, the root basis of its "
-        "branching on "
-        "thruster "
-        "totals by a second interior point and its crossover, not by the crossover from the "
-        "relaxation's interior point in its LP session, and the exchange's MILPs with a quarter "
-        "of the time left, not half; before it, without the exchange along axes (the MILP over "
-        "every slot of one "
-        "axis' thrusters and the incumbent's slots of the others); before it, each leaf LP of its "
-        "branching on "
-        "thruster totals (`transcription/total_branching.h`) an interior point from scratch, "
-        "two side by side, not a dual simplex from its parent's basis in one LP session, and "
-        "its MILPs that only look for schedules free to use all the time left, not a quarter "
-        "of it; before it, the "
-        "tree's budget a count of LPs whatever their size, not a budget of LP work; before it, "
-        "the tree with hard bounds on the totals in its leaves' LPs, not elastic ones; before "
-        "it, "
-        "the tree on single thrusters only, not first the summed total of +N and -N; before "
-        "it, the search without that branching; before it, for the Hill-Clohessy-Wiltshire rows "
-        "the LP on the whole MILP without leaving out "
-        "the blocks of thrusters an optimal schedule can leave off, `transcription/dormant.h`, "
-        "for the GEO weeks the search before row generation), `cbc` is the first release's "
-        "path (`--no-search`). Medians over the repeats; \"not reached\" counts as infinite; "
-        "the ratios are the other path's time / this release's (> 1: faster now).\n\n";
-  MdTable t({"case", "measure", "target (s)", "this release", "previous release", "ratio",
-             "first release", "ratio", "verdict (this release)",
-             "objective (this / previous / first)", "final gap (this / previous / first)"});
+  md << "Each case is solved by every arm in the same run, one after the other, so machine "
+        "load acts on all. `search` is this release, what `thrustsched solve` does "
+        "(`transcription/search.h`); `previous` is the same search with one named switch off "
+        "(below, from the `variant` column of its rows); `cbc` is CBC alone on the whole MILP "
+        "(`--no-search`). Medians over the repeats; \"not reached\" counts as infinite; a ratio "
+        "is the other arm's time / the search's (> 1: the search is faster).\n\n";
+  // What `previous` is, from its rows (a merged file can hold several).
+  std::vector<std::pair<std::string, int>> previous_variants;
+  for (const Pair& p : pairs) {
+    for (const Row* r : p.previous) {
+      auto it = std::find_if(previous_variants.begin(), previous_variants.end(),
+                             [&](const auto& v) { return v.first == r->Get("variant"); });
+      if (it == previous_variants.end()) {
+        previous_variants.push_back({r->Get("variant"), 1});
+      } else {
+        ++it->second;
+      }
+    }
+  }
+  for (const auto& [variant, n] : previous_variants) {
+    md << "- `previous` in " << n << " rows: " << variant << "\n";
+  }
+  if (!previous_variants.empty()) md << "\n";
+  MdTable t({"case", "measure", "target (s)", "search", "previous", "ratio", "CBC alone", "ratio",
+             "verdict (search)", "objective (search / previous / CBC)",
+             "final gap (search / previous / CBC)"},
+            2);
   for (const Pair& p : pairs) {
     if (p.search.empty()) continue;
     const Row& spec = *p.search.front();
@@ -222,19 +275,23 @@ void WriteSolverSpeed(std::ostream& md, const std::vector<Row>& rows) {
                                   : G(before / now, 3) + "x";
       };
       const double previous = value(p.previous), first = value(p.cbc);
-      t.Add({p.id, m.name, G(limit, 3), Sec(now), Sec(previous), ratio(previous), Sec(first),
-             ratio(first), Verdict(now, limit),
+      t.Add({SolverCaseShortId(p.id), m.name, G(limit, 3), Sec(now), Sec(previous), ratio(previous),
+             Sec(first), ratio(first), Verdict(now, limit),
              PerArm({&p.search, &p.previous, &p.cbc}, "objective", false),
              PerArm({&p.search, &p.previous, &p.cbc}, "gap", true)});
     }
   }
-  md << t.Str() << "\n";
-  md << "What the search did (first repeat of each case):\n\n";
-  for (const Pair& p : pairs) {
-    if (p.search.empty()) continue;
-    md << "- `" << p.id << "`: " << p.search.front()->Get("search_steps") << "\n";
+  md << "Case ids without their `solver_speed-` prefix.\n\n" << t.Str() << "\n";
+  if (!logs.empty()) {
+    md << "What the search did, step by step, every repeat (one log per case, from the "
+          "`search_steps` column of results.csv):\n\n";
+    for (const Pair& p : pairs) {
+      const auto it = logs.find(p.id);
+      if (it == logs.end()) continue;
+      md << "- [" << SolverCaseShortId(p.id) << "](" << it->second << ")\n";
+    }
+    md << "\n";
   }
-  md << "\n";
   WriteLazyLpAblation(md, pairs);
 }
 
