@@ -16,6 +16,7 @@ from ._problem import BuiltSchedule, ScheduleProblem
 from ._results import CheckResult, SolveResult
 from ._scenario import PathLike, as_scenario
 
+
 def solve(problem: Any, *, time_limit_s: Optional[float] = None, relative_gap: Optional[float] = None,
           threads: Optional[int] = None, max_nodes: Optional[int] = None, search: Optional[bool] = None,
           diagnosis_time_limit_s: Optional[float] = None, log_level: Optional[int] = None,
