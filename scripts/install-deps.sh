@@ -16,6 +16,8 @@ PACKAGES=(
   coinor-cbc glpk-utils python3-scipy gnuplot-nox
   # the Python package (python/) and its tests
   pybind11-dev python3-dev python3-numpy python3-pandas python3-matplotlib python3-pytest
+  # `pip install .` into a virtual environment, offline (pyproject.toml, setup.py)
+  python3-setuptools python3-wheel python3-pip python3-venv
   # campaigns (thrustsched-sweep) on Dask
   python3-distributed
   # the test that opens report.html in a real browser (headless)

@@ -2,7 +2,7 @@
 import thrustsched as ts
 from thrustsched import milp
 
-scn = ts.Scenario.load("data/scenarios/hcw_table41_1d.json")
+scn = ts.Scenario.load(ts.data_path("scenarios/hcw_table41_1d.json"))
 b = ts.build(scn)                                   # the MILP the CLI solves
 first = b.solve()
 print("as built:      ", first.schedule.to_string(index=False, header=False))

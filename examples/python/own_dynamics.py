@@ -17,7 +17,7 @@ problem = ts.ScheduleProblem(
     rules={"min_burn_s": 300, "min_off_same_s": 1200, "min_gap_other_s": 300},
     state_scale=hcw.state_scale, state_names=hcw.state_names, output_names=hcw.output_names)
 mine = ts.solve(problem)
-ours = ts.solve(ts.Scenario.load("data/scenarios/hcw_table41_1d.json"))
+ours = ts.solve(ts.Scenario.load(ts.data_path("scenarios/hcw_table41_1d.json")))
 print(f"arrays: {mine.status} {mine.objective:.9g} m/s; scenario: {ours.status} {ours.objective:.9g} m/s")
 print(mine.schedule.to_string(index=False))
 print("final state (discrete model):", np.round(mine.states[-1], 3))

@@ -2,7 +2,7 @@
 import sys
 import thrustsched as ts
 
-scn = ts.Scenario.load("data/scenarios/hcw_table41_2d.json")
+scn = ts.Scenario.load(ts.data_path("scenarios/hcw_table41_2d.json"))  # shipped; any cwd
 scn["solver"]["time_limit_s"] = 120                     # plain dict access, the JSON's fields
 res = ts.solve(scn, threads=1)                          # GIL released while CBC runs
 print(f"{res.status}: {res.objective:.6g} m/s, gap {res.gap:.2g}, "

@@ -9,7 +9,7 @@ import thrustsched as ts
 
 out = sys.argv[1] if len(sys.argv) > 1 else "out/python_example"
 os.makedirs(out, exist_ok=True)
-scn = ts.Scenario.load("data/scenarios/hcw_table41_1d.json")
+scn = ts.Scenario.load(ts.data_path("scenarios/hcw_table41_1d.json"))
 res = ts.solve(scn)
 print(res)                                  # status, objective, gap, burns, check
 print(res.schedule.to_string(index=False))  # thruster, start_s, end_s, duration_s

@@ -2,7 +2,7 @@
 from concurrent.futures import ThreadPoolExecutor
 import thrustsched as ts
 
-scn = ts.Scenario.load("data/scenarios/hcw_table41_2d.json")
+scn = ts.Scenario.load(ts.data_path("scenarios/hcw_table41_2d.json"))
 variants = []
 for half_width_m in (36800, 25000):
     s = scn.copy()

@@ -4,7 +4,7 @@ import sys
 import thrustsched as ts
 
 out = sys.argv[1] if len(sys.argv) > 1 else "out/python_year"
-scn = ts.Scenario.load("data/scenarios/year/year_test_4cycles.json")  # 1-day GEO cycles
+scn = ts.Scenario.load(ts.data_path("scenarios/year/year_test_4cycles.json"))  # 1-day GEO cycles
 scn["horizon"]["step_s"] = 600                        # a 10-minute grid: a quick demo
 scn["long_horizon"]["duration_s"] = 2 * 86400         # two cycles
 run = ts.simulate(scn, cycles=1, out=out, plots=False)  # the first cycle (as if Ctrl-C stopped it)...

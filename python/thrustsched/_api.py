@@ -8,50 +8,13 @@
 from __future__ import annotations
 
 import os
-import sys
-from typing import Any, Callable, Dict, Optional, Sequence, Union
-
-import numpy as np
+from typing import Any, Dict, Optional
 
 from . import _core
+from ._arguments import ProgressArg, progress_callback, schedule_columns
+from ._problem import BuiltSchedule, ScheduleProblem
 from ._results import CheckResult, SolveResult
-from ._scenario import PathLike, Scenario, as_scenario
-
-ProgressArg = Union[None, bool, Callable[[Dict[str, Any]], Any]]
-
-
-def _progress_printer(delay_s: float = 3.0) -> Callable[[Dict[str, Any]], None]:
-    """Plain progress lines on stderr once the solve has run for delay_s (the CLI's)."""
-
-    def show(d: Dict[str, Any]) -> None:
-        phase = d.get("phase")
-        if phase in ("announce", "stopping"):
-            print(f"thrustsched: {d.get('message')}", file=sys.stderr, flush=True)
-            return
-        t = d.get("wall_seconds", 0.0)
-        if t < delay_s:
-            return
-        if phase == "root_lp":
-            print(f"  [{t:.2f} s] root LP relaxation: {d.get('lp_iterations')} iterations", file=sys.stderr,
-                  flush=True)
-            return
-        gap = d.get("gap")
-        gap_s = "n/a" if gap is None or gap != gap else f"{100 * gap:.3g}%"
-        print(f"  [{t:.2f} s] {phase}: incumbent {d.get('objective'):.6g}, bound {d.get('best_bound'):.6g}, "
-              f"gap {gap_s}, {d.get('nodes')} nodes{' (new incumbent)' if d.get('new_incumbent') else ''}",
-              file=sys.stderr, flush=True)
-
-    return show
-
-
-def _callback(progress: ProgressArg):
-    if progress is None or progress is False:
-        return None
-    if progress is True:
-        return _progress_printer()
-    if callable(progress):
-        return progress
-    raise TypeError("progress: expected None, True or a callable taking a dict")
+from ._scenario import PathLike, as_scenario
 
 
 def solve(problem: Any, *, time_limit_s: Optional[float] = None, relative_gap: Optional[float] = None,
@@ -85,43 +48,23 @@ def solve(problem: Any, *, time_limit_s: Optional[float] = None, relative_gap: O
     exceptions. A bad scenario raises ScenarioError (a ValueError) with the
     CLI's message.
     """
-    from ._problem import BuiltSchedule, ScheduleProblem
-
+    if isinstance(problem, (BuiltSchedule, ScheduleProblem)):
+        if isinstance(problem, BuiltSchedule) and (scheme or formulation or encoding):
+            raise ValueError("scheme, formulation, encoding: the schedule is already built")
+        extra = {} if isinstance(problem, BuiltSchedule) else dict(scheme=scheme, formulation=formulation,
+                                                                    encoding=encoding)
+        return problem.solve(time_limit_s=time_limit_s, relative_gap=relative_gap, threads=threads,
+                             max_nodes=max_nodes, search=search, diagnosis_time_limit_s=diagnosis_time_limit_s,
+                             log_level=log_level, random_seed=random_seed, check=check, progress=progress,
+                             progress_interval_s=progress_interval_s, **extra)
     settings = dict(time_limit_s=time_limit_s, relative_gap=relative_gap, threads=threads, max_nodes=max_nodes,
                     search=search, log_level=log_level, random_seed=random_seed, check=check,
-                    progress_interval_s=progress_interval_s, callback=_callback(progress))
-    if isinstance(problem, BuiltSchedule):
-        if scheme or formulation or encoding:
-            raise ValueError("scheme, formulation, encoding: the schedule is already built")
-        return problem.solve(diagnosis_time_limit_s=diagnosis_time_limit_s, **settings)
-    if isinstance(problem, ScheduleProblem):
-        if scheme:
-            raise ValueError("scheme: an array problem is already discretised")
-        if diagnosis_time_limit_s is not None:
-            raise ValueError("diagnosis_time_limit_s: not used by array problems")
-        out = problem._core.solve(formulation=formulation, encoding=encoding, **settings)
-        return SolveResult(out, None, problem._core)
+                    progress_interval_s=progress_interval_s, callback=progress_callback(progress))
     scn = as_scenario(problem)
     parsed = scn.parsed()
     out = _core.solve_scenario(parsed, diagnosis_time_limit_s=diagnosis_time_limit_s, scheme=scheme,
                                formulation=formulation, encoding=encoding, **settings)
     return SolveResult(out, parsed)
-
-
-def _schedule_columns(schedule: Any, impulsive: bool):
-    """(thrusters, a, b) from a DataFrame, a SolveResult, a list of dicts or a dict of columns."""
-    if isinstance(schedule, SolveResult):
-        schedule = schedule.schedule
-    keys = ("thruster", "node", "delta_v_m_s") if impulsive else ("thruster", "start_s", "end_s")
-    if isinstance(schedule, (list, tuple)):
-        cols = {k: [row[k] for row in schedule] for k in keys}
-    else:
-        try:
-            cols = {k: schedule[k] for k in keys}
-        except KeyError as e:
-            raise ValueError(f"schedule: missing column {e.args[0]!r} (needs {', '.join(keys)})") from None
-    return ([str(t) for t in cols[keys[0]]], np.asarray(cols[keys[1]], dtype=float).tolist(),
-            np.asarray(cols[keys[2]], dtype=float).tolist())
 
 
 def check(problem: Any, schedule: Any) -> CheckResult:
@@ -135,15 +78,8 @@ def check(problem: Any, schedule: Any) -> CheckResult:
     re-propagation, the nonlinear replay for GEO; for array problems: the
     rules and the arrays propagated through the on-off pattern.
     """
-    from ._problem import ScheduleProblem
-
     if isinstance(problem, ScheduleProblem):
-        if isinstance(schedule, (str, os.PathLike)):
-            import pandas as pd
-
-            schedule = pd.read_csv(os.fspath(schedule))
-        names, a, b = _schedule_columns(schedule, False)
-        return CheckResult(problem._core.check(names, a, b), None, problem._core)
+        return problem.check(schedule)
     scn = as_scenario(problem)
     parsed = scn.parsed()
     if isinstance(schedule, (str, os.PathLike)):
@@ -153,7 +89,7 @@ def check(problem: Any, schedule: Any) -> CheckResult:
         else:
             names, a, b = _core.read_schedule_csv(parsed, path)
     else:
-        names, a, b = _schedule_columns(schedule, parsed.impulsive)
+        names, a, b = schedule_columns(schedule, parsed.impulsive)
     if parsed.impulsive:
         return CheckResult(_core.check_scenario_impulses(parsed, names, a, b), parsed)
     return CheckResult(_core.check_scenario(parsed, names, a, b), parsed)
@@ -166,8 +102,6 @@ def export(problem: Any, path: PathLike, *, obfuscate_names: bool = False, schem
     objective in m/s (kg for "propellant"), minimisation. Returns the model's
     size (n_binaries, n_columns, n_rows, n_nonzeros, ...). A BuiltSchedule
     (with your rows) is written by its own ``write``."""
-    from ._problem import BuiltSchedule
-
     if isinstance(problem, BuiltSchedule):
         problem.write(path, obfuscate_names=obfuscate_names)
         return {"path": os.fspath(path), "n_rows": problem.num_rows, "n_columns": problem.num_columns}
@@ -180,12 +114,8 @@ def build(problem: Any, *, scheme: Optional[str] = None, formulation: Optional[s
           encoding: Optional[str] = None):
     """The schedule MILP of a scenario (or ScheduleProblem), to extend with
     your own variables and rows (see :class:`BuiltSchedule`) and solve."""
-    from ._problem import BuiltSchedule, ScheduleProblem
-
     if isinstance(problem, ScheduleProblem):
-        if scheme:
-            raise ValueError("scheme: an array problem is already discretised")
-        return BuiltSchedule(problem._core.build(formulation, encoding), None, problem._core)
+        return problem.build(scheme=scheme, formulation=formulation, encoding=encoding)
     scn = as_scenario(problem)
     parsed = scn.parsed()
     return BuiltSchedule(_core.build_scenario(parsed, scheme, formulation, encoding), parsed, None)

@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Dict, Mapping, Optional, Sequence, Union
+from typing import Any, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _core, milp
-from ._results import SolveResult
+from ._arguments import ProgressArg, progress_callback, schedule_columns
+from ._results import CheckResult, SolveResult
 
 ThrusterSet = _core.dynamics.ThrusterSet
 
@@ -119,23 +120,38 @@ class ScheduleProblem:
     state_names = property(lambda self: list(self._core.state_names))
     output_names = property(lambda self: list(self._core.output_names))
 
-    def solve(self, **kwargs) -> SolveResult:
-        """thrustsched.solve(self, **kwargs)."""
-        from ._api import solve
+    def solve(self, *, time_limit_s=None, relative_gap=None, threads=None, max_nodes=None, search=None,
+              log_level=None, random_seed=None, formulation=None, encoding=None, check=True,
+              progress: ProgressArg = None, progress_interval_s=1.0, scheme=None,
+              diagnosis_time_limit_s=None) -> SolveResult:
+        """Builds, solves and checks (the keywords of thrustsched.solve)."""
+        if scheme:
+            raise ValueError("scheme: an array problem is already discretised")
+        if diagnosis_time_limit_s is not None:
+            raise ValueError("diagnosis_time_limit_s: not used by array problems")
+        out = self._core.solve(formulation=formulation, encoding=encoding, time_limit_s=time_limit_s,
+                               relative_gap=relative_gap, threads=threads, max_nodes=max_nodes, search=search,
+                               log_level=log_level, random_seed=random_seed, check=check,
+                               progress_interval_s=progress_interval_s, callback=progress_callback(progress))
+        return SolveResult(out, None, self._core)
 
-        return solve(self, **kwargs)
+    def check(self, schedule) -> CheckResult:
+        """The checker on a schedule (as thrustsched.check): the rules in
+        continuous time, the window at the grid nodes through the arrays.
+        schedule: a DataFrame (thruster, start_s, end_s), a list of dicts, a
+        SolveResult or a schedule.csv path."""
+        if isinstance(schedule, (str, os.PathLike)):
+            import pandas as pd
 
-    def check(self, schedule):
-        """thrustsched.check(self, schedule)."""
-        from ._api import check
+            schedule = pd.read_csv(os.fspath(schedule))
+        names, a, b = schedule_columns(schedule, False)
+        return CheckResult(self._core.check(names, a, b), None, self._core)
 
-        return check(self, schedule)
-
-    def build(self, **kwargs) -> "BuiltSchedule":
-        """thrustsched.build(self, **kwargs)."""
-        from ._api import build
-
-        return build(self, **kwargs)
+    def build(self, *, scheme=None, formulation=None, encoding=None) -> "BuiltSchedule":
+        """The schedule MILP, to extend and solve (as thrustsched.build)."""
+        if scheme:
+            raise ValueError("scheme: an array problem is already discretised")
+        return BuiltSchedule(self._core.build(formulation, encoding), None, self._core)
 
     def __repr__(self) -> str:
         return (f"ScheduleProblem({self.num_intervals} intervals, {self.num_states} states, "
@@ -236,9 +252,7 @@ class BuiltSchedule:
               diagnosis_time_limit_s=None, log_level=None, random_seed=None, check=True, progress=None,
               progress_interval_s=1.0, callback=None) -> SolveResult:
         """Solves (see thrustsched.solve for the keywords)."""
-        from ._api import _callback
-
-        cb = callback if callback is not None else _callback(progress)
+        cb = callback if callback is not None else progress_callback(progress)
         out = self._core.solve(time_limit_s, relative_gap, threads, max_nodes, search, diagnosis_time_limit_s,
                                log_level, random_seed, check, progress_interval_s, cb)
         return SolveResult(out, self._info, self._problem)

@@ -4,7 +4,8 @@
     THRUSTSCHED_CLI          the thrustsched executable (the independent reference)
     PYTHONPATH               build/python (the built package)
 
-Every test runs in the source tree (the examples use data/scenarios/... paths).
+Every test runs in the source tree (its paths are data/scenarios/...); the
+examples run in a temporary folder (they find the data with ts.data_path).
 """
 import json
 import os
@@ -39,12 +40,12 @@ def run_cli(*args, timeout=300):
                           cwd=SOURCE_DIR)
 
 
-def run_python(script, *args, timeout=300, env=None):
-    """Runs a Python script with this interpreter and PYTHONPATH."""
+def run_python(script, *args, timeout=300, env=None, cwd=SOURCE_DIR):
+    """Runs a Python script with this interpreter and PYTHONPATH (in the source tree unless cwd)."""
     e = dict(os.environ)
     e.update(env or {})
     return subprocess.run([sys.executable, str(script), *map(str, args)], capture_output=True, text=True,
-                          timeout=timeout, cwd=SOURCE_DIR, env=e)
+                          timeout=timeout, cwd=cwd, env=e)
 
 
 def read_json(path):

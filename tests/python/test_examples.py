@@ -1,4 +1,7 @@
-"""Every example of examples/python runs and prints what it promises.
+"""Every example of examples/python runs and prints what it promises, from
+a temporary folder (neither the source tree nor the examples' folder): the
+examples find the shipped scenarios through ts.data_path, not the working
+directory.
 
     pytest tests/python/test_examples.py
 """
@@ -11,8 +14,8 @@ from conftest import SLOT_M_S, SOURCE_DIR, TABLE41_2D_M_S, run_python
 EXAMPLES = SOURCE_DIR / "examples" / "python"
 
 
-def _run(name, *args):
-    r = run_python(EXAMPLES / name, *args)
+def _run(cwd, name, *args):
+    r = run_python(EXAMPLES / name, *args, cwd=cwd)
     assert r.returncode == 0, r.stdout + r.stderr
     return r.stdout
 
@@ -24,34 +27,36 @@ def test_every_example_has_a_test():
 
 
 def test_quickstart(tmp_path):
-    out = _run("quickstart.py", tmp_path / "two_days.mps")
+    out = _run(tmp_path, "quickstart.py")
+    # The line README.md quotes ("It prints ..."), with the Table 4.1 value.
     assert out.splitlines()[0] == f"optimal: {TABLE41_2D_M_S:g} m/s, gap 0, 1 burns; checker ok"
-    assert (tmp_path / "two_days.mps").read_text().startswith("*")
+    assert (tmp_path / "two_days.mps").read_text().startswith("*")  # default: in the working directory
 
 
 def test_results_and_plots(tmp_path):
-    out = _run("results_and_plots.py", tmp_path)
+    out = _run(tmp_path, "results_and_plots.py", "plots")
+    tmp_path = tmp_path / "plots"
     assert "status='optimal'" in out and "objective=0.016391753" in out
     assert "FAILED" in out and "min_burn" in out
     for name in ("window.png", "timeline.png", "outputs.png", "one_day.lp"):
         assert (tmp_path / name).stat().st_size > 0, name
 
 
-def test_errors():
-    out = _run("errors.py")
+def test_errors(tmp_path):
+    out = _run(tmp_path, "errors.py")
     assert "bad input: scenario.horizon.step_s: 7 s does not divide" in out
     assert "status: infeasible | schedule rows: 0 | check: None" in out
 
 
-def test_own_dynamics():
-    out = _run("own_dynamics.py")
+def test_own_dynamics(tmp_path):
+    out = _run(tmp_path, "own_dynamics.py")
     m = re.search(r"arrays: optimal ([0-9.]+) m/s; scenario: optimal ([0-9.]+) m/s", out)
     assert m and m.group(1) == m.group(2)
     assert float(m.group(1)) == pytest.approx(SLOT_M_S, rel=1e-8)
 
 
-def test_add_constraints():
-    out = _run("add_constraints.py")
+def test_add_constraints(tmp_path):
+    out = _run(tmp_path, "add_constraints.py")
     lines = out.splitlines()
     thr, start, end, duration = lines[0].split()[2:]
     assert float(end) - float(start) == float(duration) == 300  # Table 4.1: one slot
@@ -63,7 +68,7 @@ def test_add_constraints():
     assert "knapsack: optimal 7.0 [1.0, 1.0, 0.0]" in out
 
 
-def test_threads():
-    out = _run("threads.py")
+def test_threads(tmp_path):
+    out = _run(tmp_path, "threads.py")
     assert f"half width 36800 m: optimal, {TABLE41_2D_M_S:g} m/s" in out
     assert "half width 25000 m: optimal" in out

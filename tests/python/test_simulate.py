@@ -14,8 +14,9 @@ TIMING = ["solve_s", "first_solution_s", "wall_s", "cpu_s"]
 
 def test_example_run_with_resume_equals_the_cli(tmp_path):
     # The example (examples/python/year.py) makes the Python run: one cycle,
-    # then the rest resumed from the checkpoint.
-    r = run_python(SOURCE_DIR / "examples" / "python" / "year.py", tmp_path / "py")
+    # then the rest resumed from the checkpoint; run from a temporary folder
+    # (it finds its scenario with ts.data_path) with a relative out folder.
+    r = run_python(SOURCE_DIR / "examples" / "python" / "year.py", "py", cwd=tmp_path)
     assert r.returncode == 0, r.stdout + r.stderr
     assert "total " in r.stdout and "over 2 days" in r.stdout
     assert "cycle 2 (2/2)" in r.stderr or "2/2" in r.stderr  # progress: plain lines or tqdm
