@@ -182,14 +182,24 @@ ChainBounds ChainImpliedBounds(const LpData& lp, const EqualityChain& chain) {
   return out;
 }
 
-void TightenToChainBounds(LpData* lp, const EqualityChain& chain) {
+void TightenToChainBounds(LpData* lp, const EqualityChain& chain, double widen_fraction) {
+  if (!(widen_fraction >= 0.0) || !std::isfinite(widen_fraction)) {
+    throw std::invalid_argument(
+        "TightenToChainBounds: widen_fraction must be finite and >= 0, got " +
+        std::to_string(widen_fraction));
+  }
   const ChainBounds b = ChainImpliedBounds(*lp, chain);
   for (size_t j = 0; j < chain.blocks.size(); ++j) {
     for (size_t k = 0; k < chain.blocks[j].size(); ++k) {
       const int c = chain.blocks[j][k];
       if (lp->col_type[c] != VarType::kContinuous) continue;
-      const double lower = std::max(lp->col_lower[c], b.lower[j][static_cast<int>(k)]);
-      const double upper = std::min(lp->col_upper[c], b.upper[j][static_cast<int>(k)]);
+      const double lo = b.lower[j][static_cast<int>(k)], hi = b.upper[j][static_cast<int>(k)];
+      const bool finite = std::isfinite(lo) && std::isfinite(hi);
+      const double size =
+          std::max(std::isfinite(lo) ? std::abs(lo) : 0.0, std::isfinite(hi) ? std::abs(hi) : 0.0);
+      const double margin = widen_fraction * (finite ? hi - lo : 0.0) + 1e-3 * (1.0 + size);
+      const double lower = std::max(lp->col_lower[c], lo - margin);  // -inf stays -inf
+      const double upper = std::min(lp->col_upper[c], hi + margin);
       if (lower > upper) continue;  // infeasible model: its own bounds say so
       lp->col_lower[c] = lower;
       lp->col_upper[c] = upper;

@@ -5,7 +5,7 @@
 //   milp::EqualityChain chain;
 //   chain.blocks = {{x0a, x0b}, {x1a, x1b}, {x2a, x2b}};   // column indices
 //   chain.rows = {{r0a, r0b}, {r1a, r1b}};   // rows[j][k] defines blocks[j+1][k]
-//   milp::TightenToChainBounds(&lp, chain);  // free x1, x2 now boxed
+//   milp::TightenToChainBounds(&lp, chain);  // free x1, x2 now boxed (widened)
 //
 // Contract: rows[j][k] is an equality row of `lp` whose columns are
 // blocks[j+1][k] (nonzero coefficient), columns of blocks[j], and any other
@@ -26,11 +26,11 @@
 // wrapping effect) and can grow to 1e20 and beyond: GLPK 5.0's node
 // preprocessing (glpios02.c), which glpsol cannot switch off, sets those
 // widths as column bounds, and its dual simplex then declares feasible
-// subproblems infeasible. With the exact bounds here, propagation only
-// tightens what is already moderate.
+// subproblems infeasible. With bounds of the order of the reachable range,
+// propagation only tightens what is already moderate.
 //
-// Cost: O(N^2 n^2 m) for N rows per component, n components, m inputs per
-// step (a 2016-step week with 6 states and 4 thrusters: about 0.3 s).
+// Cost: O(N^2 n^2 m) for N steps, n components and m inputs per step (well
+// under a second for a week of 5-minute steps).
 #ifndef THRUSTSCHED_MILP_CHAIN_BOUNDS_H_
 #define THRUSTSCHED_MILP_CHAIN_BOUNDS_H_
 
@@ -67,11 +67,25 @@ inline constexpr double kChainBoundPadding = 1e-7;
 /// missing from its row, a column of another block in a row), naming the row.
 ChainBounds ChainImpliedBounds(const LpData& lp, const EqualityChain& chain);
 
-/// Intersects the bounds of the chain's columns with ChainImpliedBounds; a
-/// column whose own bounds do not meet the implied ones (a model that is
-/// infeasible anyway, e.g. an unreachable fixed terminal state) keeps its
-/// own. @throws as ChainImpliedBounds.
-void TightenToChainBounds(LpData* lp, const EqualityChain& chain);
+/// How far TightenToChainBounds sets a bound beyond the implied range
+/// [L, U]: widen_fraction (U - L) + 1e-3 (1 + max(|L|, |U|)) on each side.
+/// Exact bounds bind in the LP relaxation (a state at the extreme of its
+/// reachable range is a vertex of both), which changes the simplex path and
+/// the branching, and made glpsol's tree on the double integrator export
+/// more than twice as large as with free states (data/scenarios/README.md,
+/// section 7). Widened bounds lie strictly outside every point of the LP
+/// relaxation, never bind, and still keep a solver's propagation within a
+/// few times the reachable range.
+inline constexpr double kChainBoundWidening = 0.5;
+
+/// Intersects the bounds of the chain's continuous columns with
+/// ChainImpliedBounds widened by widen_fraction (kChainBoundWidening); a
+/// column whose own bounds do not meet them (a model that is infeasible
+/// anyway, e.g. an unreachable fixed terminal state) keeps its own.
+/// @throws as ChainImpliedBounds; std::invalid_argument if widen_fraction is
+/// negative or not finite.
+void TightenToChainBounds(LpData* lp, const EqualityChain& chain,
+                          double widen_fraction = kChainBoundWidening);
 
 }  // namespace thrustsched::milp
 

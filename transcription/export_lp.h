@@ -1,7 +1,8 @@
 // The MILP that `thrustsched export` (and `solve --export-mps/--export-lp`,
 // Python's ts.export) writes for other solvers: ScheduleMilp::lp() with every
 // state column of the sparse formulation boxed by the range the dynamics and
-// the input bounds imply (milp/chain_bounds.h).
+// the input bounds imply, widened by half its width so that the bounds never
+// bind (milp/chain_bounds.h).
 //
 //   const transcription::ScheduleMilp milp(problem, options);
 //   milp::WriteMpsFile("week.mps", transcription::ExportLp(milp));
@@ -15,10 +16,10 @@
 // The condensed formulation has no state columns: its lp() is returned as is.
 //
 // Why: free state columns chained by equality rows make a solver's bound
-// propagation blow up (GLPK 5.0's node preprocessing derives bounds of 1e20
-// and more, then declares feasible two- and three-day HCW models infeasible
-// or cannot solve their LP relaxation); thrustsched's own solve does not
-// need the bounds and is left as it is.
+// propagation blow up (GLPK 5.0's node preprocessing derives bounds beyond
+// 1e20, then declares feasible models infeasible; data/scenarios/README.md,
+// section 7); thrustsched's own solve does not need the bounds and is left
+// as it is.
 #ifndef THRUSTSCHED_TRANSCRIPTION_EXPORT_LP_H_
 #define THRUSTSCHED_TRANSCRIPTION_EXPORT_LP_H_
 

@@ -116,12 +116,24 @@ TEST(ChainBoundsTest, TighteningKeepsTheLpAndFixedColumns) {
   TightenToChainBounds(&tight, t.chain);
   EXPECT_EQ(tight.col_lower[t.chain.blocks[0][0]], 0.3);  // fixed start untouched
   EXPECT_EQ(tight.col_upper[t.chain.blocks[0][0]], 0.3);
+  const ChainBounds b = ChainImpliedBounds(t.lp, t.chain);
   for (int j = 1; j <= 4; ++j) {
-    for (int c : t.chain.blocks[j]) {
-      EXPECT_TRUE(std::isfinite(tight.col_lower[c]) && std::isfinite(tight.col_upper[c]));
+    for (int k = 0; k < 2; ++k) {
+      const int c = t.chain.blocks[j][k];
       EXPECT_FALSE(std::isfinite(t.lp.col_lower[c]));
+      const double lo = b.lower[j][k], hi = b.upper[j][k];
+      const double margin = 0.5 * (hi - lo) + 1e-3 * (1.0 + std::max(std::abs(lo), std::abs(hi)));
+      EXPECT_DOUBLE_EQ(tight.col_lower[c], lo - margin);
+      EXPECT_DOUBLE_EQ(tight.col_upper[c], hi + margin);
     }
   }
+  LpData exact = t.lp;
+  TightenToChainBounds(&exact, t.chain, 0.0);
+  EXPECT_DOUBLE_EQ(
+      exact.col_upper[t.chain.blocks[2][1]],
+      b.upper[2][1] + 1e-3 * (1.0 + std::max(std::abs(b.lower[2][1]), std::abs(b.upper[2][1]))));
+  EXPECT_THAT([&] { TightenToChainBounds(&exact, t.chain, -1.0); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("widen_fraction")));
   for (int c : t.inputs) {
     EXPECT_EQ(tight.col_lower[c], t.lp.col_lower[c]);
     EXPECT_EQ(tight.col_upper[c], t.lp.col_upper[c]);
