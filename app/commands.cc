@@ -27,6 +27,7 @@
 #include "common/timing.h"
 #include "milp/cbc_solver.h"
 #include "milp/model_io.h"
+#include "transcription/export_lp.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::app {
@@ -250,8 +251,11 @@ void ReportBuild(const SolveArgs& a, const Scenario& s, const transcription::Sch
   for (const std::string& reason : milp.infeasibility_reasons()) {
     err << "note: infeasible by construction: " << reason << "\n";
   }
-  if (!a.export_mps.empty()) WriteScenarioModelFile(a.export_mps, milp.lp(), s.name, false);
-  if (!a.export_lp.empty()) WriteScenarioModelFile(a.export_lp, milp.lp(), s.name, false);
+  if (!a.export_mps.empty() || !a.export_lp.empty()) {
+    const milp::LpData exported = transcription::ExportLp(milp);
+    if (!a.export_mps.empty()) WriteScenarioModelFile(a.export_mps, exported, s.name, false);
+    if (!a.export_lp.empty()) WriteScenarioModelFile(a.export_lp, exported, s.name, false);
+  }
 }
 
 // The scenario's solve options with the CLI's observers: progress on stderr
@@ -492,7 +496,7 @@ int RunSolve(const SolveArgs& a) {
 int RunExport(const ExportArgs& a) {
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   const transcription::ScheduleMilp milp(s.problem, s.build);
-  WriteScenarioModelFile(a.file, milp.lp(), s.name, a.obfuscate_names);
+  WriteScenarioModelFile(a.file, transcription::ExportLp(milp), s.name, a.obfuscate_names);
   std::cout << "wrote " << a.file << ": " << MilpLine(milp, s) << "\n"
             << "objective: " << ToString(s.problem.objective.kind)
             << (s.problem.objective.kind == transcription::ObjectiveKind::kPropellant ? " (kg)"

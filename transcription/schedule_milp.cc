@@ -306,6 +306,15 @@ void ScheduleMilp::BuildSparse() {
   }
 
   RowBuffer rows(options_.scale);
+  // The chain of states and the rows that define them (ExportLp's bounds);
+  // the buffer's rows follow the model's in order.
+  int next_row = model_.num_constraints();
+  state_chain_.blocks.clear();
+  for (const auto& node : state_) {
+    state_chain_.blocks.emplace_back();
+    for (const milp::Variable& v : node) state_chain_.blocks.back().push_back(v.index());
+  }
+  state_chain_.rows.assign(nn, {});
   // Dynamics: x~_{j+1} - S^-1 Phi S x~_j - S^-1 Gamma u_j = S^-1 d_j.
   for (int j = 0; j < nn; ++j) {
     const Eigen::MatrixXd& phi = discrete_.phi[j];
@@ -324,17 +333,22 @@ void ScheduleMilp::BuildSparse() {
       }
       const double rhs = discrete_.drift[j][r] / S[r];
       rows.End(rhs, rhs, Tag("dyn", r, j));
+      state_chain_.rows[j].push_back(next_row++);
     }
   }
   if (impulsive) {
     // Final impulse: x_N+ = x_N + B_N D dv_N.
     const Eigen::MatrixXd last = model.Evaluate(p.grid.back()).b * directions;
+    state_chain_.blocks.emplace_back();
+    for (const milp::Variable& v : final_state_) state_chain_.blocks.back().push_back(v.index());
+    state_chain_.rows.emplace_back();
     for (int r = 0; r < n; ++r) {
       rows.Begin();
       rows.Coef(final_state_[r].index(), 1.0);
       rows.Coef(state_[nn][r].index(), -1.0);
       for (int i = 0; i < m; ++i) rows.Coef(dv_[i][nn].index(), -last(r, i) / S[r]);
       rows.End(0.0, 0.0, "dyn_final_" + std::to_string(r));
+      state_chain_.rows.back().push_back(next_row++);
     }
   }
   rows.Flush(&model_);

@@ -32,6 +32,7 @@
 #include <Eigen/Core>
 
 #include "dynamics/discretisation.h"
+#include "milp/chain_bounds.h"
 #include "milp/model.h"
 #include "milp/solver.h"
 #include "transcription/encodings.h"
@@ -166,6 +167,10 @@ class ScheduleMilp {
   /// Column of state component c at node j, in scaled units (x = S x~);
   /// sparse formulation only. @throws std::out_of_range otherwise.
   milp::Variable state(int node, int component) const { return state_.at(node).at(component); }
+  /// Sparse formulation: the state columns by node (impulsive: then the
+  /// final state after the last impulse) and the dynamics rows that define
+  /// each node's from the previous one; empty for the condensed formulation.
+  const milp::EqualityChain& state_chain() const { return state_chain_; }
 
  private:
   void Build();
@@ -190,6 +195,7 @@ class ScheduleMilp {
   std::vector<std::vector<milp::Variable>> state_;  // sparse: [node][component], scaled
   std::vector<std::vector<milp::Variable>> dv_;     // impulsive: [thruster][node]
   std::vector<milp::Variable> final_state_;         // impulsive sparse: after the last impulse
+  milp::EqualityChain state_chain_;                 // sparse: state_ (+ final_state_), dyn rows
   struct SoftSlack {
     milp::Variable var;
     int node;

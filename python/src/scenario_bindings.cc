@@ -26,6 +26,7 @@
 #include "dynamics/models.h"
 #include "milp/model_io.h"
 #include "outcome.h"
+#include "transcription/export_lp.h"
 
 namespace thrustsched::python {
 
@@ -148,7 +149,7 @@ py::dict ExportScenario(const ScenarioPtr& s, const std::string& path, bool obfu
   {
     py::gil_scoped_release nogil;
     const transcription::ScheduleMilp milp(sc.problem, sc.build);
-    milp::LpData lp = milp.lp();
+    milp::LpData lp = transcription::ExportLp(milp);
     lp.name = sc.name;
     if (ext == ".mps") {
       milp::MpsOptions o;
