@@ -19,7 +19,10 @@
 
 namespace thrustsched::bench::report_internal {
 
-void WriteFormulations(std::ostream& md, const Index& idx) {
+namespace {
+
+// Section 3's table: each formulation and encoding on Tables 4.1/4.2 and the GEO week.
+void WriteFormulationTable(std::ostream& md, const Index& idx) {
   md << "## 3. Formulations and encodings\n\n";
   md << "Sparse (states as columns, O(N) nonzeros) versus condensed (states eliminated, "
         "thesis (4.50), O(N^2) nonzeros), and the thesis's operational-rule rows (corrected) "
@@ -105,7 +108,10 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
             "tolerance effect (one slot is 0.6-1 % of these values, the solve gap 1e-4).\n\n";
     }
   }
+}
 
+// Section 3.1: the root LP algorithm and the objective step, one change at a time.
+void WriteDesignChoices(std::ostream& md, const Index& idx) {
   md << "### 3.1 Design choices: root LP algorithm and objective step\n\n";
   md << "`milp::SolveOptions::lp_algorithm` (default primal simplex) and the objective step "
         "(`ScheduleMilp::objective_step()`: when every binary costs the same, feasible "
@@ -155,7 +161,10 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
           "model) and CBC's root (after CglPreProcess shrinks the model) behave differently: "
           "compare the LP (s) column with the time to the first incumbent.\n\n";
   }
+}
 
+// Section 3.2: the exported models solved by the cbc program, glpsol and HiGHS.
+void WriteCrossCheck(std::ostream& md, const Index& idx) {
   md << "### 3.2 Cross-check with other solvers\n\n";
   md << "Ours: CBC through the library, the run's threads and time limit (solve time). "
         "Where the `cbc` program, `glpsol` or HiGHS (npm `highs`, its WebAssembly build, one "
@@ -167,7 +176,7 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
         "with ours.\n\n";
   MdTable x({"scenario", "ours", "cbc program", "glpsol", "HiGHS", "agreement"});
   bool any = false;
-  for (const Group* g : f) {
+  for (const Group* g : idx.Section(kSectionFormulation)) {
     if (!g->first().Has("ext_cbc_status") && !g->first().Has("ext_glpsol_status") &&
         !g->first().Has("ext_highs_status")) {
       continue;
@@ -219,17 +228,23 @@ void WriteFormulations(std::ostream& md, const Index& idx) {
     md << x.Str() << "\n";
     md << "A time-limited external solve reports its best objective so far (status "
           "\"Stopped on time\" / \"INTEGER NON-OPTIMAL\" / \"UNDEFINED\" when it has none).\n\n";
-    md << "glpsol's \"INTEGER EMPTY\" (no integer feasible solution) on some of these models is "
-          "a wrong verdict of GLPK 5.0's branch and bound, not a difference in the exported "
-          "model: on hcw_table41_2d it reports \"tree is empty\" after 17 nodes, with or "
-          "without `--nopresol` and `--noscale`, while the same MPS file with the binaries "
-          "fixed (FX bounds) at the external cbc's solution is solved by glpsol itself to the "
-          "same objective (0.0819588 m/s, \"INTEGER OPTIMAL SOLUTION FOUND BY MIP "
-          "PREPROCESSOR\"), and that schedule passes our checker. (Measured 2026-11-25; "
-          "tests/app/cli_external_solvers_test.cc solves smaller models with glpsol.)\n\n";
+    md << "glpsol's \"INTEGER EMPTY\" (no integer feasible solution), where a row shows it, "
+          "is a wrong verdict of GLPK 5.0 on an export whose state columns were free: its "
+          "branch and bound propagates bounds through the chain of dynamics rows at every node, "
+          "they overflow, and the node is dropped as infeasible. The export now boxes every "
+          "state column by its reachable range, widened so that the bounds never bind "
+          "(data/scenarios/README.md section 7), and glpsol then finds the schedules.\n\n";
   } else {
     md << "Not run (no case with the cross-check selected).\n\n";
   }
+}
+
+}  // namespace
+
+void WriteFormulations(std::ostream& md, const Index& idx) {
+  WriteFormulationTable(md, idx);
+  WriteDesignChoices(md, idx);
+  WriteCrossCheck(md, idx);
 }
 
 void WriteScaling(std::ostream& md, const Index& idx, Plotter* plot) {
