@@ -18,6 +18,7 @@ import json
 import os
 import shutil
 import signal
+import subprocess
 import sys
 import tempfile
 import threading
@@ -137,6 +138,13 @@ def _run_serial(outcome: CampaignOutcome, pending: List[Task], progress: _Progre
                 error = str(e)
             except TaskInterrupted:
                 raise KeyboardInterrupt from None
+            except subprocess.SubprocessError:
+                # A Ctrl-C that lands while the task's process forks raises
+                # KeyboardInterrupt in the child's preexec_fn, which Popen
+                # reports as this error: the interrupt, not a crash.
+                if _SIGINT_SEEN.is_set():
+                    raise KeyboardInterrupt from None
+                raise
         _record(outcome, t, row, error, progress)
 
 

@@ -15,6 +15,7 @@ import os
 import shutil
 import subprocess
 import sys
+import types
 
 import pytest
 
@@ -227,6 +228,29 @@ def test_ctrl_c_exits_four_within_seconds_and_resume_completes(serial_run, tmp_p
     assert r.returncode == 0, r.stderr
     assert f"{finished} of 6 tasks finished before" in r.stderr, (stderr, r.stderr)
     assert fixed(rows(out)) == fixed(rows(serial_run))
+
+
+def test_a_ctrl_c_while_a_task_process_forks_is_the_interrupt_not_a_crash(monkeypatch, tmp_path):
+    # The signal can land in the forked child's preexec_fn, which Popen then
+    # reports as SubprocessError; with the sweep's Ctrl-C flag set that is the
+    # interrupt (KeyboardInterrupt: exit 4 and a resumable folder), without it
+    # an error that propagates.
+    from thrustsched import _campaign_run as run
+
+    def fork_fails(*args, **kwargs):
+        raise subprocess.SubprocessError("Exception occurred in preexec_fn.")
+
+    monkeypatch.setattr(run, "run_task", fork_fails)
+    task = ts.sweep.tasks(ts.sweep.load(str(CAMPAIGN)))[0]
+    outcome = types.SimpleNamespace(out=str(tmp_path))  # what run_task is given; nothing is recorded
+    run._SIGINT_SEEN.set()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            run._run_serial(outcome, [task], None, {})  # raises before the task is recorded
+    finally:
+        run._SIGINT_SEEN.clear()
+    with pytest.raises(subprocess.SubprocessError):
+        run._run_serial(outcome, [task], None, {})
 
 
 def test_a_year_task_resumes_from_its_own_checkpoint(tmp_path):
