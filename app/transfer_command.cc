@@ -50,8 +50,8 @@ int RunTransfer(const TransferArgs& a) {
   WriteTextFile((dir / "trajectory.csv").string(), run.trajectory_csv);
   WriteTextFile((dir / "orbit.csv").string(), OrbitCsv(run.orbit));
   std::string files = "summary.json, trajectory.csv, orbit.csv";
-  const PlotResult plots =
-      WriteTransferPlots(dir.string(), sc, run.summary, run.orbit.size(), !a.no_plots);
+  const PlotResult plots = WriteTransferPlots(dir.string(), sc, run.summary, run.trajectory_rows,
+                                              run.orbit.size(), !a.no_plots);
   for (const std::string& image : plots.images) files += ", " + image;
   if (!plots.message.empty() && !a.quiet) std::cerr << "note: " << plots.message << "\n";
   if (!a.no_report) {

@@ -27,9 +27,9 @@ double Num(const json& j, const char* key) {
 
 // The scenario name for a single-quoted gnuplot title (shown with noenhanced).
 std::string Title(const TransferScenario& s, const std::string& what) {
-  std::string name = s.name.empty() ? "transfer" : s.name;
-  name.erase(std::remove(name.begin(), name.end(), '\''), name.end());
-  return name + ": " + what;
+  std::string title = (s.name.empty() ? "transfer" : s.name) + ": " + what;
+  title.erase(std::remove(title.begin(), title.end(), '\''), title.end());
+  return title;
 }
 
 std::string ScriptStart(const std::string& base, int width, int height) {
@@ -48,7 +48,12 @@ std::pair<double, std::string> TimeUnit(double duration_s) {
   return {3600.0, "h"};
 }
 
-std::string ElementsScript(const TransferScenario& s, double duration_s) {
+// Every how many rows to draw at most ~`most` points of `rows`.
+std::size_t Every(std::size_t rows, std::size_t most) {
+  return std::max<std::size_t>(1, (rows + most - 1) / most);
+}
+
+std::string ElementsScript(const TransferScenario& s, double duration_s, std::size_t rows) {
   const auto [div, unit] = TimeUnit(duration_s);
   std::ostringstream os;
   os << ScriptStart("elements", 1100, 750) << "set multiplot layout 2,2 title '"
@@ -61,8 +66,8 @@ std::string ElementsScript(const TransferScenario& s, double duration_s) {
     const char* scale;
   } panels[] = {{8, "a (km)", "/1000"}, {9, "e", ""}, {10, "i (deg)", ""}, {11, "mass (kg)", ""}};
   for (const auto& p : panels) {
-    os << "set ylabel '" << p.label << "'\nplot 'trajectory.csv' skip 1 using ($1/d):($" << p.column
-       << p.scale << ") with lines lw 1.5 lc rgb '#1f77b4'\n";
+    os << "set ylabel '" << p.label << "'\nplot 'trajectory.csv' skip 1 every " << Every(rows, 5000)
+       << " using ($1/d):($" << p.column << p.scale << ") with lines lw 1.5 lc rgb '#1f77b4'\n";
   }
   os << "unset multiplot\n";
   return os.str();
@@ -70,10 +75,10 @@ std::string ElementsScript(const TransferScenario& s, double duration_s) {
 
 std::string OrbitScript(const TransferScenario& s, const json& summary, std::size_t points) {
   // At most ~20000 points drawn (a 0.2 N transfer has tens of thousands of steps).
-  const std::size_t every = std::max<std::size_t>(1, (points + 19999) / 20000);
+  const std::size_t every = Every(points, 20000);
   const std::string source = summary.value("orbit_source", "replay") == "replay"
                                  ? "Cartesian replay"
-                                 : "the trajectory's elements";
+                                 : "from the elements of trajectory.csv";
   std::ostringstream os;
   os << ScriptStart("orbit", 900, 850) << "set title '"
      << Title(s, "orbit, x-y projection (" + source + ", orbit.csv)") << "' noenhanced\n"
@@ -189,9 +194,10 @@ std::string ConvergenceSection(const json& summary) {
 }  // namespace
 
 PlotResult WriteTransferPlots(const std::string& dir, const TransferScenario& scenario,
-                              const json& summary, std::size_t orbit_points, bool run_gnuplot) {
+                              const json& summary, std::size_t trajectory_rows,
+                              std::size_t orbit_points, bool run_gnuplot) {
   const std::vector<std::pair<std::string, std::string>> scripts = {
-      {"elements", ElementsScript(scenario, Num(summary, "duration_s"))},
+      {"elements", ElementsScript(scenario, Num(summary, "duration_s"), trajectory_rows)},
       {"orbit", OrbitScript(scenario, summary, orbit_points)}};
   PlotResult r;
   std::vector<std::string> bases;

@@ -7,7 +7,7 @@
 // result, the convergence figures, the state handed over to station
 // keeping and the plots.
 //
-//   app::PlotResult p = app::WriteTransferPlots(folder.path(), scenario, summary,
+//   app::PlotResult p = app::WriteTransferPlots(folder.path(), scenario, summary, rows,
 //                                                  run.orbit.size(), !no_plots);
 //   app::WriteTransferReport(folder.path(), scenario, summary);   // after the plots
 #ifndef THRUSTSCHED_APP_TRANSFER_REPORT_H_
@@ -24,13 +24,14 @@
 namespace thrustsched::app {
 
 /// Writes elements.gp and orbit.gp into `dir` (which holds trajectory.csv
-/// and orbit.csv, of orbit_points rows) and, with run_gnuplot and gnuplot
-/// found, their SVGs.
+/// and orbit.csv, of trajectory_rows and orbit_points rows: the scripts draw
+/// at most 5000 and 20000 of them) and, with run_gnuplot and gnuplot found,
+/// their SVGs.
 /// Never throws for a missing or failing gnuplot (PlotResult says why);
 /// @throws std::runtime_error if a script cannot be written.
 PlotResult WriteTransferPlots(const std::string& dir, const TransferScenario& scenario,
-                              const nlohmann::json& summary, std::size_t orbit_points,
-                              bool run_gnuplot);
+                              const nlohmann::json& summary, std::size_t trajectory_rows,
+                              std::size_t orbit_points, bool run_gnuplot);
 
 /// Writes dir/report.html from `summary` (summary.json's content) and the
 /// SVG files present in `dir`. @throws std::runtime_error if it cannot write.

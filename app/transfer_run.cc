@@ -295,6 +295,7 @@ TransferRun RunTransferScenario(const TransferScenario& sc, const std::string& s
   run.converged = o.ok;
   run.summary = Summary(sc, scenario_path, o);
   run.trajectory_csv = TrajectoryCsv(o.rows);
+  run.trajectory_rows = o.rows.size();
   run.orbit = std::move(o.orbit);
   if (run.orbit.empty()) {
     for (const Row& r : o.rows) {

@@ -14,6 +14,7 @@
 #ifndef THRUSTSCHED_APP_TRANSFER_RUN_H_
 #define THRUSTSCHED_APP_TRANSFER_RUN_H_
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct TransferRun {
   bool converged = false;  // shooting converged / target reached
   nlohmann::json summary;  // summary.json
   std::string trajectory_csv;
+  std::size_t trajectory_rows = 0;
   std::vector<transfer::ReplayState> orbit;  // orbit.csv
 };
 
