@@ -45,25 +45,34 @@ OemFile TransferOem(const std::vector<transfer::ReplayState>& orbit, const dynam
   f.originator = "THRUSTSCHED";
   f.creation_date = CreationDate();
   f.comments = {comment, "frame: the transfer's inertial frame, taken as EME2000; two-body model",
-                "one segment: thrust and mass are continuous along a transfer"};
+                "a new segment at each impulse (two_impulse): do not interpolate across segments"};
+  // A repeated time is an impulse (two_impulse): the velocity jumps there,
+  // so a new segment starts, sharing the epoch (never interpolate across).
   OemSegment seg;
   seg.object_name = name.empty() ? "TRANSFER" : name;
   seg.object_id = "UNKNOWN";
-  for (const transfer::ReplayState& s : orbit) {
+  auto close_segment = [&] {
+    seg.start_time = seg.points.front().epoch;
+    seg.stop_time = seg.points.back().epoch;
+    seg.interpolation_degree =
+        std::min(kMaxInterpolationDegree, static_cast<int>(seg.points.size()) - 1);
+    f.segments.push_back(seg);
+    seg.points.clear();
+  };
+  for (std::size_t k = 0; k < orbit.size(); ++k) {
+    const transfer::ReplayState& s = orbit[k];
     const dynamics::Epoch e = start.PlusSeconds(s.t_s);
-    // The file's epochs have a millisecond resolution at most where whole:
-    // a step shorter than that would repeat an epoch.
-    if (!seg.points.empty() && e.SecondsSince(seg.points.back().epoch) < 1e-3) {
-      if (&s == &orbit.back()) seg.points.back() = {e, s.rv};  // keep the end state exact
+    if (k > 0 && s.t_s == orbit[k - 1].t_s) {
+      close_segment();
+    } else if (!seg.points.empty() && e.SecondsSince(seg.points.back().epoch) < 1e-3) {
+      // The file's epochs have a millisecond resolution where whole: a step
+      // shorter than that would repeat an epoch.
+      if (k + 1 == orbit.size()) seg.points.back() = {e, s.rv};  // keep the end state exact
       continue;
     }
     seg.points.push_back({e, s.rv});
   }
-  seg.start_time = seg.points.front().epoch;
-  seg.stop_time = seg.points.back().epoch;
-  seg.interpolation_degree =
-      std::min(kMaxInterpolationDegree, static_cast<int>(seg.points.size()) - 1);
-  f.segments.push_back(std::move(seg));
+  close_segment();
   return f;
 }
 

@@ -36,10 +36,12 @@ namespace thrustsched::app {
 nlohmann::json StationKeepingInitialState(const transfer::Equinoctial& q, double mu_m3_s2,
                                           const std::optional<dynamics::Epoch>& epoch);
 
-/// One OEM segment (EME2000, UTC, HERMITE of degree min(7, points - 1))
-/// holding every state of `orbit` (times in s since `start`), for the
-/// object `name`. States at the same epoch to the millisecond are written
-/// once. @throws std::invalid_argument if `orbit` is empty.
+/// The states of `orbit` (times in s since `start`) for the object `name`:
+/// one OEM segment (EME2000, UTC, HERMITE of degree min(7, points - 1)),
+/// and a new one at each repeated time (an impulse: the states before and
+/// after it), adjacent segments sharing that epoch. States less than a
+/// millisecond apart are written once. @throws std::invalid_argument if
+/// `orbit` is empty.
 OemFile TransferOem(const std::vector<transfer::ReplayState>& orbit, const dynamics::Epoch& start,
                     const std::string& name, const std::string& comment);
 

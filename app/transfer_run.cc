@@ -33,7 +33,11 @@ struct Outcome {
   json convergence = json::object();
   json extra = json::object();  // method-specific fields
   std::vector<Row> rows;
-  std::vector<transfer::ReplayState> orbit;  // the replay's steps, if any
+  // Cartesian states: the replay's steps ("replay"), the two-impulse coast
+  // with the states before the first and after the second impulse
+  // ("coast"), or none (made from the rows: "elements").
+  std::vector<transfer::ReplayState> orbit;
+  std::string orbit_source = "elements";
 };
 
 json ElementsJson(const Equinoctial& q) {
@@ -127,6 +131,7 @@ Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
         transfer::ReplaySamples(sc.problem, s.trajectory, s.duration_s);
     o.extra["replay"] = ReplayJson(sc.problem, r, s.final_elements);
     o.orbit = r.states;
+    o.orbit_source = "replay";
   }
   o.extra["propellant_check_kg"] =
       sc.problem.thrust_n * s.duration_s / (transfer::kStandardGravity * sc.problem.isp_s);
@@ -199,14 +204,20 @@ Outcome RunTwoImpulse(const TransferScenario& sc) {
   const dynamics::KeplerOrbit orbit(rv, 0.0, p.mu);
   const double m1 = p.mass_kg * std::exp(-r.dv0_m_s / c);
   const int n = 200;
+  o.orbit_source = "coast";
+  o.orbit.push_back({0.0, transfer::CartesianFromEquinoctial(p.initial, p.mu), p.mass_kg});
   for (int k = 0; k <= n; ++k) {
     const double ts = r.time_of_flight_s * k / n;
-    Equinoctial q = transfer::EquinoctialFromCartesian(orbit.At(ts), p.mu);
-    o.rows.push_back({ts, q, k == n ? o.final_mass_kg : m1, Eigen::Vector3d::Zero()});
+    const dynamics::Vector6d x = orbit.At(ts);
+    o.rows.push_back({ts, transfer::EquinoctialFromCartesian(x, p.mu),
+                      k == n ? o.final_mass_kg : m1, Eigen::Vector3d::Zero()});
+    o.orbit.push_back({ts, x, m1});
   }
   // After the second impulse: the target orbit at the arrival longitude.
   o.final_elements = Equinoctial{t.value[0], 0, 0, t.value[3], t.value[4], o.rows.back().q.l_rad};
   o.rows.back().q = o.final_elements;
+  o.orbit.push_back({r.time_of_flight_s, transfer::CartesianFromEquinoctial(o.final_elements, p.mu),
+                     o.final_mass_kg});
   return o;
 }
 
@@ -271,7 +282,7 @@ json Summary(const TransferScenario& sc, const std::string& scenario_path, const
     j["end_epoch"] = end->ToIso8601();
   }
   j["final_state"] = StationKeepingInitialState(o.final_elements, sc.problem.mu, end);
-  j["orbit_source"] = o.orbit.empty() ? "elements" : "replay";
+  j["orbit_source"] = o.orbit_source;
   return j;
 }
 

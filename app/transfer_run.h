@@ -8,9 +8,11 @@
 //   run = app::RunTransferScenario(sc, sc.path, /*quiet=*/true); run.summary["duration_h"];
 //   // 14.8004 run.summary["final_state"];     // a station-keeping scenario's "initial_state"
 //
-// orbit holds the independent Cartesian replay's steps for minimum_time; for
-// feedback and two_impulse (no replay) the trajectory's elements converted
-// to position and velocity (summary.json's "orbit_source" says which).
+// orbit holds the independent Cartesian replay's steps for minimum_time
+// ("replay"); for two_impulse the Kepler coast with the states before the
+// first impulse and after the second at repeated times ("coast"); for
+// feedback (no replay) the trajectory's elements converted to position and
+// velocity ("elements"); summary.json's "orbit_source" says which.
 #ifndef THRUSTSCHED_APP_TRANSFER_RUN_H_
 #define THRUSTSCHED_APP_TRANSFER_RUN_H_
 

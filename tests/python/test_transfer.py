@@ -90,5 +90,9 @@ def test_method_override_and_bad_fields_raise_scenario_error_naming_them():
 def test_two_impulse_is_hohmann():
     res = ts.transfer(SCENARIOS / "transfer" / "map434_hohmann.json")
     assert res.summary["two_impulse"]["total_dv_m_s"] == pytest.approx(3907.1, abs=0.05)
-    assert res.summary["orbit_source"] == "elements"
-    assert len(res.orbit) == len(res.trajectory)
+    # The coast, with the states before the first impulse and after the second.
+    assert res.summary["orbit_source"] == "coast"
+    assert len(res.orbit) == len(res.trajectory) + 2
+    dv = res.orbit[["vx_m_s", "vy_m_s", "vz_m_s"]].to_numpy()
+    assert ((dv[1] - dv[0]) ** 2).sum() ** 0.5 == pytest.approx(res.summary["two_impulse"]["dv0_m_s"], rel=1e-9)
+    assert ((dv[-1] - dv[-2]) ** 2).sum() ** 0.5 == pytest.approx(res.summary["two_impulse"]["dvf_m_s"], rel=1e-6)

@@ -126,8 +126,8 @@ TEST(TransferCli, Map434TwoImpulseIsHohmann) {
   EXPECT_NEAR(s["duration_h"].get<double>(), 5.2692, 5e-5);
   const double unit = 42165e3 / 3600.0;
   EXPECT_NEAR(s["two_impulse"]["cost_m2_s2"].get<double>() / (unit * unit), 0.0295189, 5e-7);
-  // No replay: the orbit is the coast's elements converted, and still drawn.
-  EXPECT_EQ(s["orbit_source"], "elements");
+  // No replay: the orbit is Kepler's coast, and still drawn.
+  EXPECT_EQ(s["orbit_source"], "coast");
   if (app::GnuplotAvailable()) {
     EXPECT_GT(std::filesystem::file_size(out + "/orbit.svg"), 1000u)
         << ReadFile(out + "/gnuplot.log");

@@ -3,11 +3,13 @@
 // inside a short GEO scenario gives the transfer's end state (the shipped
 // 60 N minimum-time transfer, Caillau, Gergaud & Noailles 2003) and its
 // epoch (the transfer's start + its duration); and the OEM of the replay.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "app/ccsds_oem.h"
 #include "app/scenario.h"
@@ -134,10 +136,58 @@ TEST(TransferHandover, OemOfTheReplayReadsBack) {
       std::abs(seg.stop_time.SecondsSince(*sc.epoch) - run.summary.at("duration_s").get<double>()),
       1e-3);
   EXPECT_LT((seg.points.back().rv.head<3>() - run.orbit.back().rv.head<3>()).norm(), 1e-3);
+  // Dense enough for the HERMITE 7 it announces: each line left out and
+  // interpolated from its four neighbours (positions and velocities, so
+  // over twice the file's spacing) is within 1 m (0.10 m at 60 N).
+  double worst_m = 0;
+  for (std::size_t i = 2; i + 2 < seg.points.size(); ++i) {
+    Eigen::Matrix<double, 8, 8> a;
+    Eigen::Matrix<double, 8, 3> b;
+    int row = 0;
+    for (std::size_t j : {i - 2, i - 1, i + 1, i + 2}) {
+      const double x = seg.points[j].epoch.SecondsSince(seg.points[i].epoch) / 1000.0;  // ks
+      for (int k = 0; k < 8; ++k) {
+        a(row, k) = std::pow(x, k);
+        a(row + 1, k) = k == 0 ? 0.0 : k * std::pow(x, k - 1);
+      }
+      b.row(row) = seg.points[j].rv.head<3>().transpose();
+      b.row(row + 1) = 1000.0 * seg.points[j].rv.tail<3>().transpose();
+      row += 2;
+    }
+    const Eigen::Matrix<double, 8, 3> c = a.fullPivLu().solve(b);
+    worst_m = std::max(worst_m, (c.row(0).transpose() - seg.points[i].rv.head<3>()).norm());
+  }
+  EXPECT_LT(worst_m, 1.0);
   // The replay's end orbit is GEO to the summary's figures.
   const transfer::Equinoctial end =
       transfer::EquinoctialFromCartesian(seg.points.back().rv, sc.problem.mu);
   EXPECT_NEAR(transfer::SemiMajorAxis(end), run.summary["replay"]["a_m"].get<double>(), 1e-2);
+}
+
+// Two impulses: the OEM starts a segment at each impulse (the states before
+// and after it share the epoch), and the velocity jumps there by the
+// impulses' delta-v (MAP434: 3907.1 m/s in all).
+TEST(TransferHandover, TwoImpulseOemHasASegmentPerArcSplitAtTheImpulses) {
+  nlohmann::json j = nlohmann::json::parse(ReadFile(kData + "transfer/map434_hohmann.json"));
+  j["transfer"]["epoch"] = kStart;
+  const TransferScenario sc = ParseTransferScenario(j, "map434.json");
+  const TransferRun run = RunTransferScenario(sc, "map434.json", /*quiet=*/true);
+  const OemFile back =
+      ParseOem(FormatOem(TransferOem(run.orbit, *sc.epoch, sc.name, "test")), "x.oem");
+  ASSERT_EQ(back.segments.size(), 3u);
+  EXPECT_EQ(back.segments[0].points.size(), 1u);
+  EXPECT_EQ(back.segments[2].points.size(), 1u);
+  EXPECT_EQ(back.segments[0].stop_time, back.segments[1].start_time);
+  EXPECT_EQ(back.segments[1].stop_time, back.segments[2].start_time);
+  const auto dv = [&](int a, int b) {
+    return (back.segments[b].points.front().rv.tail<3>() -
+            back.segments[a].points.back().rv.tail<3>())
+        .norm();
+  };
+  const nlohmann::json& t = run.summary.at("two_impulse");
+  EXPECT_NEAR(dv(0, 1), t.at("dv0_m_s").get<double>(), 1e-5);  // the file's 1 um/s
+  EXPECT_NEAR(dv(1, 2), t.at("dvf_m_s").get<double>(), 1e-3);
+  EXPECT_NEAR(dv(0, 1) + dv(1, 2), 3907.1, 0.05);
 }
 
 }  // namespace
