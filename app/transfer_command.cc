@@ -43,6 +43,14 @@ int RunTransfer(const TransferArgs& a) {
   const std::string out_dir =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
   RunFolder folder(out_dir, a.force, a.command_line);
+  const std::string oem_path = a.oem.empty() ? "" : InRunFolder(a.oem, folder);
+  if (!oem_path.empty()) {
+    const fs::path parent = fs::absolute(oem_path).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(parent, ec)) {
+      throw ScenarioError("--oem " + a.oem + ": the folder " + parent.string() + " does not exist");
+    }
+  }
   const fs::path dir(folder.path());
   TransferRun run = RunTransferScenario(sc, a.scenario, a.quiet);
   run.summary["command_line"] = a.command_line;
@@ -62,8 +70,7 @@ int RunTransfer(const TransferArgs& a) {
     const std::string comment = "thrustsched transfer of scenario \"" + sc.name + "\", " +
                                 ToString(sc.method) + ", " + run.summary.value("orbit_source", "") +
                                 " states";
-    WriteTextFile(InRunFolder(a.oem, folder),
-                  FormatOem(TransferOem(run.orbit, *sc.epoch, sc.name, comment)));
+    WriteTextFile(oem_path, FormatOem(TransferOem(run.orbit, *sc.epoch, sc.name, comment)));
   }
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) std::cerr << "note: " << replaced << "\n";

@@ -114,6 +114,12 @@ TEST(TransferCli, PlotsReportAndOemAreWrittenAndNamedInTheManifest) {
               "--oem", dir + "/x.oem"});
   EXPECT_EQ(r.exit_code, 2) << r.Describe();
   EXPECT_NE(r.err.find("scenario.transfer.epoch"), std::string::npos) << r.err;
+  // Nor is a folder that does not exist (refused before the transfer runs).
+  r = RunCli({"transfer", dir + "/60n.json", "--out", dir + "/o3", "--quiet", "--oem",
+              dir + "/missing/x.oem"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_NE(r.err.find("--oem"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/o3/summary.json"));
 }
 
 TEST(TransferCli, Map434TwoImpulseIsHohmann) {
