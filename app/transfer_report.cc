@@ -76,9 +76,10 @@ std::string ElementsScript(const TransferScenario& s, double duration_s, std::si
 std::string OrbitScript(const TransferScenario& s, const json& summary, std::size_t points) {
   // At most ~20000 points drawn (a 0.2 N transfer has tens of thousands of steps).
   const std::size_t every = Every(points, 20000);
-  const std::string source = summary.value("orbit_source", "replay") == "replay"
-                                 ? "Cartesian replay"
-                                 : "from the elements of trajectory.csv";
+  const std::string kind = summary.value("orbit_source", "replay");
+  const std::string source = kind == "replay"  ? "Cartesian replay"
+                             : kind == "coast" ? "Kepler coast between the impulses"
+                                               : "from the elements of trajectory.csv";
   std::ostringstream os;
   os << ScriptStart("orbit", 900, 850) << "set title '"
      << Title(s, "orbit, x-y projection (" + source + ", orbit.csv)") << "' noenhanced\n"
@@ -179,6 +180,12 @@ std::string ConvergenceSection(const json& summary) {
               HtmlEscape("final a " + Sig(Num(r, "a_m") / 1e3, 9) + " km (" +
                          Sig(Num(r, "a_difference_m"), 3) + " m from the shooting), e " +
                          Sig(Num(r, "e"), 3) + " (" + Sig(Num(r, "e_difference"), 3) + ")"));
+  }
+  if (summary.contains("two_impulse")) {
+    const json& t = summary.at("two_impulse");
+    os << Row("criterion",
+              HtmlEscape("(dV0^2 + dVf^2)/2 = " + Sig(Num(t, "cost_m2_s2"), 8) +
+                         " m^2/s^2, minimised over the transfer ellipses (no shooting)"));
   }
   if (summary.contains("feedback")) {
     const json& f = summary.at("feedback");
