@@ -227,7 +227,8 @@ void AddTransferCommand(CLI::App* cli, Subcommands* c) {
   c->c_transfer = cli->add_subcommand(
       "transfer",
       "Orbit transfer (minimum time by shooting, Lyapunov feedback, two impulses) "
-      "from a transfer scenario; writes summary.json and trajectory.csv.");
+      "from a transfer scenario; writes summary.json (with the end state as a station-keeping "
+      "initial_state), trajectory.csv, orbit.csv, SVG plots and report.html.");
   c->c_transfer->add_option("scenario", c->transfer.scenario, "transfer scenario file (JSON)")
       ->required();
   c->c_transfer->add_option("--out", c->transfer.out_dir,
@@ -236,6 +237,14 @@ void AddTransferCommand(CLI::App* cli, Subcommands* c) {
                             "minimum_time, feedback or two_impulse");
   c->c_transfer->add_flag("--force", c->transfer.force, "replace an earlier run's files in --out");
   c->c_transfer->add_flag("--quiet", c->transfer.quiet, "no progress messages on stderr");
+  c->c_transfer->add_flag("--no-plots", c->transfer.no_plots,
+                          "write the gnuplot scripts but do not run gnuplot");
+  c->c_transfer->add_flag("--no-report", c->transfer.no_report,
+                          "do not write report.html (the self-contained page with the scenario, "
+                          "result, convergence figures and plots)");
+  c->c_transfer->add_option("--oem", c->transfer.oem,
+                            "also write the trajectory as a CCSDS OEM 2.0 (EME2000, UTC; needs "
+                            "the scenario's transfer.epoch)");
 }
 
 // `thrustsched help [command]`, and a misspelt command named as such: the

@@ -110,10 +110,13 @@ std::string Utc(const Scenario& s, double t) {
   return dynamics::Epoch::Parse(s.geo->epoch).PlusSeconds(t).ToIso8601();
 }
 
-// <tr><th>key</th><td>value</td></tr>, the value already HTML.
+}  // namespace
+
 std::string Row(const std::string& key, const std::string& value_html) {
   return "<tr><th>" + HtmlEscape(key) + "</th><td>" + value_html + "</td></tr>\n";
 }
+
+namespace {
 
 // An output's name without its unit suffix ("lat_rad" -> "lat").
 std::string Bare(const std::string& name) {
@@ -217,10 +220,7 @@ std::string CsvTable(const std::string& path, size_t max_rows = 2000) {
   return os.str();
 }
 
-struct Figure {
-  std::string file;
-  std::string caption;
-};
+}  // namespace
 
 std::string Figures(const std::string& dir, const std::vector<Figure>& figures) {
   std::ostringstream os;
@@ -294,6 +294,8 @@ std::string PageStart(const std::string& title) {
          "<meta name=\"generator\" content=\"thrustsched\">\n<title>" +
          HtmlEscape(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
 }
+
+namespace {
 
 std::string Verdict(bool passed) {
   return passed ? "<span class=\"verdict pass\">PASSED</span>"

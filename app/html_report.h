@@ -49,6 +49,22 @@ struct YearReport {
 YearReport WriteYearReport(const std::string& dir, const Scenario& scenario,
                            const nlohmann::json& year, bool run_gnuplot);
 
+// The pieces of a report page, for the commands that write their own
+// (the transfer report, app/transfer_report.h).
+
+/// The page's head (title, the style sheet) and the opening <body>.
+std::string PageStart(const std::string& title);
+/// <tr><th>key</th><td>value</td></tr> (a row of a "facts" table), the value already HTML.
+std::string Row(const std::string& key, const std::string& value_html);
+
+struct Figure {
+  std::string file;  // an SVG file in the run folder
+  std::string caption;
+};
+/// The figures present in `dir`, inlined with their captions (element ids
+/// made unique per page); a note when none is present.
+std::string Figures(const std::string& dir, const std::vector<Figure>& figures);
+
 /// `text` with &, <, >, " and ' escaped for HTML.
 std::string HtmlEscape(const std::string& text);
 

@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Every name a thrustsched command writes into its folder (solve, check,
-// simulate), for runs older than the manifest.
+// simulate, transfer), for runs older than the manifest.
 const std::set<std::string>& KnownNames() {
   static const std::set<std::string> names = {
       "summary.json", "schedule.csv", "trajectory.csv", "impulses.csv",    "check.json",
@@ -31,7 +31,8 @@ const std::set<std::string>& KnownNames() {
       "vectors.svg",  "latlon.gp",    "latlon.svg",     "checkpoint.json", "in_progress.json",
       "year.json",    "cycles.csv",   "cycles",         "xy.gp",           "xy.svg",
       "report.html",  "gap.gp",       "gap.svg",        "thrust_days.gp",  "thrust_days.svg",
-      "box.gp",       "box.svg"};
+      "box.gp",       "box.svg",      "orbit.csv",      "elements.gp",     "elements.svg",
+      "orbit.gp",     "orbit.svg"};
   return names;
 }
 

@@ -1,275 +1,34 @@
 #include "app/transfer_command.h"
 
-#include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "app/ccsds_oem.h"
 #include "app/commands.h"
 #include "app/outputs.h"
 #include "app/run_folder.h"
+#include "app/transfer_handover.h"
+#include "app/transfer_report.h"
+#include "app/transfer_run.h"
 #include "app/transfer_scenario.h"
-#include "common/constants.h"
 #include "common/format.h"
-#include "dynamics/two_body.h"
-#include "transfer/replay.h"
-#include "transfer/two_impulse.h"
 
 namespace thrustsched::app {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using transfer::Equinoctial;
 
-// One row of trajectory.csv.
-struct Row {
-  double t_s;
-  Equinoctial q;
-  double mass_kg;
-  Eigen::Vector3d command_qsw;
-};
-
-struct Outcome {
-  bool ok = false;
-  double duration_s = 0, propellant_kg = 0, final_mass_kg = 0, revolutions = 0;
-  Equinoctial final_elements;
-  json convergence = json::object();
-  json extra = json::object();  // method-specific fields
-  std::vector<Row> rows;
-};
-
-json ElementsJson(const Equinoctial& q) {
-  return {{"p_m", q.p_m},
-          {"ex", q.ex},
-          {"ey", q.ey},
-          {"hx", q.hx},
-          {"hy", q.hy},
-          {"l_rad", q.l_rad},
-          {"a_m", transfer::SemiMajorAxis(q)},
-          {"e", transfer::Eccentricity(q)},
-          {"i_deg", transfer::Inclination(q) * common::kRadToDeg}};
-}
-
-// Final minus target for every targeted element (null for a free one).
-json ErrorsJson(const Equinoctial& q, const transfer::TargetElements& t) {
-  const double v[5] = {q.p_m, q.ex, q.ey, q.hx, q.hy};
-  const char* names[5] = {"p_m", "ex", "ey", "hx", "hy"};
-  json e = json::object();
-  for (int j = 0; j < 5; ++j) e[names[j]] = t.free[j] ? json(nullptr) : json(v[j] - t.value[j]);
-  if (!t.free[0] && !t.free[1] && !t.free[2]) {
-    const double et = std::hypot(t.value[1], t.value[2]);
-    e["a_m"] = transfer::SemiMajorAxis(q) - t.value[0] / (1 - et * et);
-    e["e"] = transfer::Eccentricity(q) - et;
-  }
-  if (!t.free[3] && !t.free[4]) {
-    e["i_deg"] = (transfer::Inclination(q) - 2 * std::atan(std::hypot(t.value[3], t.value[4]))) *
-                 common::kRadToDeg;
-  }
-  return e;
-}
-
-void AppendShooting(const transfer::MinTimeSolution& s, Outcome* o, double t0_s) {
-  for (const transfer::TrajectorySample& x : s.trajectory) {
-    o->rows.push_back({t0_s + x.t_s, x.elements, x.mass_kg, x.direction_qsw});
-  }
-}
-
-json ShootingJson(const transfer::MinTimeSolution& s) {
-  return {{"converged", s.converged},
-          {"shooting_residual", s.residual_norm},
-          {"iterations", s.evaluations},
-          {"hybrd_info", s.hybrd_info},
-          {"hamiltonian", s.hamiltonian},
-          {"hamiltonian_drift", s.hamiltonian_drift},
-          {"costate", std::vector<double>(s.costate.data(), s.costate.data() + 6)}};
-}
-
-json ReplayJson(const transfer::MinTimeProblem& p, const transfer::ReplayResult& r,
-                const Equinoctial& q) {
-  return {{"a_m", r.final_a_m},
-          {"e", r.final_e},
-          {"i_deg", r.final_i_rad * common::kRadToDeg},
-          {"mass_kg", r.final_mass_kg},
-          {"a_difference_m", r.final_a_m - transfer::SemiMajorAxis(q)},
-          {"e_difference", r.final_e - transfer::Eccentricity(q)},
-          {"mu_m3_s2", p.mu}};
-}
-
-Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
-  transfer::MinTimeProblem p = sc.problem;
-  if (sc.continuation_from_thrust_n) p.thrust_n = *sc.continuation_from_thrust_n;
-  const transfer::ShootingGuess guess = sc.guess ? *sc.guess : transfer::InitialGuess(p);
-  transfer::MinTimeSolution s = transfer::SolveMinTime(p, guess, sc.shooting);
-  Outcome o;
-  int steps = 0;
-  if (sc.continuation_from_thrust_n && s.converged && p.thrust_n != sc.problem.thrust_n) {
-    if (!quiet) std::cerr << "shooting at " << p.thrust_n << " N: converged, continuing\n";
-    const transfer::ContinuationResult c = transfer::ContinueOnThrust(
-        p, s, sc.problem.thrust_n, sc.shooting, [&](const transfer::ContinuationStep& st) {
-          if (quiet) return;
-          std::cerr << "  thrust " << common::FormatG(st.thrust_n, 6)
-                    << " N: " << (st.converged ? "converged, t_f = " : "not converged, t_f ~ ")
-                    << common::FormatG(st.duration_s / 3600, 8) << " h\n";
-        });
-    steps = static_cast<int>(c.steps.size());
-    s = c.solution;
-    s.converged = s.converged && c.thrust_n == sc.problem.thrust_n;
-  }
-  o.ok = s.converged;
-  o.duration_s = s.duration_s;
-  o.propellant_kg = s.propellant_kg;
-  o.final_mass_kg = s.final_mass_kg;
-  o.final_elements = s.final_elements;
-  o.revolutions = s.revolutions;
-  o.convergence = ShootingJson(s);
-  o.convergence["continuation_steps"] = steps;
-  AppendShooting(s, &o, 0.0);
-  if (s.trajectory.size() >= 2) {
-    const transfer::ReplayResult r =
-        transfer::ReplaySamples(sc.problem, s.trajectory, s.duration_s);
-    o.extra["replay"] = ReplayJson(sc.problem, r, s.final_elements);
-  }
-  o.extra["propellant_check_kg"] =
-      sc.problem.thrust_n * s.duration_s / (transfer::kStandardGravity * sc.problem.isp_s);
-  return o;
-}
-
-Outcome RunFeedbackMethod(const TransferScenario& sc) {
-  const transfer::MinTimeProblem& p = sc.problem;
-  const transfer::FeedbackResult f = transfer::RunFeedback(p, sc.feedback);
-  Outcome o;
-  for (const transfer::FeedbackSample& x : f.trajectory) {
-    o.rows.push_back({x.t_s, x.elements, x.mass_kg, x.command_qsw});
-  }
-  o.extra["feedback"] = {{"duration_s", f.duration_s},
-                         {"stop_reason", f.stop_reason},
-                         {"reached", f.reached},
-                         {"final_lyapunov", f.final_lyapunov},
-                         {"max_lyapunov_increase", f.max_lyapunov_increase},
-                         {"propellant_kg", f.propellant_kg},
-                         {"on_off", sc.feedback.on_off}};
-  o.ok = f.reached, o.duration_s = f.duration_s, o.propellant_kg = f.propellant_kg;
-  o.final_mass_kg = f.final_mass_kg, o.final_elements = f.final_elements;
-  o.revolutions = f.revolutions;
-  if (sc.optimal_end && !f.reached && f.stop_reason == "saturation") {
-    const transfer::FeedbackWithEnd e = transfer::FinishWithMinimumTime(p, f, sc.shooting);
-    o.extra["optimal_end"] = ShootingJson(e.end);
-    o.extra["optimal_end"]["duration_s"] = e.end.duration_s;
-    o.convergence = ShootingJson(e.end);
-    if (e.end.converged) {
-      AppendShooting(e.end, &o, f.duration_s);
-      o.ok = true, o.duration_s = e.total_duration_s, o.propellant_kg = e.total_propellant_kg;
-      o.final_mass_kg = e.end.final_mass_kg, o.final_elements = e.end.final_elements;
-      o.revolutions = (o.final_elements.l_rad - p.initial.l_rad) / (2 * common::kPi);
-    }
-  }
-  return o;
-}
-
-Outcome RunTwoImpulse(const TransferScenario& sc) {
-  const transfer::MinTimeProblem& p = sc.problem;
-  const auto& t = p.target;
-  const double e0 = transfer::Eccentricity(p.initial), et = std::hypot(t.value[1], t.value[2]);
-  if (e0 > 1e-12 || et > 1e-12 || std::abs(p.initial.hx - t.value[3]) > 1e-12 ||
-      std::abs(p.initial.hy - t.value[4]) > 1e-12 || t.free[0]) {
-    throw ScenarioError(
-        "scenario.transfer.method: two_impulse needs a circular start, a "
-        "circular target in the same plane and a fixed target P (e0 = " +
-        FormatNumber(e0) + ", target e = " + FormatNumber(et) + ")");
-  }
-  const transfer::TwoImpulseResult r =
-      transfer::MinimiseTwoImpulse({p.mu, p.initial.p_m, t.value[0]});
-  const transfer::HohmannTransfer h = transfer::Hohmann(p.initial.p_m, t.value[0], p.mu);
-  Outcome o;
-  o.ok = true;
-  o.duration_s = r.time_of_flight_s;
-  const double c = transfer::kStandardGravity * p.isp_s;
-  o.final_mass_kg = p.mass_kg * std::exp(-(r.dv0_m_s + r.dvf_m_s) / c);
-  o.propellant_kg = p.mass_kg - o.final_mass_kg;
-  o.revolutions = 0.5;
-  o.extra["two_impulse"] = {{"dv0_m_s", r.dv0_m_s},
-                            {"dvf_m_s", r.dvf_m_s},
-                            {"total_dv_m_s", r.dv0_m_s + r.dvf_m_s},
-                            {"cost_m2_s2", r.cost_m2_s2},
-                            {"hohmann_total_dv_m_s", h.total_m_s},
-                            {"hohmann_time_of_flight_s", h.time_of_flight_s}};
-  // The coast, sampled from Kepler's equation after the first impulse.
-  dynamics::Vector6d rv = transfer::CartesianFromEquinoctial(p.initial, p.mu);
-  const Eigen::Matrix3d b = transfer::QswBasis(rv);
-  rv.tail<3>() += b * Eigen::Vector3d(r.dv0_radial_m_s, r.dv0_tangential_m_s, 0);
-  const dynamics::KeplerOrbit orbit(rv, 0.0, p.mu);
-  const double m1 = p.mass_kg * std::exp(-r.dv0_m_s / c);
-  const int n = 200;
-  for (int k = 0; k <= n; ++k) {
-    const double ts = r.time_of_flight_s * k / n;
-    Equinoctial q = transfer::EquinoctialFromCartesian(orbit.At(ts), p.mu);
-    o.rows.push_back({ts, q, k == n ? o.final_mass_kg : m1, Eigen::Vector3d::Zero()});
-  }
-  // After the second impulse: the target orbit at the arrival longitude.
-  o.final_elements = Equinoctial{t.value[0], 0, 0, t.value[3], t.value[4], o.rows.back().q.l_rad};
-  o.rows.back().q = o.final_elements;
-  return o;
-}
-
-std::string TrajectoryCsv(const std::vector<Row>& rows) {
-  std::ostringstream s;
-  s << "t_s,p_m,ex,ey,hx,hy,l_rad,a_m,e,i_deg,mass_kg,u_q,u_s,u_w\n";
-  for (const Row& r : rows) {
-    const double v[] = {r.t_s,
-                        r.q.p_m,
-                        r.q.ex,
-                        r.q.ey,
-                        r.q.hx,
-                        r.q.hy,
-                        r.q.l_rad,
-                        transfer::SemiMajorAxis(r.q),
-                        transfer::Eccentricity(r.q),
-                        transfer::Inclination(r.q) * common::kRadToDeg,
-                        r.mass_kg,
-                        r.command_qsw(0),
-                        r.command_qsw(1),
-                        r.command_qsw(2)};
-    for (std::size_t i = 0; i < sizeof(v) / sizeof(v[0]); ++i) {
-      s << (i ? "," : "") << common::FormatG(v[i], 12);
-    }
-    s << "\n";
-  }
-  return s.str();
-}
-
-json Summary(const TransferScenario& sc, const std::string& scenario_path, const Outcome& o) {
-  const transfer::TargetElements& t = sc.problem.target;
-  json target = {{"p_m", t.value[0]}, {"ex", t.value[1]}, {"ey", t.value[2]},
-                 {"hx", t.value[3]},  {"hy", t.value[4]}, {"free", json::array()}};
-  const char* names[5] = {"p", "ex", "ey", "hx", "hy"};
-  for (int j = 0; j < 5; ++j) {
-    if (t.free[j]) target["free"].push_back(names[j]);
-  }
-  json j = {{"command", "transfer"},
-            {"scenario", scenario_path},
-            {"name", sc.name},
-            {"method", ToString(sc.method)},
-            {"status", o.ok ? "converged" : "not_converged"},
-            {"duration_s", o.duration_s},
-            {"duration_h", o.duration_s / 3600},
-            {"duration_d", o.duration_s / common::kSecondsPerDay},
-            {"propellant_kg", o.propellant_kg},
-            {"final_mass_kg", o.final_mass_kg},
-            {"revolutions", o.revolutions},
-            {"thrust_n", sc.problem.thrust_n},
-            {"isp_s", sc.problem.isp_s},
-            {"mass_kg", sc.problem.mass_kg},
-            {"initial_elements", ElementsJson(sc.problem.initial)},
-            {"final_elements", ElementsJson(o.final_elements)},
-            {"target", target},
-            {"errors", ErrorsJson(o.final_elements, t)},
-            {"convergence", o.convergence}};
-  for (auto it = o.extra.begin(); it != o.extra.end(); ++it) j[it.key()] = it.value();
-  return j;
+// A file asked for inside the output folder is written into its temporary
+// folder (moved into place, and named in the manifest, with the rest);
+// anywhere else, where it was asked for.
+std::string InRunFolder(const std::string& path, const RunFolder& folder) {
+  fs::path target = fs::absolute(folder.target()).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();  // "out/x/"
+  const fs::path p = fs::absolute(path).lexically_normal();
+  return p.parent_path() == target ? (fs::path(folder.path()) / p.filename()).string() : path;
 }
 
 }  // namespace
@@ -277,33 +36,54 @@ json Summary(const TransferScenario& sc, const std::string& scenario_path, const
 int RunTransfer(const TransferArgs& a) {
   TransferScenario sc = LoadTransferScenario(a.scenario);
   if (!a.method.empty()) sc.method = ParseTransferMethod(a.method, "--method");
+  if (!a.oem.empty() && !sc.epoch) {
+    throw ScenarioError("--oem " + a.oem +
+                        ": needs the transfer's start epoch (scenario.transfer.epoch, UTC)");
+  }
   const std::string out_dir =
       a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
   RunFolder folder(out_dir, a.force, a.command_line);
-  Outcome o;
-  switch (sc.method) {
-    case TransferMethod::kMinimumTime:
-      o = RunMinimumTime(sc, a.quiet);
-      break;
-    case TransferMethod::kFeedback:
-      o = RunFeedbackMethod(sc);
-      break;
-    case TransferMethod::kTwoImpulse:
-      o = RunTwoImpulse(sc);
-      break;
+  const std::string oem_path = a.oem.empty() ? "" : InRunFolder(a.oem, folder);
+  if (!oem_path.empty()) {
+    const fs::path parent = fs::absolute(oem_path).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(parent, ec)) {
+      throw ScenarioError("--oem " + a.oem + ": the folder " + parent.string() + " does not exist");
+    }
   }
-  WriteJsonFile((fs::path(folder.path()) / "summary.json").string(), Summary(sc, a.scenario, o));
-  WriteTextFile((fs::path(folder.path()) / "trajectory.csv").string(), TrajectoryCsv(o.rows));
+  const fs::path dir(folder.path());
+  TransferRun run = RunTransferScenario(sc, a.scenario, a.quiet);
+  run.summary["command_line"] = a.command_line;
+  WriteJsonFile((dir / "summary.json").string(), run.summary);
+  WriteTextFile((dir / "trajectory.csv").string(), run.trajectory_csv);
+  WriteTextFile((dir / "orbit.csv").string(), OrbitCsv(run.orbit));
+  std::string files = "summary.json, trajectory.csv, orbit.csv";
+  const PlotResult plots = WriteTransferPlots(dir.string(), sc, run.summary, run.trajectory_rows,
+                                              run.orbit.size(), !a.no_plots);
+  for (const std::string& image : plots.images) files += ", " + image;
+  if (!plots.message.empty() && !a.quiet) std::cerr << "note: " << plots.message << "\n";
+  if (!a.no_report) {
+    WriteTransferReport(dir.string(), sc, run.summary);
+    files += ", report.html";
+  }
+  if (!a.oem.empty()) {
+    const std::string comment = "thrustsched transfer of scenario \"" + sc.name + "\", " +
+                                ToString(sc.method) + ", " + run.summary.value("orbit_source", "") +
+                                " states";
+    WriteTextFile(oem_path, FormatOem(TransferOem(run.orbit, *sc.epoch, sc.name, comment)));
+  }
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) std::cerr << "note: " << replaced << "\n";
+  const json& s = run.summary;
   std::cout << "transfer      " << sc.name << " (" << a.scenario << "), " << ToString(sc.method)
             << "\n"
-            << "status        " << (o.ok ? "converged" : "not converged") << "\n"
-            << "duration      " << common::FormatG(o.duration_s / 3600, 8) << " h ("
-            << common::FormatG(o.duration_s / common::kSecondsPerDay, 7) << " d)\n"
-            << "propellant    " << common::FormatG(o.propellant_kg, 7) << " kg\n"
-            << "output        " << out_dir << " (summary.json, trajectory.csv)\n";
-  return o.ok ? kExitOk : kExitNoSolution;
+            << "status        " << (run.converged ? "converged" : "not converged") << "\n"
+            << "duration      " << common::FormatG(s["duration_h"].get<double>(), 8) << " h ("
+            << common::FormatG(s["duration_d"].get<double>(), 7) << " d)\n"
+            << "propellant    " << common::FormatG(s["propellant_kg"].get<double>(), 7) << " kg\n"
+            << "output        " << out_dir << " (" << files << ")\n";
+  if (!a.oem.empty()) std::cout << "oem           " << a.oem << "\n";
+  return run.converged ? kExitOk : kExitNoSolution;
 }
 
 }  // namespace thrustsched::app

@@ -2,8 +2,11 @@
 // an orbit transfer from a transfer scenario file (app/transfer_scenario.h),
 // written as summary.json (duration, propellant, final elements and their
 // errors against the target, revolutions, convergence figures, the
-// Cartesian replay's check) and trajectory.csv (time, elements, mass,
-// thrust command in QSW). Fields in data/scenarios/transfer/README.md.
+// Cartesian replay's check, the end state as a station-keeping
+// initial_state), trajectory.csv (time, elements, mass, thrust command in
+// QSW), orbit.csv (Cartesian states), the plots elements.svg and orbit.svg,
+// report.html and, with --oem, a CCSDS OEM. Fields in
+// data/scenarios/transfer/README.md.
 //
 //   app::TransferArgs a;
 //   a.scenario = "data/scenarios/transfer/gto_geo_caillau_60n.json";
@@ -21,7 +24,10 @@ struct TransferArgs {
   std::string out_dir;  // empty: out/<scenario file stem>
   std::string method;   // empty: the scenario's
   bool quiet = false;
-  bool force = false;  // replace an earlier run's files in out_dir
+  bool force = false;      // replace an earlier run's files in out_dir
+  bool no_plots = false;   // write the gnuplot scripts, do not run gnuplot
+  bool no_report = false;  // no report.html
+  std::string oem;         // also write the trajectory as a CCSDS OEM here (needs "epoch")
   std::string command_line;
 };
 

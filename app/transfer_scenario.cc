@@ -180,7 +180,7 @@ TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::st
   // A misspelt key is named (with its closest accepted name) before any
   // required field it hides is reported missing.
   for (const char* key : {"mu_m3_s2", "initial", "target", "thrust_n", "isp_s", "mass_kg", "method",
-                          "shooting", "feedback"}) {
+                          "epoch", "shooting", "feedback"}) {
     t.Has(key);
   }
   t.Finish();
@@ -192,6 +192,9 @@ TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::st
   p.isp_s = t.Number("isp_s", Bound::kPositive);
   p.mass_kg = t.Number("mass_kg", Bound::kPositive);
   s.method = ParseTransferMethod(t.String("method"), t.FieldPath("method"));
+  if (const std::optional<std::string> epoch = t.OptionalString("epoch")) {
+    s.epoch = Wrap(t.FieldPath("epoch"), [&] { return dynamics::Epoch::Parse(*epoch); });
+  }
   if (t.Has("shooting")) ReadShooting(t.Object("shooting"), &s);
   if (t.Has("feedback")) ReadFeedback(t.Object("feedback"), &s);
   t.Finish();

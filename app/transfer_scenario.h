@@ -8,7 +8,8 @@
 //                                "raan_deg": 0, "arg_perigee_deg": 0, "true_anomaly_deg": 0}},
 //      "target":  {"a_m": 42165e3, "ex": 0, "ey": 0, "hx": 0, "hy": 0, "free": []},
 //      "thrust_n": 0.35, "isp_s": 2000, "mass_kg": 2000,
-//      "method": "feedback"}}
+//      "method": "feedback",
+//      "epoch": "2034-01-01T00:00:00Z"}}   // optional, UTC: dates the hand-over state
 //
 //   app::TransferScenario s = app::LoadTransferScenario("data/scenarios/transfer/x.json");
 //   transfer::MinTimeSolution r = transfer::SolveMinTime(s.problem, ...);
@@ -27,6 +28,7 @@
 #include <string>
 
 #include "app/json_reader.h"
+#include "dynamics/time.h"
 #include "transfer/lyapunov_feedback.h"
 #include "transfer/min_time_shooting.h"
 
@@ -44,6 +46,9 @@ struct TransferScenario {
   std::string name, description;
   TransferMethod method = TransferMethod::kMinimumTime;
   transfer::MinTimeProblem problem;
+  /// The transfer's start (UTC), "epoch": dates the end state handed over to
+  /// station keeping and the OEM; none: times are relative to the start.
+  std::optional<dynamics::Epoch> epoch;
   // minimum_time
   /// Continue on the thrust from this one (a converged shooting there from
   /// the first guess) down to problem.thrust_n; none: shoot directly.

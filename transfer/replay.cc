@@ -42,9 +42,12 @@ ReplayResult Replay(const MinTimeProblem& p, double duration_s, const QswCommand
   std::array<double, 7> y{};
   for (int i = 0; i < 3; ++i) y[i] = rv0(i) / kLength, y[3 + i] = rv0(3 + i) / kSpeed;
   y[6] = p.mass_kg;
-  internal::Integrate(rhs, y, 0.0, duration_s / kTime, tolerance, 0.25,
-                      [](double, const std::array<double, 7>&) { return true; });
   ReplayResult r;
+  internal::Integrate(rhs, y, 0.0, duration_s / kTime, tolerance, 0.25,
+                      [&](double t, const std::array<double, 7>& x) {
+                        r.states.push_back({t * kTime, si_state(x), x[6]});
+                        return true;
+                      });
   r.final_rv = si_state(y);
   r.final_mass_kg = y[6];
   const dynamics::KeplerianElements k =

@@ -27,7 +27,17 @@ namespace thrustsched::transfer {
 using QswCommand =
     std::function<Eigen::Vector3d(double t_s, const dynamics::Vector6d& rv, double mass_kg)>;
 
+/// One accepted integration step of the replay.
+struct ReplayState {
+  double t_s = 0.0;
+  dynamics::Vector6d rv = dynamics::Vector6d::Zero();  // m, m/s
+  double mass_kg = 0.0;
+};
+
 struct ReplayResult {
+  /// The start and every accepted step (at most 0.25 h apart), for plots
+  /// and ephemerides; the last one is the final state.
+  std::vector<ReplayState> states;
   dynamics::Vector6d final_rv = dynamics::Vector6d::Zero();
   double final_mass_kg = 0.0;
   double final_a_m = 0.0, final_e = 0.0, final_i_rad = 0.0;  // dynamics::KeplerianFromCartesian

@@ -28,6 +28,7 @@ void BindScenario(py::module_& m);  // scenario_bindings.cc
 void BindProblem(py::module_& m);   // problem_bindings.cc
 void BindSimulate(py::module_& m);  // simulate_bindings.cc
 void BindCli(py::module_& m);       // cli_bindings.cc
+void BindTransfer(py::module_& m);  // transfer_bindings.cc
 
 /// Solve settings given by keyword in Python; unset ones keep the problem's
 /// (scenario file) values.

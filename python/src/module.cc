@@ -40,4 +40,5 @@ PYBIND11_MODULE(_core, m) {
   thrustsched::python::BindBuilt(m);
   thrustsched::python::BindSimulate(m);
   thrustsched::python::BindCli(m);
+  thrustsched::python::BindTransfer(m);
 }

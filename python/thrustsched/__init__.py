@@ -12,7 +12,8 @@
 Also: ts.ScheduleProblem (your own Phi, Gamma, drift as numpy arrays),
 ts.dynamics (the shipped models and their discretisation), ts.milp (build,
 solve and write MILPs; extend a schedule MILP from ts.build), ts.simulate
-(the year loop), ts.sweep (campaigns: sweeps and Monte Carlo runs on
+(the year loop), ts.transfer (orbit raising: minimum time, Lyapunov
+feedback, two impulses; data/scenarios/transfer/README.md), ts.sweep (campaigns: sweeps and Monte Carlo runs on
 Dask; data/campaigns/README.md), ts.data_path (the shipped scenarios and
 campaigns, found from the package, whatever the working directory). Every
 object is the C++ library's (thrustsched._core); the CLI's documentation
@@ -27,13 +28,15 @@ from ._problem import BuiltSchedule, ScheduleProblem
 from ._results import CheckResult, Report, SolveResult
 from ._scenario import Scenario, ScenarioError
 from ._simulate import SimulationResult, simulate
+from ._transfer import TransferResult, transfer
 
 ThrusterSet = _core.dynamics.ThrusterSet
 __version__ = _core.__version__
 solver_version = _core.solver_version
 
 __all__ = [
-    "Scenario", "ScenarioError", "solve", "check", "export", "build", "simulate",
-    "SolveResult", "CheckResult", "Report", "SimulationResult", "ScheduleProblem", "BuiltSchedule",
+    "Scenario", "ScenarioError", "solve", "check", "export", "build", "simulate", "transfer",
+    "SolveResult", "CheckResult", "Report", "SimulationResult", "TransferResult", "ScheduleProblem",
+    "BuiltSchedule",
     "ThrusterSet", "dynamics", "milp", "sweep", "data_path", "solver_version", "__version__",
 ]

@@ -3,10 +3,13 @@
 // optimum, and bad input (exit 2, the field and the value named).
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "app/ccsds_oem.h"
+#include "app/plots.h"
 #include "app/transfer_scenario.h"
 #include "tests/app/cli_runner.h"
 
@@ -63,6 +66,62 @@ TEST(TransferCli, FeedbackMethodWithItsOptimalEnd) {
       1e-6);
 }
 
+// The run folder of a transfer: the plots (gnuplot scripts always, SVGs when
+// gnuplot runs), report.html, orbit.csv and the OEM asked for inside the
+// folder, all named in the manifest; --no-plots and --no-report leave them out.
+TEST(TransferCli, PlotsReportAndOemAreWrittenAndNamedInTheManifest) {
+  const std::string dir = TempDir("transfer_files");
+  nlohmann::json j = nlohmann::json::parse(ReadFile(kScenarios + "gto_geo_caillau_60n.json"));
+  j["transfer"]["epoch"] = "2034-01-01T00:00:00Z";
+  WriteFile(dir + "/60n.json", j.dump(2));
+  const std::string out = dir + "/out";
+  RunResult r = RunCli(
+      {"transfer", dir + "/60n.json", "--out", out, "--quiet", "--oem", out + "/transfer.oem"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  const nlohmann::json manifest = ReadJson(out + "/.thrustsched-run.json");
+  std::set<std::string> files(manifest["files"].begin(), manifest["files"].end());
+  for (const char* f : {"summary.json", "trajectory.csv", "orbit.csv", "elements.gp", "orbit.gp",
+                        "report.html", "transfer.oem"}) {
+    EXPECT_EQ(files.count(f), 1u) << f << " not in " << manifest.dump();
+  }
+  const std::string report = ReadFile(out + "/report.html");
+  EXPECT_NE(report.find("Hand-over to station keeping"), std::string::npos);
+  EXPECT_NE(report.find("14.80036"), std::string::npos);  // the duration, h
+  if (app::GnuplotAvailable()) {
+    EXPECT_EQ(files.count("elements.svg"), 1u);
+    EXPECT_EQ(files.count("orbit.svg"), 1u);
+    EXPECT_NE(report.find("<svg"), std::string::npos);
+  }
+  const CsvRows orbit = ReadCsv(out + "/orbit.csv");
+  EXPECT_EQ(orbit.header, "t_s,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,mass_kg");
+  EXPECT_GT(orbit.rows.size(), 50u);
+  const app::OemFile oem = app::ParseOem(ReadFile(out + "/transfer.oem"), "transfer.oem");
+  ASSERT_EQ(oem.segments.size(), 1u);
+  EXPECT_EQ(oem.segments[0].frame, dynamics::InertialFrame::kEme2000);
+  EXPECT_EQ(oem.segments[0].start_time.ToIso8601(), "2034-01-01T00:00:00Z");
+  EXPECT_EQ(oem.segments[0].points.size(), orbit.rows.size());
+
+  r = RunCli({"transfer", dir + "/60n.json", "--out", out, "--quiet", "--force", "--no-plots",
+              "--no-report"});
+  ASSERT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_TRUE(std::filesystem::exists(out + "/elements.gp"));
+  EXPECT_FALSE(std::filesystem::exists(out + "/elements.svg"));
+  EXPECT_FALSE(std::filesystem::exists(out + "/report.html"));
+  EXPECT_FALSE(std::filesystem::exists(out + "/transfer.oem"));  // the earlier run's, removed
+
+  // An OEM needs the epoch.
+  r = RunCli({"transfer", kScenarios + "gto_geo_caillau_60n.json", "--out", dir + "/o2", "--quiet",
+              "--oem", dir + "/x.oem"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_NE(r.err.find("scenario.transfer.epoch"), std::string::npos) << r.err;
+  // Nor is a folder that does not exist (refused before the transfer runs).
+  r = RunCli({"transfer", dir + "/60n.json", "--out", dir + "/o3", "--quiet", "--oem",
+              dir + "/missing/x.oem"});
+  EXPECT_EQ(r.exit_code, 2) << r.Describe();
+  EXPECT_NE(r.err.find("--oem"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/o3/summary.json"));
+}
+
 TEST(TransferCli, Map434TwoImpulseIsHohmann) {
   const std::string out = TempDir("transfer_map434");
   const RunResult r =
@@ -73,6 +132,13 @@ TEST(TransferCli, Map434TwoImpulseIsHohmann) {
   EXPECT_NEAR(s["duration_h"].get<double>(), 5.2692, 5e-5);
   const double unit = 42165e3 / 3600.0;
   EXPECT_NEAR(s["two_impulse"]["cost_m2_s2"].get<double>() / (unit * unit), 0.0295189, 5e-7);
+  // No replay: the orbit is Kepler's coast, and still drawn.
+  EXPECT_EQ(s["orbit_source"], "coast");
+  if (app::GnuplotAvailable()) {
+    EXPECT_GT(std::filesystem::file_size(out + "/orbit.svg"), 1000u)
+        << ReadFile(out + "/gnuplot.log");
+    EXPECT_GT(std::filesystem::file_size(out + "/elements.svg"), 1000u);
+  }
 }
 
 TEST(TransferCli, BadInputExitsTwoNamingTheFieldAndValue) {

@@ -1,0 +1,94 @@
+"""Orbit transfers (``thrustsched transfer``) from Python.
+
+    res = transfer(data_path("scenarios/transfer/gto_geo_caillau_60n.json"))
+    res.summary["duration_h"]        # 14.800364 (summary.json as a dict)
+    res.trajectory                   # DataFrame of trajectory.csv
+    res.orbit                        # DataFrame of orbit.csv (Cartesian states)
+    res.summary["final_state"]       # a station-keeping scenario's initial_state
+"""
+from __future__ import annotations
+
+import io
+import json
+import os
+from collections.abc import Mapping
+from typing import Any, Dict, Optional, Union
+
+from . import _core
+from ._scenario import PathLike, ScenarioError, _check_finite
+
+
+class TransferResult:
+    """A transfer's results, the CLI's files without the folder:
+    ``summary`` (summary.json as a dict: ``status``, ``duration_s``/``_h``/``_d``,
+    ``propellant_kg``, ``final_elements``, ``errors``, ``convergence``,
+    ``final_state``, ...; fields in data/scenarios/transfer/README.md),
+    ``trajectory`` (trajectory.csv: time, equinoctial elements, a, e, i,
+    mass, thrust command in QSW) and ``orbit`` (orbit.csv: position,
+    velocity and mass), both pandas DataFrames."""
+
+    def __init__(self, summary: Dict[str, Any], trajectory_csv: str, orbit_csv: str):
+        self.summary = summary
+        self._trajectory_csv = trajectory_csv
+        self._orbit_csv = orbit_csv
+        self._trajectory = None
+        self._orbit = None
+
+    @property
+    def status(self) -> str:
+        return self.summary["status"]
+
+    @property
+    def converged(self) -> bool:
+        return self.summary["status"] == "converged"
+
+    @property
+    def trajectory(self):
+        if self._trajectory is None:
+            import pandas as pd
+
+            self._trajectory = pd.read_csv(io.StringIO(self._trajectory_csv))
+        return self._trajectory
+
+    @property
+    def orbit(self):
+        if self._orbit is None:
+            import pandas as pd
+
+            self._orbit = pd.read_csv(io.StringIO(self._orbit_csv))
+        return self._orbit
+
+    def __repr__(self) -> str:
+        s = self.summary
+        return (f"TransferResult({s['method']}, {s['status']}, {s['duration_h']:.6g} h, "
+                f"propellant {s['propellant_kg']:.6g} kg)")
+
+
+def transfer(scenario: Union[PathLike, Mapping], method: Optional[str] = None) -> TransferResult:
+    """Runs an orbit transfer as ``thrustsched transfer`` does (minimum time by
+    shooting, Lyapunov feedback or two impulses) and returns a
+    :class:`TransferResult` (no files written).
+
+    ``scenario`` is a transfer scenario file's path or its content as a dict
+    (``{"name": ..., "transfer": {...}}``, data/scenarios/transfer/README.md);
+    ``method`` (``"minimum_time"``, ``"feedback"``, ``"two_impulse"``)
+    overrides the scenario's. A bad field raises :class:`ScenarioError` (a
+    ``ValueError``) with the CLI's message (field path and value). The GIL
+    is released while the transfer runs (it cannot be interrupted: the
+    shipped 0.2 N case takes about 20 s)."""
+    if isinstance(scenario, (str, os.PathLike)):
+        source = os.fspath(scenario)
+        if os.path.isdir(source):
+            raise ScenarioError(f"{source}: is a folder, not a transfer scenario file")
+        with open(source, "r", encoding="utf-8") as f:
+            text = f.read()
+    elif isinstance(scenario, Mapping):
+        _check_finite(dict(scenario), "scenario")
+        source = getattr(scenario, "path", None) or ""
+        text = json.dumps(dict(scenario))
+    else:
+        raise TypeError(f"transfer: scenario must be a path or a dict, got {type(scenario).__name__}")
+    if method is not None and not isinstance(method, str):
+        raise TypeError(f"transfer: method must be a string, got {type(method).__name__}")
+    summary, trajectory, orbit = _core.transfer(text, source, method)
+    return TransferResult(json.loads(summary), trajectory, orbit)
