@@ -134,7 +134,7 @@ Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
     o.orbit_source = "replay";
   }
   o.extra["propellant_check_kg"] =
-      sc.problem.thrust_n * s.duration_s / (transfer::kStandardGravity * sc.problem.isp_s);
+      sc.problem.thrust_n * s.duration_s / (common::kStandardGravity_m_s2 * sc.problem.isp_s);
   return o;
 }
 
@@ -187,7 +187,7 @@ Outcome RunTwoImpulse(const TransferScenario& sc) {
   Outcome o;
   o.ok = true;
   o.duration_s = r.time_of_flight_s;
-  const double c = transfer::kStandardGravity * p.isp_s;
+  const double c = common::kStandardGravity_m_s2 * p.isp_s;
   o.final_mass_kg = p.mass_kg * std::exp(-(r.dv0_m_s + r.dvf_m_s) / c);
   o.propellant_kg = p.mass_kg - o.final_mass_kg;
   o.revolutions = 0.5;

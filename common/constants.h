@@ -13,6 +13,8 @@ inline constexpr double kRadToDeg = 180.0 / kPi;
 /// A day of the time scales used here (UTC days with a leap second are the
 /// time module's business, dynamics/time.h).
 inline constexpr double kSecondsPerDay = 86400.0;
+/// Standard gravity g0 of the specific impulse (mass flow = thrust / (g0 Isp)).
+inline constexpr double kStandardGravity_m_s2 = 9.80665;
 
 }  // namespace thrustsched::common
 

@@ -12,7 +12,6 @@ namespace thrustsched::dynamics {
 namespace {
 
 // Standard gravity used in the definition of specific impulse (m/s^2).
-constexpr double kStandardGravity = 9.80665;
 using common::kDegToRad;
 
 void RequirePositive(const char* where, const char* field, double value) {
@@ -148,6 +147,8 @@ Eigen::MatrixXd ThrusterSet::AccelerationMatrix() const {
   return u;
 }
 
-double ThrusterSet::MassFlow() const { return thrust_n_ / (kStandardGravity * isp_s_); }
+double ThrusterSet::MassFlow() const {
+  return thrust_n_ / (common::kStandardGravity_m_s2 * isp_s_);
+}
 
 }  // namespace thrustsched::dynamics

@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/constants.h"
 #include "common/error.h"
 #include "transcription/internal/row_buffer.h"
 #include "transcription/partial_maps.h"
@@ -21,7 +22,6 @@ namespace {
 using internal::RowBuffer;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kG0 = 9.80665;  // m/s^2, standard gravity for Isp
 
 double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -76,7 +76,8 @@ void ComputeTotals(const dynamics::ThrusterSet& thrusters, Schedule* s) {
   for (const Impulse& im : s->impulses) {
     s->consumption_l1_m_s += thrusters.L1Factor(im.thruster) / accel * im.delta_v_m_s;
     s->delta_v_m_s += im.delta_v_m_s;
-    s->propellant_kg += thrusters.mass_kg() * im.delta_v_m_s / (kG0 * thrusters.isp_s());
+    s->propellant_kg +=
+        thrusters.mass_kg() * im.delta_v_m_s / (common::kStandardGravity_m_s2 * thrusters.isp_s());
   }
 }
 

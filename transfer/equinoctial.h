@@ -39,8 +39,6 @@ using Matrix63 = Eigen::Matrix<double, 6, 3>;
 /// Earth's gravitational constant of Caillau, Gergaud & Noailles 2003 and of
 /// the MAP434 course (398600.47 km^3/s^2), m^3/s^2.
 inline constexpr double kMuEarth = 398600.47e9;
-/// Standard gravity for the specific impulse, m/s^2.
-inline constexpr double kStandardGravity = 9.80665;
 
 struct Equinoctial {
   double p_m = 0.0;  // semi-latus rectum

@@ -153,7 +153,8 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
   ScaledUnits u;
   u.mu_si = p.mu;
   const double mu = u.mu(), thrust = u.Thrust(p.thrust_n);
-  const double flow = thrust / u.Speed(kStandardGravity * p.isp_s);  // kg/h at full thrust
+  const double flow =
+      thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s);  // kg/h at full thrust
   const double l0 = p.initial.l_rad;
   OnOffWindows windows;
   windows.p = o.on_off_p;

@@ -64,7 +64,8 @@ struct ExtremalFlow {
 
 ExtremalFlow MakeFlow(const MinTimeProblem& p, const ScaledUnits& u) {
   const double thrust = u.Thrust(p.thrust_n);
-  return ExtremalFlow{u.mu(), thrust, p.mass_kg, thrust / u.Speed(kStandardGravity * p.isp_s)};
+  return ExtremalFlow{u.mu(), thrust, p.mass_kg,
+                      thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s)};
 }
 
 ScaledUnits UnitsOf(const MinTimeProblem& p) {
@@ -228,7 +229,7 @@ ShootingGuess InitialGuess(const MinTimeProblem& p) {
   const double de =
       std::abs(Eccentricity(p.initial) - std::hypot(p.target.value[1], p.target.value[2]));
   const double dv = std::abs(v0 - vt) + vt * (di + de / 2);
-  const double c = kStandardGravity * p.isp_s;
+  const double c = common::kStandardGravity_m_s2 * p.isp_s;
   ShootingGuess g;
   g.duration_s = p.mass_kg * c * (1 - std::exp(-dv / c)) / p.thrust_n;
   g.costate = -LyapunovGradient(u.ToScaled(p.initial), p.target, LyapunovWeights{}, u);

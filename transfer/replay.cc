@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "common/constants.h"
 #include "common/format.h"
 #include "dynamics/keplerian.h"
 #include "transfer/internal/integrator.h"
@@ -22,8 +23,8 @@ ReplayResult Replay(const MinTimeProblem& p, double duration_s, const QswCommand
   // Scaled Cartesian state: position in Mm, velocity in Mm/h, mass in kg.
   constexpr double kLength = 1e6, kTime = 3600.0, kSpeed = kLength / kTime;
   const double mu = p.mu * kTime * kTime / (kLength * kLength * kLength);
-  const double thrust = p.thrust_n * kTime * kTime / kLength;             // kg Mm / h^2
-  const double flow = p.thrust_n / (kStandardGravity * p.isp_s) * kTime;  // kg / h
+  const double thrust = p.thrust_n * kTime * kTime / kLength;  // kg Mm / h^2
+  const double flow = p.thrust_n / (common::kStandardGravity_m_s2 * p.isp_s) * kTime;  // kg / h
   auto si_state = [&](const std::array<double, 7>& y) {
     dynamics::Vector6d rv;
     for (int i = 0; i < 3; ++i) rv(i) = y[i] * kLength, rv(3 + i) = y[3 + i] * kSpeed;

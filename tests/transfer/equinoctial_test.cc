@@ -90,9 +90,9 @@ TEST(EquinoctialTest, HandWrittenDerivativesMatchFiniteDifferences) {
 
 TEST(EquinoctialTest, ScaledUnitsAreCaillausMegametresAndHours) {
   ScaledUnits u;
-  EXPECT_NEAR(u.mu(), 5165.8620912, 1e-6);                              // Mm^3/h^2
-  EXPECT_NEAR(u.Thrust(60.0), 60 * 12.96, 1e-12);                       // kg Mm / h^2
-  EXPECT_NEAR(1 / u.Speed(kStandardGravity * 1994.75), 1.42e-2, 1e-6);  // beta, h/Mm
+  EXPECT_NEAR(u.mu(), 5165.8620912, 1e-6);                                           // Mm^3/h^2
+  EXPECT_NEAR(u.Thrust(60.0), 60 * 12.96, 1e-12);                                    // kg Mm / h^2
+  EXPECT_NEAR(1 / u.Speed(common::kStandardGravity_m_s2 * 1994.75), 1.42e-2, 1e-6);  // beta, h/Mm
 }
 
 }  // namespace

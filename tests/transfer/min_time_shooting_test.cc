@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/constants.h"
 #include "transfer/replay.h"
 
 namespace thrustsched::transfer {
@@ -14,7 +15,7 @@ namespace {
 constexpr double kHour = 3600.0;
 
 double Propellant(const MinTimeProblem& p, double duration_s) {
-  return p.thrust_n * duration_s / (kStandardGravity * p.isp_s);
+  return p.thrust_n * duration_s / (common::kStandardGravity_m_s2 * p.isp_s);
 }
 
 // Caillau, Gergaud & Noailles 2003 at 60 N: 14.8004 h (the shooting value of

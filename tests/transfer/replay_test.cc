@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/constants.h"
 #include "dynamics/two_body.h"
 
 namespace thrustsched::transfer {
@@ -36,7 +37,7 @@ TEST(ReplayTest, TangentialThrustSpiralMatchesTheRocketEquation) {
   const double t = 20 * 86400.0;
   const ReplayResult r = Replay(
       p, t, [](double, const dynamics::Vector6d&, double) { return Eigen::Vector3d(0, 1, 0); });
-  const double c = kStandardGravity * p.isp_s;
+  const double c = common::kStandardGravity_m_s2 * p.isp_s;
   EXPECT_NEAR(r.final_mass_kg, p.mass_kg - p.thrust_n * t / c, 1e-9);
   const double dv = c * std::log(p.mass_kg / r.final_mass_kg);
   const double vc0 = std::sqrt(p.mu / 7000e3), vc1 = std::sqrt(p.mu / r.final_a_m);
