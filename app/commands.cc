@@ -266,6 +266,7 @@ transcription::SolveScheduleOptions CliSolveOptions(const SolveArgs& a, const Sc
   opt.build = s.build;
   opt.milp = s.solve;
   opt.check_schedule = false;  // checked by CheckRun, with its own timing and messages
+  opt.search = s.search_options;
   opt.search.enabled = s.search;
   const bool quiet = a.quiet;
   // The best incumbent seen so far: progress reports between incumbents may

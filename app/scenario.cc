@@ -3,6 +3,7 @@
 // window, terminal, solver) is read by the same field-checking helpers, in the
 // order data/scenarios/README.md documents them, so a field is found in one place.
 #include "app/scenario.h"
+#include "app/search_section.h"
 
 #include "app/conjunction_section.h"
 
@@ -473,7 +474,8 @@ void ParseSolver(JsonObject o, Scenario* s) {
   if (auto d = o.OptionalNumber("diagnosis_time_limit_s", Bound::kNonNegative)) {
     s->diagnosis_time_limit_s = *d;
   }
-  s->search = o.OptionalBool("search").value_or(s->search);
+  ParseSearch(o, "search", &s->search_options);
+  s->search = s->search_options.enabled;
   o.Finish();
   std::string err;
   if (!so.IsValid(&err)) throw ScenarioError(o.path() + ": " + err);

@@ -37,6 +37,7 @@
 #include "transcription/conjunction_solve.h"
 #include "transcription/problem.h"
 #include "transcription/schedule_milp.h"
+#include "transcription/search/search_options.h"
 
 namespace thrustsched::app {
 
@@ -96,6 +97,9 @@ struct Scenario {
   /// solver.search: the problem-aware search (transcription/search.h) in
   /// on-off mode; false hands the whole MILP to CBC (--no-search).
   bool search = true;
+  /// solver.search as an object: the plan, the phases left out, each
+  /// phase's options (app/search_section.h); `search` is its `enabled`.
+  transcription::SearchOptions search_options;
   VerdictOptions verdict;
 
   /// Verification settings of the "conjunction" section (set iff

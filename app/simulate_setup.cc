@@ -80,6 +80,7 @@ void ParseLongHorizon(SimulationSetup* setup) {
   o.solve.check = s.check;
   o.solve.check.nonlinear.reset();  // the driver replays from the true state
   o.solve.check_schedule = true;
+  o.solve.search = s.search_options;
   o.solve.search.enabled = s.search;
   const nlohmann::json* solver = s.raw.contains("solver") ? &s.raw.at("solver") : nullptr;
   const bool solver_time = solver != nullptr && solver->contains("time_limit_s");

@@ -12,59 +12,43 @@
 // slots. The total S_i = sum_j on[i][j] of each thruster is an integer in
 // every schedule, so S_i <= floor(y_i) or S_i >= ceil(y_i) for the
 // relaxation's y_i: two LPs, each the relaxation with that total bounded,
-// and each usually needs a costlier mix of thrusters (the 2034-04-02 six-thruster
-// week of data/scenarios/hard/, `thrustsched-bench --cases
-// 'solver_speed-hard_year_ideal6_fixed_w14*-search'`: relaxation 0.3386 m/s,
-// 20.66 steps; +T is on for 0.45 slots, and the bound is 0.3770 m/s with it
-// off, 0.3606 with it on for a slot or more, so every schedule costs 22
-// steps, the heuristic's incumbent). CBC's branching on single slots did not
-// move this bound in 32 s (previous release, same week): aggregated
-// branching, as on the number of vehicles in routing. The summed total of
-// thrusters that stand in for each other (TotalGroups: +N and -N) is an
-// integer too, and is split before its members: the LP trades a fractional
-// slot between them at no cost, so a bound on one alone moves the other
-// (week 52 of data/scenarios/hard/: six LPs on +N and -N alone left the
-// bound at the relaxation's 80 steps, one split of their sum at 77.51 slots
-// raised it to 81).
+// each usually needing a costlier mix of thrusters; CBC's branching on
+// single slots does not move this bound (aggregated branching, as on the
+// number of vehicles in routing). The summed total of thrusters that stand
+// in for each other (TotalGroups: +N and -N) is an integer too, and is
+// split before its members: the LP trades a fractional slot between them at
+// no cost, so a bound on one alone moves the other.
 //
 // Windows: where the incumbent is one step above the lowest leaf and every
 // total is whole, the tree goes on with the number of slots each fired
 // thruster is on in each half, quarter, ... of the horizon (WindowGroups),
-// an integer in every schedule too. A week that needs a few slots of one
-// thruster (75 deg E, 2031-09-08, data/scenarios/hard/: +T at 3.74 slots in
-// the relaxation) has a leaf +T >= 4 whose LP costs exactly 4 slots, and
-// no whole-horizon total can cut it; its exact MILP over +T's 2016 slots
-// neither found nor refuted a 4-slot schedule in 239 s (of a 400-s solve,
-// one thread). Splitting the
-// windows closed every leaf at 5 slots, the incumbent, in 274 LPs (27 s).
+// an integer in every schedule too: whether a leaf's few whole slots can
+// fall where its LP spreads them.
 //
 // The tree is searched best first: the open leaf with the lowest bound is
-// split on its most fractional total. Its two children's LPs are dual
-// simplex solves in one LP session (milp::LpSession; WithGroupTotalColumns:
-// a leaf only changes the bounds of one column per group), each from its
-// parent's basis; the root's basis comes from the crossover from the
-// relaxation's interior point when the caller gives its duals (2 s on a
-// six-thruster GEO week), or else from CLP's interior point with its
-// crossover (11-13 s), then 0.1-3 s per leaf, where each leaf LP from
-// scratch took 10-20 s. Without `warm`, the previous
-// release's tree: each leaf LP from scratch by lp_options' algorithm
+// split on its most fractional total. With `warm`, its two children's LPs
+// are dual simplex solves in one LP session (milp::LpSession;
+// WithGroupTotalColumns: a leaf only changes the bounds of one column per
+// group), each from its parent's basis; the root's basis comes from the
+// crossover from the relaxation's interior point when the caller gives its
+// duals, or else from CLP's interior point with its crossover. Without
+// `warm`, each leaf LP from scratch by lp_options' algorithm
 // (WithGroupTotals), the two of a split side by side when
-// lp_options.threads >= 2 (milp::Solver::SolveLpRelaxations: one child
-// process each, both forked from the calling thread).
+// lp_options.threads >= 2 (milp::Solver::SolveLpRelaxations).
 // Each leaf's bound is the safe dual bound of its LP (milp/lp_bound.h,
 // valid whatever the LP's accuracy), rounded up to the step and at least
 // its parent's. The LP's bounds on the totals are elastic (a penalty per
 // slot outside them: 100 times the objective's scale, once it in the warm
-// tree), so an infeasible leaf is cut off by a high bound: CLP takes minutes
-// to call a leaf LP of a GEO week infeasible, seconds to solve its elastic
-// one. The leaves cover every schedule, so the lowest leaf bound is a bound
-// of the MILP. Stops when that bound reaches the incumbent (proof) or is
-// within lp_options' gap of it, after max_lps LPs (on the totals; window
-// splits have TreeOptions::max_window_lps more), on the time limit or
-// interrupt of lp_options (the bound of what was solved stays valid), or
-// when the lowest leaf has integral totals (and windows, where split).
-// Deterministic for the same input (no wall-clock decision) unless a time
-// limit or an interrupt cuts it.
+// tree), so an infeasible leaf is cut off by a high bound rather than by an
+// LP that CLP takes minutes to call infeasible. The leaves cover every
+// schedule, so the lowest leaf bound is a bound of the MILP. Stops when
+// that bound reaches the incumbent (proof) or is within lp_options' gap of
+// it, after max_lps LPs (on the totals; window splits have
+// TreeOptions::max_window_lps more), on the time limit or interrupt of
+// lp_options (the bound of what was solved stays valid), or when the lowest
+// leaf has integral totals (and windows, where split). Deterministic for
+// the same input (no wall-clock decision) unless a time limit or an
+// interrupt cuts it. Measurements: docs/search.md.
 #ifndef THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
 #define THRUSTSCHED_TRANSCRIPTION_TOTAL_BRANCHING_H_
 
@@ -116,8 +100,7 @@ std::vector<ThrusterGroup> ThrusterAxes(const dynamics::ThrusterSet& thrusters);
 /// orbit later does what +N does), not +T and -T (opposite drifts) nor +R
 /// and -R (opposite along-track offsets). The thesis' four Anzel thrusters
 /// share no axis: one group per thruster. Without `axis_groups`, single
-/// thrusters only (the previous release's tree, kept for comparison in the
-/// bench).
+/// thrusters only.
 std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_groups = true);
 
 /// The group the tree splits a leaf on, given each group's total y[g] at
@@ -127,12 +110,7 @@ std::vector<ThrusterGroup> TotalGroups(const ScheduleMilp& milp, bool axis_group
 /// whole. With `windows`, the windows (level >= 1) instead: those of the
 /// thruster with the fewest slots among the thrusters with a fractional
 /// window, the coarsest level with a fractional total, nearest to half a
-/// slot there. A thruster's few whole slots are the hardest to place: on
-/// cycle 41 of a six-thruster year (2034-10-08; the lowest leaf fires 11
-/// slots of +N and -N and 3 of -T, the incumbent a step above), the windows
-/// of every fired thruster split +N and -N's slots in 1000 LPs (695 s) that
-/// all kept the leaf's bound; those of -T first proved the incumbent
-/// optimal in 23 LPs.
+/// slot there. A thruster's few whole slots are the hardest to place.
 int SplitGroup(const std::vector<ThrusterGroup>& groups, const std::vector<double>& y,
                bool windows);
 
@@ -187,8 +165,7 @@ struct TotalBranching {
   std::vector<OpenLeaf> open;
 };
 
-/// The tree's shape; each off gives an earlier release's tree, kept for
-/// comparison in the bench.
+/// The tree's shape.
 struct TreeOptions {
   /// As in TotalGroups.
   bool axis_groups = true;
@@ -204,14 +181,12 @@ struct TreeOptions {
   /// root's basis took (at least 1000), the leaf keeping its parent's bound
   /// (where windows may be split, the lowest such leaf is solved again
   /// without the limit, once, rather than end the tree).
-  /// Off: no limit, the previous release's tree (kept for comparison in the
-  /// bench).
+  /// Off: no limit.
   bool leaf_pivot_limit = true;
   /// Levels of windows (WindowGroups) the tree splits once every thruster's
   /// total is whole, where the incumbent is one objective step above the
   /// lowest leaf's bound, those of the thruster with the fewest slots first
-  /// (SplitGroup); 0: whole-horizon totals only (the previous release's
-  /// tree, kept for comparison in the bench).
+  /// (SplitGroup); 0: whole-horizon totals only.
   int window_levels = 5;
   /// LPs of window splits, on top of the call's max_lps for the totals.
   int max_window_lps = 1000;
@@ -225,9 +200,7 @@ struct TreeOptions {
 /// the relaxation's row duals at root_x (an interior point without
 /// crossover, say). The tree's root basis then comes from the crossover
 /// from that point (milp::LpSession::CrossOverFrom, each group's total at
-/// root_x), not from a second interior point with its crossover: on the
-/// six-thruster weeks 10 and 33 of data/scenarios/hard/, 1.2-2 s against
-/// 13-14 s.
+/// root_x), not from a second interior point with its crossover.
 TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solver& solver,
                                       const milp::SolveOptions& lp_options,
                                       const Eigen::VectorXd& root_x, double root_bound,
@@ -237,11 +210,15 @@ TotalBranching BranchOnThrusterTotals(const ScheduleMilp& milp, const milp::Solv
 
 /// Whether every schedule better than `incumbent` costs exactly `bound`:
 /// the incumbent at most one objective step above it (and a step known).
-/// Where the tree splits windows, and where the search runs it again with
-/// them (search.h, step 4d).
+/// Where the tree splits windows, and where the search runs them (the phase
+/// "windows", docs/search.md).
 inline bool OneStepAbove(double incumbent, double bound, double step) {
   return std::isfinite(incumbent) && step > 0.0 && incumbent - bound <= step * (1.0 + 1e-6);
 }
+
+/// Totals closer than this to an integer are not branched on (the interior
+/// point stops short of exact vertices) and count as whole.
+inline constexpr double kIntegralTotal = 1e-3;
 
 /// Whether bounds [lower, upper] on a group's total cut anything: a total
 /// lies in [0, group.MaxTotal(num_intervals)] anyway.
@@ -266,10 +243,8 @@ Eigen::MatrixXi SlotsFreeByReducedCost(const OperationalEncoding& enc, const mil
 /// entry per thruster; [0, intervals] leaves it free). The total is the last
 /// of the partial sums p_j = p_{j-1} + on[i][j], new columns and rows: the
 /// same polytope as one row over all the thruster's slots, but CLP's interior
-/// point does not converge with that dense row (on week 39 of
-/// data/scenarios/hard/, -T >= 4 and +T <= 3: 372 iterations, 81 s, stopped at
-/// 1.13 m/s with a safe bound of -162 m/s; with the partial sums the LP
-/// optimum 0.409 m/s in 70 iterations).
+/// point does not converge with that dense row where it does with the
+/// partial sums.
 milp::LpData WithThrusterTotals(const ScheduleMilp& milp, const std::vector<double>& lower,
                                 const std::vector<double>& upper);
 

@@ -27,6 +27,7 @@
 #include "benchmarks/bench/report.h"
 #include "benchmarks/bench/results.h"
 #include "benchmarks/bench/runner.h"
+#include "transcription/search/search_options.h"
 
 namespace {
 
@@ -92,6 +93,11 @@ int main(int argc, char** argv) {
   app.add_flag("--keep-mps", keep_mps,
                "keep the MPS files of the external cross-check and the external solvers' raw "
                "output (.sol, .log, .glpsol.txt, .highs.txt; removed otherwise)");
+  std::vector<std::string> disabled_phases;
+  app.add_option("--disable-phases", disabled_phases,
+                 "phases of the search left out in every search case, comma-separated "
+                 "(an ablation; docs/search.md names them)")
+      ->delimiter(',');
   app.add_flag("--merge", merge,
                "keep the rows of DIR/results.csv whose cases are not run again (partial re-runs)");
   try {
@@ -109,6 +115,15 @@ int main(int argc, char** argv) {
       bench::WriteReport(out, rows, meta);
       std::cout << "wrote " << out << "/report.md from " << rows.size() << " rows\n";
       return 0;
+    }
+    {
+      thrustsched::transcription::SearchOptions search;
+      search.disabled_phases = disabled_phases;
+      std::string error;
+      if (!search.IsValid(&error)) {
+        std::cerr << "thrustsched-bench: --disable-phases: " << error << "\n";
+        return 2;
+      }
     }
     bench::MatrixOptions mo;
     mo.quick = quick;
@@ -145,6 +160,7 @@ int main(int argc, char** argv) {
     ctx.runs_dir = out + "/runs";
     ctx.fork = !no_fork;
     ctx.keep_mps = keep_mps;
+    ctx.disabled_phases = disabled_phases;
 
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<bench::Row> rows;

@@ -193,7 +193,7 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
               "dense rows the column bounds imply)"},
           Arm{SearchArm::kLazyLpUnpresolved,
               "search with the lazy rows' first LP unpresolved "
-              "(SearchOptions::lazy_rows_presolve_lp false)"}}) {
+              "(LazyRowOptions::presolve_lp_relaxation false)"}}) {
       CaseSpec arm = c;
       arm.search = true;
       arm.search_arm = a.search;

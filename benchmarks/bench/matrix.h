@@ -53,11 +53,11 @@ enum class SearchArm {
   kThisRelease,  // SearchOptions' defaults: what `thrustsched solve` does
   /// The search as the previous release ran it, the lazy rows' first LP
   /// with the dense rows the column bounds imply
-  /// (SearchOptions::lazy_rows_skip_implied false), for the side-by-side
+  /// (LazyRowOptions::skip_implied_rows_in_lp false), for the side-by-side
   /// ratio.
   kPreviousRelease,
   /// The lazy rows' first LP without presolve
-  /// (SearchOptions::lazy_rows_presolve_lp false), the ablation arm of
+  /// (LazyRowOptions::presolve_lp_relaxation false), the ablation arm of
   /// section 8.1.
   kLazyLpUnpresolved,
 };

@@ -104,7 +104,7 @@ std::string PerArm(const std::vector<const std::vector<const Row*>*>& arms, cons
   return out;
 }
 
-// Section 8.1: the search with SearchOptions::lazy_rows_presolve_lp off
+// Section 8.1: the search with LazyRowOptions::presolve_lp_relaxation off
 // against the default, measure by measure, and their geometric mean.
 void WriteLazyLpAblation(std::ostream& md, const std::vector<Pair>& pairs) {
   md << "### 8.1 Ablation: the lazy rows' first LP without presolve\n\n";
@@ -138,7 +138,7 @@ void WriteLazyLpAblation(std::ostream& md, const std::vector<Pair>& pairs) {
     md << "Not run (the `-lazy-lp-unpresolved` cases).\n\n";
     return;
   }
-  md << "`SearchOptions::lazy_rows_presolve_lp` (default on) lets CLP presolve the LP "
+  md << "`LazyRowOptions::presolve_lp_relaxation` (default on) lets CLP presolve the LP "
         "relaxation whose binding rows start each row generation over a restricted MILP's "
         "dense window rows (`milp/lazy_rows.h`); the `lazy-lp-unpresolved` arm runs the same "
         "search with it off, in the same run as the default (`search`) arm. Medians over the "

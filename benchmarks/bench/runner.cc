@@ -243,8 +243,10 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
     transcription::SearchReport report;
     transcription::SearchOptions search;
     // The arms (matrix.h, SearchArm).
-    if (spec.search_arm == SearchArm::kPreviousRelease) search.lazy_rows_skip_implied = false;
-    if (spec.search_arm == SearchArm::kLazyLpUnpresolved) search.lazy_rows_presolve_lp = false;
+    search.disabled_phases = ctx.disabled_phases;
+    milp::LazyRowOptions& lazy = search.restricted.lazy_row_options;
+    if (spec.search_arm == SearchArm::kPreviousRelease) lazy.skip_implied_rows_in_lp = false;
+    if (spec.search_arm == SearchArm::kLazyLpUnpresolved) lazy.presolve_lp_relaxation = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;
     for (const std::string& step : report.steps) steps += (steps.empty() ? "" : " | ") + step;

@@ -26,6 +26,8 @@ struct RunContext {
   std::string runs_dir;   // must exist
   bool fork = true;       // false: run in-process (debugging)
   bool keep_mps = false;  // keep exported MPS files after the cross-check
+  /// Phases of the search left out in every search case (--disable-phases).
+  std::vector<std::string> disabled_phases;
 };
 
 /// Runs `spec` (repeat number `repeat`, 0-based) in a child process and

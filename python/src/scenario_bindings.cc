@@ -46,6 +46,7 @@ std::shared_ptr<SolveOutcome> SolveScenario(const ScenarioPtr& parsed,
   transcription::SolveScheduleOptions opt;
   opt.build = s->build;
   opt.milp = s->solve;
+  opt.search = s->search_options;
   opt.search.enabled = s->search;
   opt.prefix_diagnosis_s = s->diagnosis_time_limit_s;
   ApplySettings(settings, &opt);

@@ -92,7 +92,7 @@ TEST(StationPointWeek, WideningGoesOnWhileTheNetsHoldNoSchedule) {
   const transcription::ScheduleMilp milp(s.problem, s.build);
   auto solver = milp::MakeCbcSolver();
   transcription::SearchOptions search;
-  search.fired_thrusters_net = false;
+  search.nets.fired_thrusters_net_after = search.nets.max_widenings;  // never reached
   milp::SolveOptions o = s.solve;
   o.relative_gap = 0.99;
   transcription::SearchReport report;

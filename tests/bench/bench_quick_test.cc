@@ -190,8 +190,8 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
     EXPECT_NE(report.find(h), std::string::npos) << "missing: " << h;
   }
   EXPECT_NE(report.find("| hcw_table41_1d | sparse | tight |"), std::string::npos);
-  EXPECT_NE(report.find("### 8.1 Ablation: the lazy rows' first LP without presolve\n\n`Search"
-                        "Options::lazy_rows_presolve_lp`"),
+  EXPECT_NE(report.find("### 8.1 Ablation: the lazy rows' first LP without presolve\n\n`LazyRow"
+                        "Options::presolve_lp_relaxation`"),
             std::string::npos);
   EXPECT_NE(report.find("| hcw_table42_t1_2d-1thread | time to a proven 1 % gap | "),
             std::string::npos);
@@ -212,7 +212,7 @@ TEST(BenchQuick, WritesResultsAndReportWithCorrectNumbers) {
             std::string::npos);
   const std::string steps_log = "logs/solver_speed-hcw_table42_t1_2d-1thread-search.log";
   EXPECT_NE(report.find("(" + steps_log + ")"), std::string::npos);
-  EXPECT_NE(ReadAll((dir / steps_log).string()).find("\nLP bound "), std::string::npos);
+  EXPECT_NE(ReadAll((dir / steps_log).string()).find("\nrelaxation: LP bound "), std::string::npos);
   // Provenance: meta.json holds it; the report links it in one line.
   const ReportMeta meta = ReadMetaJson((dir / "meta.json").string());
   EXPECT_NE(meta.command.find("--quick"), std::string::npos);

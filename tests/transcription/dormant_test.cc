@@ -126,7 +126,7 @@ TEST(FindDormantThrusters, TheSearchWithTheReductionKeepsTheOptimumAndTheBound) 
   o.milp.threads = 1;
   o.milp.max_nodes = 200000;
   const ScheduleResult with = SolveSchedule(p, *solver, o);
-  o.search.drop_dormant_blocks = false;
+  o.search.relaxation.drop_dormant_blocks = false;
   const ScheduleResult without = SolveSchedule(p, *solver, o);
   o.search.enabled = false;
   const ScheduleResult cbc = SolveSchedule(p, *solver, o);

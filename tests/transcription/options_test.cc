@@ -99,7 +99,7 @@ TEST(OptionsIsValid, SolveScheduleOptionsNamesTheSubStruct) {
   EXPECT_TRUE(o.IsValid(&e));
 
   o = {};
-  o.search.max_widenings = -1;
+  o.search.nets.max_widenings = -1;
   EXPECT_FALSE(o.IsValid(&e));
   EXPECT_THAT(e, HasSubstr("max_widenings must be >= 0, got -1"));
   o.search.enabled = false;  // the search options are not read

@@ -11,8 +11,10 @@
 //  - determinism, a given start kept, an interrupt honoured.
 // Every solve has a node limit or is small enough that CBC needs a handful of
 // nodes; none depends on the wall clock.
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -98,9 +100,9 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
     const ScheduleResult b = SolveSchedule(p, *solver, o);
     // Lazy-row rounds that keep only their final solution (an earlier
     // release): the same optimum.
-    o.search.lazy_rows_keep_incumbents = false;
+    o.search.restricted.lazy_row_options.keep_model_incumbents = false;
     const ScheduleResult final_solutions_only = SolveSchedule(p, *solver, o);
-    o.search.lazy_rows = false;
+    o.search.restricted.lazy_rows = false;
     const ScheduleResult whole_rows = SolveSchedule(p, *solver, o);
     o.search.enabled = false;
     const ScheduleResult ref = SolveSchedule(p, *solver, o);
@@ -137,9 +139,9 @@ TEST(SearchSchedule, SolvesTheTreesOpenLeavesExactly) {
     SCOPED_TRACE(from_relaxation ? "root basis from the relaxation" : "second interior point");
     SolveScheduleOptions o;
     o.milp = Exact();
-    o.search.max_exact_slots = 700;
-    o.search.max_exact_leaf_slots = 900;
-    o.search.tree_root_from_relaxation = from_relaxation;
+    o.search.exact.max_slots = 700;
+    o.search.tree.max_exact_leaf_slots = 900;
+    o.search.tree.root_from_relaxation = from_relaxation;
     const ScheduleResult r = SolveSchedule(p, *solver, o);
     std::string steps;
     for (const std::string& step : r.search.steps) steps += step + "\n";
@@ -261,25 +263,21 @@ TEST(SearchSchedule, WholeMilpWithOrWithoutTheIncumbentKeepsTheBest) {
 
   const ScheduleMilp milp(p, BuildOptions{});
   SearchOptions forced;
-  forced.max_exact_slots = 0;
-  forced.max_exact_leaf_slots = 0;
-  forced.improvement_rounds = 0;
-  forced.axis_exchange = false;
-  forced.neighbourhood = 0;
-  for (bool from_incumbent : {false, true}) {
-    forced.whole_milp_from_incumbent = from_incumbent;
+  forced.exact.max_slots = 0;
+  forced.tree.max_exact_leaf_slots = 0;
+  forced.nets.improvement_rounds = 0;
+  forced.disabled_phases = {"exchange"};
+  forced.nets.neighbourhood = 0;
+  {
     SearchReport report;
     const milp::SolveResult r = SearchSchedule(milp, *solver, Exact(), forced, {}, &report);
     ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
     EXPECT_NEAR(r.objective, ref.solve.objective, 1e-9 * ref.solve.objective) << r.detail;
     ASSERT_TRUE(report.whole_milp) << r.detail;
-    const bool said = r.detail.find("from the incumbent") != std::string::npos;
-    EXPECT_EQ(said, from_incumbent) << r.detail;
   }
   // No node for the whole MILP: the restricted MILP's schedule is the result.
   milp::SolveOptions none = Exact();
   none.max_nodes = 0;
-  forced.whole_milp_from_incumbent = false;
   SearchReport report;
   const milp::SolveResult r = SearchSchedule(milp, *solver, none, forced, {}, &report);
   ASSERT_TRUE(r.has_solution()) << r.detail;
@@ -341,13 +339,14 @@ TEST(SearchSchedule, ExchangeAlongAnAxisReachesCbcAlonesOptimum) {
   const milp::SolveResult start = solver->Solve(away, loose);
   ASSERT_TRUE(start.has_solution()) << start.detail;
   SearchOptions only;  // the heuristic's first net, then the exchange, then step 5
-  only.max_exact_slots = 0;
-  only.improvement_rounds = 0;
-  only.total_branching_lps = 0;
-  only.neighbourhood = 0;
-  only.max_widenings = 0;
+  only.exact.max_slots = 0;
+  only.nets.improvement_rounds = 0;
+  only.tree.max_lps = 0;
+  only.nets.neighbourhood = 0;
+  only.nets.max_widenings = 0;
   for (const bool exchange : {true, false}) {
-    only.axis_exchange = exchange;
+    only.disabled_phases =
+        exchange ? std::vector<std::string>{} : std::vector<std::string>{"exchange"};
     SearchReport report;
     const milp::SolveResult r = SearchSchedule(milp, *solver, Exact(), only, {start.x}, &report);
     std::string steps;
@@ -374,14 +373,14 @@ TEST(SearchSchedule, TheCapOnTheNetsEndsTheWidening) {
   ASSERT_EQ(ref.solve.status, milp::SolveStatus::kOptimal);
   const ScheduleMilp milp(p, BuildOptions{});
   SearchOptions only;
-  only.candidate_threshold = 0.99;
-  only.neighbourhood = 0;
-  only.max_exact_slots = 0;
-  only.improvement_rounds = 0;
-  only.total_branching_lps = 0;
-  only.axis_exchange = false;
+  only.nets.candidate_threshold = 0.99;
+  only.nets.neighbourhood = 0;
+  only.exact.max_slots = 0;
+  only.nets.improvement_rounds = 0;
+  only.tree.max_lps = 0;
+  only.disabled_phases = {"exchange"};
   for (const int cap : {40, 48}) {
-    only.max_widened_slots = cap;
+    only.nets.max_widened_slots = cap;
     SearchReport report;
     const milp::SolveResult r = SearchSchedule(milp, *solver, Exact(), only, {}, &report);
     std::string steps;
@@ -413,76 +412,145 @@ TEST(RestrictionBuildSeconds, ScalesTheLargestNetBuiltLinearly) {
   EXPECT_EQ(internal::RestrictionBuildSeconds(100, 546, 0.0), 0.0);
 }
 
-TEST(SearchOptions, InvalidValuesAreNamed) {
-  SearchOptions s;
+// The one-day problem of SolvesTheTreesOpenLeavesExactly, where the
+// exact MILP is capped below its free slots so that the tree, its leaves
+// and the later phases run.
+struct HcwDayWithTree {
+  std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
+  ScheduleProblem problem = [] {
+    ScheduleProblem p = SmallHcwDay();
+    p.initial_state[0] = 6000.0;
+    p.initial_state[4] = 0.05;
+    return p;
+  }();
+  ScheduleResult ref = CbcAlone(problem, *solver);
+  SolveScheduleOptions Options() const {
+    SolveScheduleOptions o;
+    o.milp = Exact();
+    o.search.exact.max_slots = 700;
+    o.search.tree.max_exact_leaf_slots = 900;
+    return o;
+  }
+};
+
+bool RanPhase(const SearchReport& report, const std::string& phase) {
+  for (const std::string& step : report.steps) {
+    if (step.rfind(phase + ": ", 0) == 0) return true;
+  }
+  return false;
+}
+
+// Each phase left out in turn (SearchOptions::disabled_phases): the result
+// is still right against CBC alone (perhaps slower, perhaps unproven when
+// the phase left out is the one that proves it), the step log never names
+// the phase, and every schedule passes the checker.
+TEST(SearchPlan, EachPhaseDisabledInTurnKeepsTheResultRight) {
+  const HcwDayWithTree day;
+  ASSERT_EQ(day.ref.solve.status, milp::SolveStatus::kOptimal);
+  const double optimum = day.ref.solve.objective, tol = 1e-9 * optimum;
+  {
+    const ScheduleResult all = SolveSchedule(day.problem, *day.solver, day.Options());
+    for (const char* phase : {"relaxation", "nets", "tree", "exact"})
+      EXPECT_TRUE(RanPhase(all.search, phase)) << phase << "\n" << all.solve.detail;
+  }
+  for (const std::string& phase : SearchPhaseNames()) {
+    SCOPED_TRACE("without " + phase);
+    SolveScheduleOptions o = day.Options();
+    o.search.disabled_phases = {phase};
+    const ScheduleResult r = SolveSchedule(day.problem, *day.solver, o);
+    EXPECT_FALSE(RanPhase(r.search, phase)) << r.solve.detail;
+    ASSERT_TRUE(r.solve.has_solution()) << r.solve.detail;
+    EXPECT_GE(r.solve.objective, optimum - tol) << r.solve.detail;
+    EXPECT_LE(r.solve.best_bound, optimum + tol) << r.solve.detail;
+    if (r.solve.status == milp::SolveStatus::kOptimal) {
+      EXPECT_NEAR(r.solve.objective, optimum, tol) << r.solve.detail;
+    }
+    // Only the whole MILP's solver can be needed for the proof here.
+    if (phase != "whole_milp") {
+      EXPECT_EQ(r.solve.status, milp::SolveStatus::kOptimal);
+    }
+    EXPECT_TRUE(r.check.operational_ok) << r.check.Summary();
+  }
+}
+
+// A technique's place is one line of the plan: the nets moved after every
+// other phase (and the whole MILP left out) run last, on the same state,
+// and their schedule is the result. Nothing of the search but the plan
+// changes.
+TEST(SearchPlan, APhaseMovedLastInThePlanRunsLast) {
+  const HcwDayWithTree day;
+  const ScheduleMilp milp(day.problem, BuildOptions{});
+  SearchPlan plan = DefaultSearchPlan();
+  const auto nets = std::find_if(plan.begin(), plan.end(),
+                                 [](const PlanStep& s) { return s.phase->name() == "nets"; });
+  ASSERT_NE(nets, plan.end());
+  const PlanStep moved = *nets;
+  plan.erase(nets);
+  plan.push_back(moved);
+  SearchOptions search;
+  search.disabled_phases = {"whole_milp"};
+  SearchReport report;
+  const milp::SolveResult r =
+      SearchScheduleWithPlan(plan, milp, *day.solver, Exact(), search, {}, &report);
+  ASSERT_TRUE(r.has_solution()) << r.detail;
+  ASSERT_GE(report.steps.size(), 3u);
+  EXPECT_EQ(report.steps.front().rfind("relaxation: ", 0), 0u) << r.detail;
+  EXPECT_EQ(report.steps.back().rfind("nets: incumbent ", 0), 0u) << r.detail;
+  EXPECT_GE(r.objective, day.ref.solve.objective - 1e-9 * day.ref.solve.objective);
+  EXPECT_LE(milp.lp().MaxViolation(r.x), 1e-6);
+}
+
+TEST(SearchOptions, InvalidValuesAreNamedByTheirPath) {
   std::string error;
-  EXPECT_TRUE(s.IsValid(&error));
-  s.candidate_threshold = 1.5;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("candidate_threshold"), std::string::npos) << error;
-  EXPECT_NE(error.find("1.5"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.max_widened_slots = -3;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("max_widened_slots must be >= 0, got -3"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.total_branching_window_levels = 17;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("total_branching_window_levels must be in [0, 16], got 17"),
-            std::string::npos)
-      << error;
-  s = SearchOptions{};
-  s.neighbourhood = -1;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("neighbourhood"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.improvement_rounds = -2;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("improvement_rounds must be >= 0, got -2"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.max_exact_leaf_slots = -5;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("max_exact_leaf_slots must be >= 0, got -5"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.other_leaf_nets = -1;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("other_leaf_nets must be >= 0, got -1"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.max_exchange_slots = -4;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("max_exchange_slots must be >= 0, got -4"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.exchange_time_share = 1.5;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("exchange_time_share must be in (0, 1], got 1.5"), std::string::npos)
-      << error;
-  s = SearchOptions{};
-  s.improvement_time_share = 0.0;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("improvement_time_share must be in (0, 1], got 0"), std::string::npos)
-      << error;
-  s = SearchOptions{};
-  s.exact_time_share = -0.5;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("exact_time_share must be in (0, 1], got -0.5"), std::string::npos) << error;
-  s = SearchOptions{};
-  s.total_branching_lp_nonzeros = -1;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("total_branching_lp_nonzeros must be >= 0, got -1"), std::string::npos)
-      << error;
-  s = SearchOptions{};
-  s.total_branching_warm_lps = -3;
-  EXPECT_FALSE(s.IsValid(&error));
-  EXPECT_NE(error.find("total_branching_warm_lps must be >= 0, got -3"), std::string::npos)
-      << error;
-  for (const double share : {0.0, 1.5}) {
-    s = SearchOptions{};
-    s.heuristic_time_share = share;
-    EXPECT_FALSE(s.IsValid(&error));
-    EXPECT_NE(
-        error.find("heuristic_time_share must be in (0, 1], got " + common::FormatG(share, 6)),
-        std::string::npos)
-        << error;
+  EXPECT_TRUE(SearchOptions{}.IsValid(&error));
+  struct Case {
+    std::function<void(SearchOptions*)> set;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {[](SearchOptions* s) { s->nets.candidate_threshold = 1.5; },
+       "search.nets.candidate_threshold must be in (0, 1), got 1.5"},
+      {[](SearchOptions* s) { s->nets.max_widened_slots = -3; },
+       "search.nets.max_widened_slots must be >= 0, got -3"},
+      {[](SearchOptions* s) { s->nets.neighbourhood = -1; },
+       "search.nets.neighbourhood must be >= 0, got -1"},
+      {[](SearchOptions* s) { s->nets.improvement_rounds = -2; },
+       "search.nets.improvement_rounds must be >= 0, got -2"},
+      {[](SearchOptions* s) { s->nets.time_share = 0.0; },
+       "search.nets.time_share must be in (0, 1], got 0"},
+      {[](SearchOptions* s) { s->nets.improvement_time_share = 1.5; },
+       "search.nets.improvement_time_share must be in (0, 1], got 1.5"},
+      {[](SearchOptions* s) { s->tree.window_levels = 17; },
+       "search.tree.window_levels must be in [0, 16], got 17"},
+      {[](SearchOptions* s) { s->tree.max_exact_leaf_slots = -5; },
+       "search.tree.max_exact_leaf_slots must be >= 0, got -5"},
+      {[](SearchOptions* s) { s->tree.other_leaf_nets = -1; },
+       "search.tree.other_leaf_nets must be >= 0, got -1"},
+      {[](SearchOptions* s) { s->tree.max_lps = -3; }, "search.tree.max_lps must be >= 0, got -3"},
+      {[](SearchOptions* s) { s->exchange.max_slots = -4; },
+       "search.exchange.max_slots must be >= 0, got -4"},
+      {[](SearchOptions* s) { s->exchange.time_share = 1.5; },
+       "search.exchange.time_share must be in (0, 1], got 1.5"},
+      {[](SearchOptions* s) { s->exact.time_share_before_tree = -0.5; },
+       "search.exact.time_share_before_tree must be in (0, 1], got -0.5"},
+      {[](SearchOptions* s) { s->restricted.max_nodes = -1; },
+       "search.restricted.max_nodes must be >= 0, got -1"},
+      {[](SearchOptions* s) { s->restricted.lazy_row_options.max_rounds = 0; },
+       "search.restricted.lazy_row_options: LazyRowOptions: max_rounds"},
+      {[](SearchOptions* s) { s->plan = "fastest"; },
+       "search.plan must be one of default, exact_first, got \"fastest\""},
+      {[](SearchOptions* s) {
+         s->disabled_phases = {"nets", "exchnage"};
+       },
+       "search.disabled_phases[1] must be a phase (relaxation, nets, tree, exact, improvement, "
+       "exchange, windows, whole_milp), got \"exchnage\""},
+  };
+  for (const Case& c : cases) {
+    SearchOptions s;
+    c.set(&s);
+    error.clear();
+    EXPECT_FALSE(s.IsValid(&error)) << c.message;
+    EXPECT_NE(error.find(c.message), std::string::npos) << error;
   }
 }
 

@@ -561,26 +561,23 @@ std::string StepLines(const SearchReport& report) {
 // (step 4's exact MILPs, the wider nets), step 4b's tree ends one step
 // above its bound (35). With 7 levels of windows step 4d proves the start
 // optimal, and CBC on the whole MILP never runs: right after the tree,
-// before the exchange, or (windows_before_leaves off, the previous
-// release) after the exchange, which finds nothing better; with 5 levels
+// before the exchange; with 5 levels
 // (windows of 4-5 slots) or none the proof is left to CBC on the whole MILP.
 TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
   const HcwDayOptimum day;
   ASSERT_EQ(day.ref.solve.status, milp::SolveStatus::kOptimal) << day.ref.solve.detail;
   ASSERT_NEAR(day.ref.solve.objective / day.slot, 36.0, 1e-6);
-  const std::pair<int, bool> cases[] = {{7, true}, {7, false}, {5, true}, {0, true}};
-  for (const auto& [levels, before_leaves] : cases) {
+  for (const int levels : {7, 5, 0}) {
     SearchOptions search;
-    search.max_exact_slots = 0;
-    search.max_exact_leaf_slots = 0;
-    search.improvement_rounds = 0;
-    search.total_branching_window_levels = levels;
-    search.windows_before_leaves = before_leaves;
+    search.exact.max_slots = 0;
+    search.tree.max_exact_leaf_slots = 0;
+    search.nets.improvement_rounds = 0;
+    search.tree.window_levels = levels;
     SearchReport report;
     const milp::SolveResult r =
         SearchSchedule(day.milp, *day.solver, day.cbc.milp, search, {day.ref.solve.x}, &report);
     const std::string steps = StepLines(report);
-    const std::string which = std::to_string(levels) + (before_leaves ? " before" : " after");
+    const std::string which = std::to_string(levels) + " levels";
     ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << which << "\n" << steps;
     EXPECT_NEAR(r.objective / day.slot, 36.0, 1e-6) << steps;
     EXPECT_NEAR(r.best_bound / day.slot, 36.0, 1e-6) << steps;
@@ -589,12 +586,9 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
     const bool whole_milp = steps.find("whole MILP (cbc)") != std::string::npos;
     EXPECT_EQ(windows != std::string::npos, levels > 0) << which << "\n" << steps;
     EXPECT_EQ(whole_milp, levels != 7) << which << "\n" << steps;
+    // Before the exchange, which then never runs.
     if (levels == 7) {
-      // Before the exchange, which then never runs; or after it.
-      EXPECT_EQ(exchange == std::string::npos, before_leaves) << which << "\n" << steps;
-      if (!before_leaves) {
-        EXPECT_LT(exchange, windows) << steps;
-      }
+      EXPECT_EQ(exchange, std::string::npos) << which << "\n" << steps;
     }
   }
 }
@@ -602,16 +596,16 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
 // The order of steps 4 and 4b on the day above, started from CBC alone's
 // optimum (36 slots, one step above the rounded LP bound), with step 4's
 // exact MILP allowed: tree_first_at_one_step on, the tree and step 4d's
-// windows prove the start optimal and the exact MILP never runs; off (the
-// previous release), the exact MILP runs first and proves it by itself.
+// windows prove the start optimal and the exact MILP never runs; by the
+// plan "exact_first", the exact MILP runs first and proves it by itself.
 TEST(SearchSchedule, TreeFirstWhereTheFirstIncumbentIsOneStepAboveTheBound) {
   const HcwDayOptimum day;
   ASSERT_EQ(day.ref.solve.status, milp::SolveStatus::kOptimal) << day.ref.solve.detail;
   ASSERT_NEAR(day.ref.solve.objective / day.slot, 36.0, 1e-6);
   for (const bool tree_first : {true, false}) {
     SearchOptions search;
-    search.total_branching_window_levels = 7;
-    search.tree_first_at_one_step = tree_first;
+    search.tree.window_levels = 7;
+    search.plan = tree_first ? "default" : "exact_first";
     SearchReport report;
     const milp::SolveResult r =
         SearchSchedule(day.milp, *day.solver, day.cbc.milp, search, {day.ref.solve.x}, &report);

@@ -2,8 +2,7 @@
 // from the largest one built so far in the same search (its free slots and
 // seconds): the condensed window rows are dense in every earlier free slot,
 // and on a GEO week the build time grows about linearly with the free slots
-// (0.71 s for 546, 3.7 s for 2298, 5.3 s for 4043 on week c41 of
-// data/scenarios/hard/, six thrusters, timed around the build alone).
+// (docs/results.md, the restricted MILPs' build times).
 //
 //   double s = internal::RestrictionBuildSeconds(4043, 546, 0.71);  // 5.26
 //   internal::RestrictionBuildSeconds(4043, 0, 0.0);                // 0: none built yet
