@@ -29,6 +29,7 @@
 
 #include "app/json_reader.h"
 #include "dynamics/time.h"
+#include "transfer/feedback_switch.h"
 #include "transfer/lyapunov_feedback.h"
 #include "transfer/min_time_shooting.h"
 
@@ -58,6 +59,8 @@ struct TransferScenario {
   // feedback
   transfer::FeedbackOptions feedback;
   bool optimal_end = true;  // Bombrun's minimum-time end after the feedback
+  /// Where the feedback hands over to that end ("switch", "switch_interval_s").
+  transfer::SwitchOptions feedback_switch;
 };
 
 /// Earth's equatorial radius and sphere-of-influence radius used by the checks, m.
