@@ -64,9 +64,10 @@ struct SwitchedTransfer {
 
 /// The feedback `feedback` of p ended by the rule of `s`. @throws
 /// std::invalid_argument if s is invalid.
-SwitchedTransfer SwitchToMinimumTime(const MinTimeProblem& p, const FeedbackResult& feedback,
-                                     const SwitchOptions& s, const ShootingOptions& shooting = {},
-                                     const std::function<void(const SwitchAttempt&)>& progress = {});
+SwitchedTransfer SwitchToMinimumTime(
+    const MinTimeProblem& p, const FeedbackResult& feedback, const SwitchOptions& s,
+    const ShootingOptions& shooting = {},
+    const std::function<void(const SwitchAttempt&)>& progress = {});
 
 /// The feedback `f` cut at its trajectory sample k (the switch point there).
 FeedbackResult TruncateFeedback(const FeedbackResult& f, std::size_t k, double initial_l_rad);

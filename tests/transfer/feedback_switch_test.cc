@@ -44,7 +44,8 @@ TEST(FeedbackSwitchTest, EarliestConvergentSwitchesEarlierAndIsNotSlower) {
   // the one kept is the last convergent one.
   for (std::size_t k = 1; k < earliest.attempts.size(); ++k) {
     EXPECT_LT(earliest.attempts[k].switch_s, earliest.attempts[k - 1].switch_s);
-    EXPECT_NEAR(earliest.attempts[k].switch_s, f.duration_s - 12 * kHour * k, 0.5 * kHour);  // samples <= 0.25 h apart
+    EXPECT_NEAR(earliest.attempts[k].switch_s, f.duration_s - 12 * kHour * k,
+                0.5 * kHour);  // samples <= 0.25 h apart
   }
   // Mass and time add up across the switch.
   EXPECT_NEAR(earliest.transfer.end.final_mass_kg + earliest.transfer.total_propellant_kg,
