@@ -144,7 +144,7 @@ json SwitchJson(const transfer::SwitchedTransfer& t, const transfer::SwitchOptio
     attempts.push_back({{"switch_s", a.switch_s}, {"converged", a.converged}, {"end_s", a.end_s}});
   }
   json j = {{"rule", transfer::ToString(o.rule)}, {"switch_s", t.switch_s}, {"attempts", attempts}};
-  if (o.rule == transfer::SwitchRule::kEarliestConvergent) j["interval_s"] = o.interval_s;
+  if (o.rule != transfer::SwitchRule::kSaturation) j["interval_s"] = o.interval_s;
   return j;
 }
 

@@ -190,10 +190,13 @@ void ReadFeedback(JsonObject o, TransferScenario* s) {
   f.stop_at_saturation = o.OptionalBool("stop_at_saturation").value_or(true);
   s->optimal_end = o.OptionalBool("optimal_end").value_or(true);
   if (o.Has("switch")) {
-    s->feedback_switch.rule =
-        o.Choice("switch", {"saturation", "earliest_convergent"}) == "saturation"
-            ? transfer::SwitchRule::kSaturation
-            : transfer::SwitchRule::kEarliestConvergent;
+    const std::string rule =
+        o.Choice("switch", {"saturation", "earliest_convergent", "shortest_convergent"});
+    for (transfer::SwitchRule r :
+         {transfer::SwitchRule::kSaturation, transfer::SwitchRule::kEarliestConvergent,
+          transfer::SwitchRule::kShortestConvergent}) {
+      if (rule == transfer::ToString(r)) s->feedback_switch.rule = r;
+    }
   }
   s->feedback_switch.interval_s = o.OptionalNumber("switch_interval_s", Bound::kPositive)
                                       .value_or(s->feedback_switch.interval_s);

@@ -10,7 +10,15 @@
 namespace thrustsched::transfer {
 
 std::string ToString(SwitchRule r) {
-  return r == SwitchRule::kSaturation ? "saturation" : "earliest_convergent";
+  switch (r) {
+    case SwitchRule::kSaturation:
+      return "saturation";
+    case SwitchRule::kEarliestConvergent:
+      return "earliest_convergent";
+    case SwitchRule::kShortestConvergent:
+      return "shortest_convergent";
+  }
+  return "?";
 }
 
 bool SwitchOptions::IsValid(std::string* error) const {
@@ -61,8 +69,11 @@ SwitchedTransfer SwitchToMinimumTime(const MinTimeProblem& p, const FeedbackResu
     while (k > 0 && feedback.trajectory[k].t_s > t) --k;
     const FeedbackWithEnd e = attempt(TruncateFeedback(feedback, k, p.initial.l_rad));
     if (!e.end.converged) break;
-    out.transfer = e;
-    out.switch_s = e.feedback.duration_s;
+    if (s.rule == SwitchRule::kEarliestConvergent ||
+        e.total_duration_s < out.transfer.total_duration_s) {
+      out.transfer = e;
+      out.switch_s = e.feedback.duration_s;
+    }
     if (k == 0) break;
   }
   return out;

@@ -15,7 +15,11 @@
 //    last stretch where the end can be computed. A minimum-time end from an
 //    earlier point cannot take longer than the feedback from there plus the
 //    later end, so among the tried points the earliest is the fastest when
-//    the shooting finds the optimum.
+//    the shooting finds the optimum. It need not: the minimum-time problem
+//    has extremals that differ by revolutions, and the shooting from two
+//    points can land on different ones.
+//  - kShortestConvergent: the same points tried, the one whose feedback +
+//    end is the shortest kept.
 //
 //   transfer::FeedbackResult f = transfer::RunFeedback(p, o);   // to saturation
 //   transfer::SwitchOptions s;
@@ -37,15 +41,15 @@
 
 namespace thrustsched::transfer {
 
-enum class SwitchRule { kSaturation, kEarliestConvergent };
+enum class SwitchRule { kSaturation, kEarliestConvergent, kShortestConvergent };
 
-/// "saturation", "earliest_convergent".
+/// "saturation", "earliest_convergent", "shortest_convergent".
 std::string ToString(SwitchRule r);
 
 struct SwitchOptions {
   SwitchRule rule = SwitchRule::kSaturation;
-  double interval_s = 86400.0;  // kEarliestConvergent: feedback time between two tries
-  int max_attempts = 400;       // kEarliestConvergent: tries before the saturation point
+  double interval_s = 86400.0;  // the *Convergent rules: feedback time between two tries
+  int max_attempts = 400;       // the *Convergent rules: tries before the saturation point
   bool IsValid(std::string* error) const;
 };
 

@@ -51,6 +51,20 @@ TEST(FeedbackSwitchTest, EarliestConvergentSwitchesEarlierAndIsNotSlower) {
   EXPECT_NEAR(earliest.transfer.end.final_mass_kg + earliest.transfer.total_propellant_kg,
               p.mass_kg, 1e-6);
   EXPECT_NEAR(earliest.transfer.end.final_elements.p_m, 42165e3, 1.0);
+
+  // The shortest-convergent rule tries the same points and keeps the
+  // shortest feedback + end among them.
+  s.rule = SwitchRule::kShortestConvergent;
+  const SwitchedTransfer shortest = SwitchToMinimumTime(p, f, s);
+  ASSERT_EQ(shortest.attempts.size(), earliest.attempts.size());
+  for (const SwitchAttempt& a : shortest.attempts) {
+    if (a.converged) {
+      EXPECT_LE(shortest.transfer.total_duration_s, a.switch_s + a.end_s + 1e-6);
+    }
+  }
+  EXPECT_LE(shortest.transfer.total_duration_s, earliest.transfer.total_duration_s);
+  EXPECT_NEAR(shortest.transfer.total_duration_s,
+              shortest.switch_s + shortest.transfer.end.duration_s, 1e-6);
 }
 
 TEST(FeedbackSwitchTest, TruncationKeepsTheSampleAndTheBadIntervalIsRefused) {
