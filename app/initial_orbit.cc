@@ -132,22 +132,18 @@ bool HasOrbitForm(JsonObject& init) {
   return any;
 }
 
+InitialOrbit ReadOrbitAsGiven(JsonObject& init, const dynamics::Epoch& default_epoch,
+                              const std::string& base_dir) {
+  if (init.Has("opm")) return FromOpm(init.Object("opm"), base_dir);
+  if (init.Has("eci_state")) return FromEciState(init.Object("eci_state"), default_epoch);
+  return FromKeplerian(init.Object("keplerian"), default_epoch);
+}
+
 InitialOrbit ReadInitialOrbit(JsonObject& init, const dynamics::GeoSimulator& sim, double t_start,
                               const std::string& base_dir) {
   const dynamics::Epoch start = dynamics::Epoch::Parse(sim.options().epoch).PlusSeconds(t_start);
-  InitialOrbit out;
-  std::string key;
-  if (init.Has("opm")) {
-    key = "opm";
-    out = FromOpm(init.Object(key), base_dir);
-  } else if (init.Has("eci_state")) {
-    key = "eci_state";
-    out = FromEciState(init.Object(key), start);
-  } else {
-    key = "keplerian";
-    out = FromKeplerian(init.Object(key), start);
-  }
-  const std::string path = init.FieldPath(key);
+  InitialOrbit out = ReadOrbitAsGiven(init, start, base_dir);
+  const std::string path = init.FieldPath(out.form);
   if (out.given.epoch.SecondsSince(start) > 0) {
     throw ScenarioError(path + ": the state's epoch " + out.given.epoch.ToIso8601() +
                         " is after the horizon start " + start.ToIso8601() +

@@ -40,6 +40,18 @@ const std::vector<std::string>& OrbitForms();
 bool HasOrbitForm(JsonObject& init);
 
 /// Reads the orbit form of `init` (exactly one; the caller checks that no
+/// other state form is present) as given: `form`, the OPM's file and object,
+/// and `given` (frame, epoch, Cartesian state in m and m/s); relative_state
+/// stays empty. Inline forms without an "epoch" take `default_epoch`. OPM
+/// paths are relative to `base_dir`. Shared by the GEO scenarios and the
+/// orbit transfers (app/transfer_scenario.h).
+/// @throws ScenarioError naming the field (or the OPM file, line, keyword and
+///         value) for bad values, unsupported frames, time systems and
+///         centres, or an OPM with maneuvers.
+InitialOrbit ReadOrbitAsGiven(JsonObject& init, const dynamics::Epoch& default_epoch,
+                              const std::string& base_dir);
+
+/// Reads the orbit form of `init` (exactly one; the caller checks that no
 /// other state form is present) and converts it with `sim` to the relative
 /// state at model time `t_start`. OPM paths are relative to `base_dir`.
 /// @throws ScenarioError naming the field (or the OPM file, line, keyword and

@@ -138,27 +138,53 @@ Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
   return o;
 }
 
-Outcome RunFeedbackMethod(const TransferScenario& sc) {
+json SwitchJson(const transfer::SwitchedTransfer& t, const transfer::SwitchOptions& o) {
+  json attempts = json::array();
+  for (const transfer::SwitchAttempt& a : t.attempts) {
+    attempts.push_back({{"switch_s", a.switch_s}, {"converged", a.converged}, {"end_s", a.end_s}});
+  }
+  json j = {{"rule", transfer::ToString(o.rule)}, {"switch_s", t.switch_s}, {"attempts", attempts}};
+  if (o.rule != transfer::SwitchRule::kSaturation) j["interval_s"] = o.interval_s;
+  return j;
+}
+
+Outcome RunFeedbackMethod(const TransferScenario& sc, bool quiet) {
   const transfer::MinTimeProblem& p = sc.problem;
-  const transfer::FeedbackResult f = transfer::RunFeedback(p, sc.feedback);
+  transfer::FeedbackResult f = transfer::RunFeedback(p, sc.feedback);
+  json feedback_phase = {{"saturation_s", f.duration_s}};
+  std::optional<transfer::SwitchedTransfer> end;
+  if (sc.optimal_end && !f.reached && f.stop_reason == "saturation") {
+    end = transfer::SwitchToMinimumTime(
+        p, f, sc.feedback_switch, sc.shooting, [&](const transfer::SwitchAttempt& a) {
+          if (quiet) return;
+          std::cerr << "  end from " << common::FormatG(a.switch_s / common::kSecondsPerDay, 7)
+                    << " d: "
+                    << (a.converged ? "converged, " + common::FormatG(a.end_s / 3600, 6) + " h"
+                                    : std::string("not converged"))
+                    << "\n";
+        });
+    f = end->transfer.feedback;
+  }
   Outcome o;
   for (const transfer::FeedbackSample& x : f.trajectory) {
     o.rows.push_back({x.t_s, x.elements, x.mass_kg, x.command_qsw});
   }
-  o.extra["feedback"] = {{"duration_s", f.duration_s},
+  feedback_phase.update({{"duration_s", f.duration_s},
                          {"stop_reason", f.stop_reason},
                          {"reached", f.reached},
                          {"final_lyapunov", f.final_lyapunov},
                          {"max_lyapunov_increase", f.max_lyapunov_increase},
                          {"propellant_kg", f.propellant_kg},
-                         {"on_off", sc.feedback.on_off}};
+                         {"on_off", sc.feedback.on_off}});
+  o.extra["feedback"] = feedback_phase;
   o.ok = f.reached, o.duration_s = f.duration_s, o.propellant_kg = f.propellant_kg;
   o.final_mass_kg = f.final_mass_kg, o.final_elements = f.final_elements;
   o.revolutions = f.revolutions;
-  if (sc.optimal_end && !f.reached && f.stop_reason == "saturation") {
-    const transfer::FeedbackWithEnd e = transfer::FinishWithMinimumTime(p, f, sc.shooting);
+  if (end) {
+    const transfer::FeedbackWithEnd& e = end->transfer;
     o.extra["optimal_end"] = ShootingJson(e.end);
     o.extra["optimal_end"]["duration_s"] = e.end.duration_s;
+    o.extra["optimal_end"]["switch"] = SwitchJson(*end, sc.feedback_switch);
     o.convergence = ShootingJson(e.end);
     if (e.end.converged) {
       AppendShooting(e.end, &o, f.duration_s);
@@ -296,7 +322,7 @@ TransferRun RunTransferScenario(const TransferScenario& sc, const std::string& s
       o = RunMinimumTime(sc, quiet);
       break;
     case TransferMethod::kFeedback:
-      o = RunFeedbackMethod(sc);
+      o = RunFeedbackMethod(sc, quiet);
       break;
     case TransferMethod::kTwoImpulse:
       o = RunTwoImpulse(sc);

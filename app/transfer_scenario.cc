@@ -6,7 +6,9 @@
 #include <sstream>
 #include <vector>
 
+#include "app/initial_orbit.h"
 #include "common/constants.h"
+#include "dynamics/frames.h"
 
 namespace thrustsched::app {
 namespace {
@@ -15,8 +17,8 @@ using transfer::Equinoctial;
 
 constexpr const char* kElementNames[5] = {"p", "ex", "ey", "hx", "hy"};
 
-Equinoctial ReadInitial(JsonObject o) {
-  o.ExactlyOneOf({"equinoctial", "keplerian"}, true);
+// The transfer's own forms: equinoctial elements, or Keplerian ones in m and deg.
+Equinoctial ReadOwnForm(JsonObject& o) {
   Equinoctial q;
   if (o.Has("equinoctial")) {
     JsonObject e = o.Object("equinoctial");
@@ -32,25 +34,71 @@ Equinoctial ReadInitial(JsonObject o) {
                        FormatNumber(ecc));
     }
     e.Finish();
-  } else {
-    JsonObject k = o.Object("keplerian");
-    transfer::Keplerian kep;
-    kep.a_m = k.Number("a_m");
-    kep.e = k.Number("e", Bound::kNonNegative);
-    if (!(kep.e < 1)) {
-      k.Fail("e", "the initial orbit is not an ellipse (hyperbolic or parabolic start), got " +
-                      FormatNumber(kep.e));
-    }
-    if (!(kep.a_m > 0)) k.Fail("a_m", "must be > 0, got " + FormatNumber(kep.a_m));
-    const double i_deg = k.Number("i_deg", Bound::kNonNegative);
-    if (!(i_deg < 180)) k.Fail("i_deg", "must be in [0, 180), got " + FormatNumber(i_deg));
-    kep.i_rad = i_deg * common::kDegToRad;
-    kep.raan_rad = k.Number("raan_deg") * common::kDegToRad;
-    kep.arg_perigee_rad = k.Number("arg_perigee_deg") * common::kDegToRad;
-    kep.true_anomaly_rad = k.Number("true_anomaly_deg") * common::kDegToRad;
-    k.Finish();
-    q = transfer::EquinoctialFromKeplerian(kep);
+    return q;
   }
+  JsonObject k = o.Object("keplerian");
+  transfer::Keplerian kep;
+  kep.a_m = k.Number("a_m");
+  kep.e = k.Number("e", Bound::kNonNegative);
+  if (!(kep.e < 1)) {
+    k.Fail("e", "the initial orbit is not an ellipse (hyperbolic or parabolic start), got " +
+                    FormatNumber(kep.e));
+  }
+  if (!(kep.a_m > 0)) k.Fail("a_m", "must be > 0, got " + FormatNumber(kep.a_m));
+  const double i_deg = k.Number("i_deg", Bound::kNonNegative);
+  if (!(i_deg < 180)) k.Fail("i_deg", "must be in [0, 180), got " + FormatNumber(i_deg));
+  kep.i_rad = i_deg * common::kDegToRad;
+  kep.raan_rad = k.Number("raan_deg") * common::kDegToRad;
+  kep.arg_perigee_rad = k.Number("arg_perigee_deg") * common::kDegToRad;
+  kep.true_anomaly_rad = k.Number("true_anomaly_deg") * common::kDegToRad;
+  k.Finish();
+  return transfer::EquinoctialFromKeplerian(kep);
+}
+
+// The station-keeping scenarios' orbit forms (app/initial_orbit.h: an OPM,
+// an ECI state, Keplerian elements in km with their frame and epoch), taken
+// to EME2000 (the transfer's inertial frame) and to equinoctial elements with
+// the transfer's mu. Their epoch, when they state one, is the transfer's start.
+Equinoctial ReadOrbitForm(JsonObject& o, const std::string& base_dir, double mu,
+                          std::optional<dynamics::Epoch>* epoch) {
+  const std::string form = o.Has("opm") ? "opm" : o.Has("eci_state") ? "eci_state" : "keplerian";
+  const bool dated = form == "opm" || o.Raw(form).contains("epoch");
+  const InitialOrbit orbit = ReadOrbitAsGiven(
+      o, epoch->value_or(dynamics::Epoch::Parse("2000-01-01T12:00:00Z")), base_dir);
+  const std::string path = o.FieldPath(form);
+  if (dated) {
+    if (*epoch && std::abs(orbit.given.epoch.SecondsSince(**epoch)) > 1e-3) {
+      throw ScenarioError(path + ": the state's epoch " + orbit.given.epoch.ToIso8601() +
+                          " is not the transfer's epoch " + (*epoch)->ToIso8601() +
+                          " (scenario.transfer.epoch; give one of them, or the same)");
+    }
+    *epoch = orbit.given.epoch;
+  }
+  dynamics::Vector6d rv = orbit.given.rv;
+  if (orbit.given.frame == dynamics::InertialFrame::kGcrf) {
+    const Eigen::Matrix3d b = dynamics::FrameBiasIers2003();  // r_EME2000 = B r_GCRF
+    rv.head<3>() = b * rv.head<3>();
+    rv.tail<3>() = b * rv.tail<3>();
+  }
+  const double r = rv.head<3>().norm(), v2 = rv.tail<3>().squaredNorm();
+  if (!(2 * mu / r - v2 > 0)) {
+    throw ScenarioError(path + ": the initial orbit is not an ellipse (hyperbolic or parabolic " +
+                        "start): v^2 = " + FormatNumber(v2) +
+                        " m^2/s^2 >= 2 mu / r = " + FormatNumber(2 * mu / r));
+  }
+  return transfer::EquinoctialFromCartesian(rv, mu);
+}
+
+bool IsSharedForm(JsonObject& o) {
+  if (o.Has("opm") || o.Has("eci_state")) return true;
+  return o.Has("keplerian") && o.Raw("keplerian").is_object() &&
+         o.Raw("keplerian").contains("semi_major_axis_km");
+}
+
+Equinoctial ReadInitial(JsonObject o, const std::string& base_dir, double mu,
+                        std::optional<dynamics::Epoch>* epoch) {
+  o.ExactlyOneOf({"equinoctial", "keplerian", "eci_state", "opm"}, true);
+  const Equinoctial q = IsSharedForm(o) ? ReadOrbitForm(o, base_dir, mu, epoch) : ReadOwnForm(o);
   o.Finish();
   const double rp = q.p_m / (1 + std::hypot(q.ex, q.ey));
   if (rp < kEarthRadiusM) {
@@ -141,6 +189,17 @@ void ReadFeedback(JsonObject o, TransferScenario* s) {
   f.on_off_p = o.OptionalNumber("on_off_p", Bound::kNonNegative).value_or(f.on_off_p);
   f.stop_at_saturation = o.OptionalBool("stop_at_saturation").value_or(true);
   s->optimal_end = o.OptionalBool("optimal_end").value_or(true);
+  if (o.Has("switch")) {
+    const std::string rule =
+        o.Choice("switch", {"saturation", "earliest_convergent", "shortest_convergent"});
+    for (transfer::SwitchRule r :
+         {transfer::SwitchRule::kSaturation, transfer::SwitchRule::kEarliestConvergent,
+          transfer::SwitchRule::kShortestConvergent}) {
+      if (rule == transfer::ToString(r)) s->feedback_switch.rule = r;
+    }
+  }
+  s->feedback_switch.interval_s = o.OptionalNumber("switch_interval_s", Bound::kPositive)
+                                      .value_or(s->feedback_switch.interval_s);
   o.Finish();
   std::string error;
   if (!f.IsValid(&error)) throw ScenarioError(o.path() + ": " + error);
@@ -186,15 +245,17 @@ TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::st
   t.Finish();
   transfer::MinTimeProblem& p = s.problem;
   p.mu = t.OptionalNumber("mu_m3_s2", Bound::kPositive).value_or(transfer::kMuEarth);
-  p.initial = ReadInitial(t.Object("initial"));
+  if (const std::optional<std::string> epoch = t.OptionalString("epoch")) {
+    s.epoch = Wrap(t.FieldPath("epoch"), [&] { return dynamics::Epoch::Parse(*epoch); });
+  }
+  const std::string base_dir =
+      path.empty() ? std::string() : std::filesystem::path(path).parent_path().string();
+  p.initial = ReadInitial(t.Object("initial"), base_dir, p.mu, &s.epoch);
   p.target = ReadTarget(t.Object("target"));
   p.thrust_n = t.Number("thrust_n", Bound::kPositive);
   p.isp_s = t.Number("isp_s", Bound::kPositive);
   p.mass_kg = t.Number("mass_kg", Bound::kPositive);
   s.method = ParseTransferMethod(t.String("method"), t.FieldPath("method"));
-  if (const std::optional<std::string> epoch = t.OptionalString("epoch")) {
-    s.epoch = Wrap(t.FieldPath("epoch"), [&] { return dynamics::Epoch::Parse(*epoch); });
-  }
   if (t.Has("shooting")) ReadShooting(t.Object("shooting"), &s);
   if (t.Has("feedback")) ReadFeedback(t.Object("feedback"), &s);
   t.Finish();

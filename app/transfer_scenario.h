@@ -14,8 +14,11 @@
 //   app::TransferScenario s = app::LoadTransferScenario("data/scenarios/transfer/x.json");
 //   transfer::MinTimeSolution r = transfer::SolveMinTime(s.problem, ...);
 //
-// "initial" is {"equinoctial": {"p_m", "ex", "ey", "hx", "hy", "l_deg"}} or
-// {"keplerian": {...}}; "target" gives "p_m" or "a_m" and the equinoctial
+// "initial" is {"equinoctial": {"p_m", "ex", "ey", "hx", "hy", "l_deg"}},
+// {"keplerian": {"a_m", ...}} or one of the station-keeping scenarios' orbit
+// forms read by their parser (app/initial_orbit.h: "eci_state", "keplerian"
+// with "semi_major_axis_km", "opm", relative to the scenario file's folder),
+// whose stated epoch becomes the transfer's "epoch"; "target" gives "p_m" or "a_m" and the equinoctial
 // ex, ey, hx, hy (hx + j hy = tan(i/2) exp(j RAAN)), "free" lists the ones
 // left free (the final longitude is always free). Strict: unknown keys,
 // negative thrust, a hyperbolic start, a perigee below the Earth's surface
@@ -29,6 +32,7 @@
 
 #include "app/json_reader.h"
 #include "dynamics/time.h"
+#include "transfer/feedback_switch.h"
 #include "transfer/lyapunov_feedback.h"
 #include "transfer/min_time_shooting.h"
 
@@ -58,6 +62,8 @@ struct TransferScenario {
   // feedback
   transfer::FeedbackOptions feedback;
   bool optimal_end = true;  // Bombrun's minimum-time end after the feedback
+  /// Where the feedback hands over to that end ("switch", "switch_interval_s").
+  transfer::SwitchOptions feedback_switch;
 };
 
 /// Earth's equatorial radius and sphere-of-influence radius used by the checks, m.

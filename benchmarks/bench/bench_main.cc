@@ -45,6 +45,8 @@ const char* KindName(bench::CaseKind k) {
       return "solve";
     case bench::CaseKind::kConjunction:
       return "conjunction";
+    case bench::CaseKind::kTransfer:
+      return "transfer";
   }
   return "?";
 }

@@ -495,6 +495,63 @@ void AddCollisionAvoidance(Builder* b, const MatrixOptions& o) {
   }
 }
 
+// The orbit transfers of transfer/ (docs/transfer.md), one run each, timed
+// whole, against data/reference/transfers.json. --quick: the two fast ones.
+void AddTransfers(Builder* b, const MatrixOptions& o) {
+  struct Spec {
+    const char* scenario;
+    const char* suffix;
+    const char* reference_id;
+    const char* reference_key;
+    const char* variant;
+    nlohmann::json patch;
+    bool quick;
+  };
+  // Bombrun's delta = 1e-5 read in SI (s/m) instead of Mm and hours: 1e-5 /
+  // (3600 s/h / 1e6 m/Mm) in the scaled units of the feedback.
+  const double delta_si = 1e-5 / 3.6e-3;
+  const nlohmann::json earliest = {
+      {"transfer", {{"feedback", {{"switch", "earliest_convergent"}}}}}};
+  const nlohmann::json si = {{"transfer", {{"feedback", {{"delta", delta_si}}}}}};
+  const std::vector<Spec> specs = {
+      {"transfer/gto_geo_caillau_60n", "", "caillau_gto_geo_60n", "minimum_time_h",
+       "minimum time, shooting from the first guess", nlohmann::json::object(), true},
+      {"transfer/gto_geo_caillau_0p7n", "", "caillau_gto_geo_0p7n", "minimum_time_h",
+       "minimum time, continuation from 60 N", nlohmann::json::object(), false},
+      {"transfer/gto_geo_caillau_0p2n", "", "caillau_gto_geo_0p2n", "minimum_time_d",
+       "minimum time, continuation from 60 N", nlohmann::json::object(), false},
+      {"transfer/gto_geo_bombrun_case1_min_time", "", "bombrun_case1", "minimum_time_d",
+       "minimum time, continuation from 10 N", nlohmann::json::object(), false},
+      {"transfer/gto_geo_bombrun_case1", "saturation", "bombrun_case1",
+       "feedback_with_optimal_end_d", "feedback, end at saturation (delta 1e-5 in Mm, h)",
+       nlohmann::json::object(), false},
+      {"transfer/gto_geo_bombrun_case1", "saturation-si", "bombrun_case1",
+       "feedback_with_optimal_end_d", "feedback, end at saturation (delta 1e-5 s/m)", si, false},
+      {"transfer/gto_geo_bombrun_case1", "earliest", "bombrun_case1", "feedback_with_optimal_end_d",
+       "feedback, end from the earliest convergent point (1 d)", earliest, false},
+      {"transfer/gto_geo_caillau_0p2n_feedback", "saturation", "caillau_gto_geo_0p2n",
+       "feedback_with_optimal_end_d", "feedback, end at saturation (delta 1e-5 in Mm, h)",
+       nlohmann::json::object(), false},
+      {"transfer/gto_geo_caillau_0p2n_feedback", "saturation-si", "caillau_gto_geo_0p2n",
+       "feedback_with_optimal_end_d", "feedback, end at saturation (delta 1e-5 s/m)", si, false},
+      {"transfer/gto_geo_caillau_0p2n_feedback", "earliest", "caillau_gto_geo_0p2n",
+       "feedback_with_optimal_end_d", "feedback, end from the earliest convergent point (1 d)",
+       earliest, false},
+      {"transfer/map434_hohmann", "", "map434_two_impulse", "total_dv_km_s",
+       "two impulses, minimised over every transfer ellipse", nlohmann::json::object(), true},
+  };
+  for (const Spec& x : specs) {
+    if (o.quick && !x.quick) continue;
+    CaseSpec c = b->Make(kSectionTransfer, x.scenario, CaseKind::kTransfer);
+    c.patch = x.patch;
+    c.variant = x.variant;
+    c.reference_id = x.reference_id;
+    c.reference_key = x.reference_key;
+    c.threads = 1;
+    b->Add(c, x.suffix);
+  }
+}
+
 const std::vector<std::string>& ComparedSchemes() {
   static const std::vector<std::string> kNames = [] {
     std::vector<std::string> names;
@@ -532,6 +589,7 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
   AddScaling(&b, options);
   AddOperations(&b, options);
   AddCollisionAvoidance(&b, options);
+  AddTransfers(&b, options);
   std::vector<CaseSpec> cases = b.Take();
   if (options.quick) {
     // --quick checks code paths and numbers, not speed: its solves stop at a

@@ -38,6 +38,7 @@ inline constexpr const char* kSectionScalingStep = "scaling_step";
 inline constexpr const char* kSectionOperations = "operations";
 inline constexpr const char* kSectionSolverSpeed = "solver_speed";
 inline constexpr const char* kSectionCollisionAvoidance = "collision_avoidance";
+inline constexpr const char* kSectionTransfer = "transfer";
 
 enum class CaseKind {
   kAccuracy,     // every scheme vs the reference on each step of `accuracy_steps_s`
@@ -45,6 +46,7 @@ enum class CaseKind {
   kBuild,        // discretise + build (sizes, build time, memory)
   kSolve,        // + LP relaxation + MILP solve + independent check
   kConjunction,  // collision avoidance: SolveConjunction + verification (conjunction_case.h)
+  kTransfer,     // an orbit transfer scenario, `thrustsched transfer`'s run (transfer_case.h)
 };
 
 /// The search a solve case with `search` runs: the bench's arms of the
@@ -107,6 +109,11 @@ struct CaseSpec {
   double published = std::numeric_limits<double>::quiet_NaN();
   std::string published_source;
   std::string note;  // written to the `note` column
+
+  // kTransfer: the published figure, as the case id and the key of
+  // data/reference/transfers.json ("bombrun_case1", "minimum_time_d"); the
+  // key's unit suffix (_h, _d, _km_s) is the figure's unit.
+  std::string reference_id, reference_key;
 };
 
 /// A solve case's path: its `solver_path` column and the end of its

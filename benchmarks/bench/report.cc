@@ -15,6 +15,7 @@
 #include "benchmarks/bench/report_format.h"
 #include "benchmarks/bench/report_sections.h"
 #include "benchmarks/bench/report_solver.h"
+#include "benchmarks/bench/report_transfer.h"
 
 namespace thrustsched::bench {
 
@@ -55,6 +56,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteCollisionAvoidance(md, rows);
   WriteSolverSpeed(md, rows, dir);
   WriteCampaigns(md, dir);
+  WriteTransfers(md, rows);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);
   WriteColumns(md);

@@ -62,7 +62,8 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
         "[6. One year](#6-one-year-of-station-keeping-thrustsched-simulate) · "
         "[7. Collision avoidance](#7-collision-avoidance-serra-2015-ch-4) · "
         "[8. Solver speed](#8-solver-speed-the-search-against-the-previous-release-and-cbc-alone) "
-        "· "
+        "· [9. Campaigns](#9-campaigns-thrustsched-sweep-on-dask) · "
+        "[10. Orbit transfers](#10-orbit-transfers-transfer) · "
         "[Method and definitions](#method-and-definitions) · "
         "[Not run or skipped](#not-run-or-skipped) · [Columns](#columns-of-resultscsv)\n\n";
 }

@@ -127,7 +127,10 @@ void WriteColumns(std::ostream& md) {
         "`without_max_risk`, `without_mc_collisions_linear`, `without_mc_collisions_nonlinear` "
         "(that plan verified against the conjunction), `allocator_tuned` (MILP rows: 1 "
         "when the child ran with milp/allocator.h's malloc thresholds, 0 with glibc's, as "
-        "the releases before ff7ffbf), `wall_s` "
+        "the releases before ff7ffbf), orbit transfers (section 10): `transfer_method`, "
+        "`transfer_figure` in `transfer_unit` (h, d or km_s), `feedback_phase` and "
+        "`published_feedback_phase` (d), `switch_rule`, `propellant_kg`, `propellant_limit_kg` "
+        "(T t_f / (g0 Isp) of the published minimum time), `revolutions`, `wall_s` "
         "(whole child run), `exit` (child exit code), `note`. Times are wall-clock seconds; "
         "empty cells = not applicable or not reached.\n";
 }

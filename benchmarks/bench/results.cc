@@ -67,7 +67,10 @@ const std::vector<std::string>& ResultColumns() {
           // every earlier column keeps its position.
           "ext_highs_status", "ext_highs_objective", "ext_highs_s", "ext_highs_bound",
           "ext_highs_gap", "without_conjunction", "extra_cost", "without_max_risk",
-          "without_mc_collisions_linear", "without_mc_collisions_nonlinear", "allocator_tuned"}) {
+          "without_mc_collisions_linear", "without_mc_collisions_nonlinear", "allocator_tuned",
+          "transfer_method", "transfer_figure", "transfer_unit", "feedback_phase",
+          "published_feedback_phase", "switch_rule", "propellant_kg", "propellant_limit_kg",
+          "revolutions"}) {
       c.push_back(name);
     }
     return c;

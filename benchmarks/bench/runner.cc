@@ -26,6 +26,7 @@
 #include "benchmarks/bench/case_common.h"
 #include "benchmarks/bench/conjunction_case.h"
 #include "benchmarks/bench/external_solvers.h"
+#include "benchmarks/bench/transfer_case.h"
 #include "common/timing.h"
 #include "dynamics/discretisation.h"
 #include "milp/allocator.h"
@@ -444,6 +445,7 @@ bool ProgramAvailable(const std::string& program) {
 std::vector<Row> ExecuteCase(const CaseSpec& spec, int repeat, const RunContext& context) {
   if (spec.kind == CaseKind::kAccuracy) return ExecuteAccuracy(spec, repeat);
   if (spec.kind == CaseKind::kConjunction) return ExecuteConjunction(spec, repeat, context);
+  if (spec.kind == CaseKind::kTransfer) return ExecuteTransfer(spec, repeat, context);
   return ExecuteMilp(spec, repeat, context);
 }
 

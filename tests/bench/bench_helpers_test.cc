@@ -228,6 +228,16 @@ TEST(Matrix, FullMatrixCoversTheIssueAndFindsEveryScenario) {
   }
   EXPECT_EQ(targets, 2);
   EXPECT_EQ(schemes_cost.size(), 7u);
+  // The orbit transfers: each case names its published figure.
+  int transfers = 0;
+  for (const CaseSpec& c : cases) {
+    if (c.section != kSectionTransfer) continue;
+    ++transfers;
+    EXPECT_EQ(c.kind, CaseKind::kTransfer) << c.id;
+    EXPECT_FALSE(c.reference_id.empty()) << c.id;
+    EXPECT_FALSE(c.reference_key.empty()) << c.id;
+  }
+  EXPECT_EQ(transfers, 11);
   for (const char* s :
        {kSectionTargets, kSectionAccuracy, kSectionCost, kSectionSchemeSolve, kSectionFormulation,
         kSectionAblation, kSectionScalingHorizon, kSectionScalingStep, kSectionOperations}) {

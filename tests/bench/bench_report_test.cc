@@ -23,6 +23,7 @@
 #include "benchmarks/bench/matrix.h"
 #include "benchmarks/bench/report.h"
 #include "benchmarks/bench/report_format.h"
+#include "benchmarks/bench/report_transfer.h"
 #include "benchmarks/bench/results.h"
 
 namespace thrustsched::bench {
@@ -309,6 +310,49 @@ TEST(BenchReport, SummaryVerdictsAndProvenanceOnSyntheticRows) {
   EXPECT_EQ(back.earlier[0].machine, "Older CPU, 2 cores");
   EXPECT_EQ(back.earlier[0].command, "thrustsched-bench --out d");
   EXPECT_EQ(back.git_revision, "abc1234");
+}
+
+// Section 10 from synthetic rows: the figure with its unit next to the
+// published one, the ratio and its deviation, the feedback phase and the
+// propellant with their published values, the tool's time; rows of other
+// sections are left out, and no row gives "Not run.".
+TEST(BenchReport, TransferSectionComparesEachFigureWithThePublishedOne) {
+  Row fb;
+  fb.Set("section", kSectionTransfer);
+  fb.Set("scenario", "transfer/gto_geo_bombrun_case1");
+  fb.Set("variant", "feedback, end at saturation");
+  fb.Set("status", "converged");
+  fb.Set("transfer_figure", 138.129);
+  fb.Set("transfer_unit", "d");
+  fb.Set("published", 136.45);
+  fb.Set("ratio", 138.129 / 136.45);
+  fb.Set("feedback_phase", 137.855);
+  fb.Set("published_feedback_phase", 134.0);
+  fb.Set("propellant_kg", 212.97);
+  fb.Set("propellant_limit_kg", 211.8);
+  fb.Set("revolutions", 197.3);
+  fb.Set("solve_s", 0.42);
+  Row dv = fb;
+  dv.Set("scenario", "transfer/map434_hohmann");
+  dv.Set("transfer_unit", "km_s");
+  dv.Set("transfer_figure", 3.907087);
+  dv.Set("published", 3.9071);
+  dv.Set("ratio", 3.907087 / 3.9071);
+  Row other = fb;
+  other.Set("section", kSectionCost);
+  other.Set("scenario", "not_a_transfer");
+  std::ostringstream md;
+  WriteTransfers(md, {fb, dv, other});
+  const std::string s = md.str();
+  EXPECT_NE(s.find("## 10. Orbit transfers"), std::string::npos);
+  EXPECT_NE(s.find("| 138.129 d | 136.45 d | 1.0123 (1.23 %) | 137.85 (134) | 212.97 (211.8) |"),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("3.907087 km/s | 3.9071 km/s"), std::string::npos) << s;
+  EXPECT_EQ(s.find("not_a_transfer"), std::string::npos);
+  std::ostringstream none;
+  WriteTransfers(none, {other});
+  EXPECT_NE(none.str().find("Not run."), std::string::npos);
 }
 
 TEST(MdTable, SplitsWideTablesRepeatingTheKeyColumns) {

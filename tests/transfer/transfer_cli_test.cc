@@ -155,6 +155,12 @@ TEST(TransferCli, BadInputExitsTwoNamingTheFieldAndValue) {
       {"\"method\": \"minimum_time\"", "\"method\": \"fastest\"", "scenario.transfer.method",
        "fastest"},
       {"\"isp_s\": 1994.75", "\"isp_sec\": 1994.75", "scenario.transfer.isp_sec", "isp_s"},
+      // The station-keeping orbit forms (app/initial_orbit.h) are accepted, with their checks.
+      {"{\"equinoctial\": {\"p_m\": 11625e3, \"ex\": 0.75, \"ey\": 0, \"hx\": 6.12e-2, \"hy\": 0, "
+       "\"l_deg\": 180}}",
+       "{\"eci_state\": {\"frame\": \"ITRF\", \"position_km\": [6645, 0, 0], "
+       "\"velocity_km_s\": [0, 10.2, 0.5]}}",
+       "scenario.transfer.initial.eci_state.frame", "ITRF"},
   };
   for (const Case& c : cases) {
     std::string text = good;
