@@ -38,7 +38,9 @@ TEST(FeedbackSwitchTest, EarliestConvergentSwitchesEarlierAndIsNotSlower) {
   EXPECT_LE(earliest.transfer.total_duration_s,
             at_saturation.transfer.total_duration_s + 1e-3 * kHour);
   for (const SwitchAttempt& a : earliest.attempts) {
-    if (a.converged) EXPECT_LE(a.switch_s + a.end_s, at_saturation.transfer.total_duration_s + 1.0);
+    if (a.converged) {
+      EXPECT_LE(a.switch_s + a.end_s, at_saturation.transfer.total_duration_s + 1.0);
+    }
   }
   // The attempts go backwards 12 h apart (to the sample at or before), and
   // the one kept is the last convergent one.
