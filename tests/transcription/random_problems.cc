@@ -132,12 +132,12 @@ const char* ToString(ReferenceKind kind) {
   return kind == ReferenceKind::kEnumeration ? "enumeration" : "plain CBC";
 }
 
-long long PatternSpaceSize(const ScheduleProblem& p) {
+long long PatternSpaceSize(const ScheduleProblem& p, long long limit) {
   const long long c = CombinationsPerSlot(p.thrusters.size(), p.rules.max_simultaneous);
   long long leaves = 1;
   for (int j = 0; j < p.num_intervals(); ++j) {
     leaves *= c;
-    if (leaves > kMaxEnumeratedLeaves) return kMaxEnumeratedLeaves + 1;
+    if (leaves > limit) return limit + 1;
   }
   return leaves;
 }

@@ -28,8 +28,11 @@
 //                 exponential of the augmented matrix [A B d; 0 0 0], Eigen's
 //                 MatrixFunctions; not dynamics::Discretize);
 //   kPlainCbc     larger cases (up to 40 slots): CBC on the whole MILP with
-//                 the search off (SearchOptions::enabled = false), compared
-//                 only when it proves optimality or infeasibility.
+//                 the search off (SearchOptions::enabled = false) and its
+//                 preprocessing off (which once cut off an optimum), compared
+//                 only when it proves optimality or infeasibility; a
+//                 disagreement is also enumerated when its pattern space
+//                 allows (kMaxThirdOpinionLeaves).
 #ifndef THRUSTSCHED_TESTS_TRANSCRIPTION_RANDOM_PROBLEMS_H_
 #define THRUSTSCHED_TESTS_TRANSCRIPTION_RANDOM_PROBLEMS_H_
 
@@ -73,12 +76,16 @@ struct Reference {
   std::string detail;
 };
 
+/// A disagreement against plain CBC is also enumerated (a third opinion,
+/// in CaseOutcome::disagreement) when its pattern space is at most this.
+inline constexpr long long kMaxThirdOpinionLeaves = 5000000;
+
 /// Number of leaves of the unpruned enumeration of `p` (saturates at
-/// kMaxEnumeratedLeaves + 1).
-long long PatternSpaceSize(const ScheduleProblem& p);
+/// limit + 1).
+long long PatternSpaceSize(const ScheduleProblem& p, long long limit = kMaxEnumeratedLeaves);
 /// The exhaustive minimum over all on-off patterns (see the file's text).
 Reference EnumerateOptimum(const ScheduleProblem& p);
-/// CBC on the whole MILP, the search off, gap 0.
+/// CBC on the whole MILP, the search and CBC's preprocessing off, gap 0.
 Reference PlainCbcOptimum(const ScheduleProblem& p, const milp::Solver& solver);
 
 struct CaseOutcome {
