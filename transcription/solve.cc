@@ -179,8 +179,9 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
       char buf[320];
       std::snprintf(buf, sizeof(buf),
                     "no schedule and no proof: looking for a proof of infeasibility on the first "
-                    "1/32, 1/8 and 1/2 of the horizon (at most %.3g s, the rest of the time limit)",
-                    r.diagnosis_time_limit_s);
+                    "1/32, 1/8 and 1/2 of the horizon (at most %.3g s%s)",
+                    r.diagnosis_time_limit_s,
+                    std::isfinite(options.milp.time_limit_s) ? ", the rest of the time limit" : "");
       options.announce(buf);
     }
     const auto t_diagnosis = std::chrono::steady_clock::now();
