@@ -44,7 +44,9 @@ struct OverrideFlags {
         app->add_option("--encoding", encoding, "operational-rule encoding: thesis | tight");
   }
   void AddSolverOptions(CLI::App* app) {
-    o_time = app->add_option("--time-limit", time_limit, "solver wall-clock limit (s)");
+    o_time = app->add_option("--time-limit", time_limit,
+                             "wall-clock limit (s) of the solve and the infeasibility diagnosis "
+                             "together (see --no-diagnose)");
     o_gap = app->add_option("--gap", gap, "relative optimality gap at which the solver stops");
     o_threads = app->add_option("--threads", threads, "solver threads");
   }
@@ -133,7 +135,9 @@ void AddSolveCommand(CLI::App* cli, Subcommands* c) {
   c->c_solve->add_flag(
       "--no-diagnose", c->solve_no_diagnose,
       "after a solve that stops with no schedule, do not look for a proof of "
-      "infeasibility (scenario field solver.diagnosis_time_limit_s, default 30 s)");
+      "infeasibility; the solve then has the whole --time-limit (by default the diagnosis "
+      "runs inside the limit: it keeps the smaller of a quarter of the limit and the "
+      "scenario field solver.diagnosis_time_limit_s, default 30 s)");
 }
 
 // `export`: the model file only.

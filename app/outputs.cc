@@ -394,8 +394,12 @@ nlohmann::json SolveResultJson(const transcription::ScheduleResult& r,
   j["discretise_seconds"] = r.stats.discretise_seconds;
   j["build_seconds"] = r.stats.build_seconds;
   j["solve_seconds"] = sr.wall_seconds;
+  j["diagnosis_seconds"] = r.diagnosis_seconds;
   j["check_seconds"] = r.check_seconds;
   j["total_seconds"] = total_seconds;
+  // The time limit's shares (transcription::ShareTimeLimit): null = none.
+  j["solve_time_limit_s"] = FiniteOrNull(r.solve_time_limit_s);
+  j["diagnosis_time_limit_s"] = FiniteOrNull(r.diagnosis_time_limit_s);
   nlohmann::json inc = nlohmann::json::array();
   for (const milp::Incumbent& c : sr.incumbents) {
     inc.push_back({{"wall_seconds", c.wall_seconds},

@@ -82,6 +82,8 @@ void ParseLongHorizon(SimulationSetup* setup) {
   o.solve.check_schedule = true;
   o.solve.search = s.search_options;
   o.solve.search.enabled = s.search;
+  // Inside each cycle's time limit (transcription::ShareTimeLimit).
+  o.solve.prefix_diagnosis_s = s.diagnosis_time_limit_s;
   const nlohmann::json* solver = s.raw.contains("solver") ? &s.raw.at("solver") : nullptr;
   const bool solver_time = solver != nullptr && solver->contains("time_limit_s");
   const bool solver_gap = solver != nullptr && solver->contains("relative_gap");

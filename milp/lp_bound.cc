@@ -117,7 +117,9 @@ DualBound SafeDualBound(const LpData& lp, const Eigen::VectorXd& row_duals) {
   }
   const Eigen::VectorXd c = sign * lp.col_cost;
   Eigen::VectorXd d = c - a.transpose() * y;
-  const double scale = std::max(1.0, c.cwiseAbs().maxCoeff());
+  // (An LP without columns, e.g. a restricted MILP with every column fixed
+  // out, has no largest cost: maxCoeff of an empty vector is undefined.)
+  const double scale = n > 0 ? std::max(1.0, c.cwiseAbs().maxCoeff()) : 1.0;
   const double tiny = 1e-12 * scale;
   std::vector<int> free_rows;  // equality or ranged rows: any dual sign
   std::vector<int> equality_rows;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/format.h"
 #include "dynamics/propagation.h"
 
 namespace thrustsched::transcription {
@@ -18,10 +19,11 @@ double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-// See SolveScheduleOptions::prefix_diagnosis_s. Returns the reason if a
-// prefix of the horizon is proven infeasible, empty otherwise.
+// See SolveScheduleOptions::prefix_diagnosis_s; at most budget_s seconds.
+// Returns the reason if a prefix of the horizon is proven infeasible, empty
+// otherwise.
 std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solver,
-                             const SolveScheduleOptions& options) {
+                             const SolveScheduleOptions& options, double budget_s) {
   const auto t0 = std::chrono::steady_clock::now();
   const ScheduleProblem& full = milp.problem();
   const int n = full.num_intervals();
@@ -31,7 +33,7 @@ std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solve
     if (k < n && (lengths.empty() || k > lengths.back())) lengths.push_back(k);
   }
   for (size_t q = 0; q < lengths.size(); ++q) {
-    const double left = options.prefix_diagnosis_s - Seconds(t0);
+    const double left = budget_s - Seconds(t0);
     if (left <= 0.0) break;
     const int k = lengths[q];
     ScheduleProblem p = full;
@@ -71,7 +73,32 @@ std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solve
   return "";
 }
 
+// The diagnosis may follow the solve (SolveScheduleOptions::prefix_diagnosis_s).
+bool DiagnosisMayRun(const ScheduleProblem& p, const SolveScheduleOptions& options) {
+  return options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff &&
+         p.window.enabled() && !p.window.soft;
+}
+
 }  // namespace
+
+TimeLimitShares ShareTimeLimit(double time_limit_s, double diagnosis_cap_s,
+                               double diagnosis_share) {
+  TimeLimitShares s;
+  s.solve_s = time_limit_s;
+  if (!(diagnosis_cap_s > 0.0)) return s;
+  if (!std::isfinite(time_limit_s)) {
+    s.diagnosis_s = diagnosis_cap_s;
+    return s;
+  }
+  s.diagnosis_s = std::max(0.0, std::min(diagnosis_cap_s, diagnosis_share * time_limit_s));
+  s.solve_s = time_limit_s - s.diagnosis_s;
+  return s;
+}
+
+double DiagnosisTimeLeft(double time_limit_s, double diagnosis_cap_s, double used_s) {
+  if (!(diagnosis_cap_s > 0.0)) return 0.0;
+  return std::max(0.0, std::min(diagnosis_cap_s, time_limit_s - used_s));
+}
 
 ImpulsiveCheck CheckImpulses(const ScheduleProblem& p, const std::vector<Impulse>& impulses) {
   std::string err;
@@ -109,12 +136,21 @@ ImpulsiveCheck CheckImpulses(const ScheduleProblem& p, const std::vector<Impulse
 
 ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
                           const SolveScheduleOptions& options) {
+  const auto t_start = std::chrono::steady_clock::now();
   ScheduleResult r;
   r.stats = milp.stats();
   r.infeasibility_reasons = milp.infeasibility_reasons();
   milp::SolveOptions solve_options = options.milp;
   if (solve_options.objective_step == 0.0) solve_options.objective_step = milp.objective_step();
   const ScheduleProblem& p = milp.problem();
+  // The time limit bounds the solve and the diagnosis together.
+  const bool may_diagnose = DiagnosisMayRun(p, options);
+  const TimeLimitShares shares =
+      ShareTimeLimit(options.milp.time_limit_s, may_diagnose ? options.prefix_diagnosis_s : 0.0,
+                     options.diagnosis_share);
+  solve_options.time_limit_s = shares.solve_s;
+  r.solve_time_limit_s = shares.solve_s;
+  r.diagnosis_time_limit_s = shares.diagnosis_s;
   if (p.input_mode == InputMode::kOnOff) {
     if (!options.warm_start.empty()) {
       solve_options.initial_solution = milp.StartFromBurns(options.warm_start);
@@ -133,20 +169,23 @@ ScheduleResult SolveBuilt(const ScheduleMilp& milp, const milp::Solver& solver,
     r.solve = solver.Solve(milp.lp(), solve_options);
   }
   const bool interrupted = options.milp.interrupt != nullptr && options.milp.interrupt->load();
-  if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted &&
-      options.prefix_diagnosis_s > 0.0 && p.input_mode == InputMode::kOnOff && p.window.enabled() &&
-      !p.window.soft) {
+  if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted && may_diagnose) {
+    r.diagnosis_time_limit_s =
+        DiagnosisTimeLeft(options.milp.time_limit_s, options.prefix_diagnosis_s, Seconds(t_start));
+  }
+  if (r.solve.status == milp::SolveStatus::kNoSolutionFound && !interrupted && may_diagnose &&
+      r.diagnosis_time_limit_s > 0.0) {
     if (options.announce) {
       char buf[320];
       std::snprintf(buf, sizeof(buf),
-                    "no schedule and no proof within the time limit: looking for a proof of "
-                    "infeasibility on the first 1/32, 1/8 and 1/2 of the horizon (at most %.3g s "
-                    "more)",
-                    options.prefix_diagnosis_s);
+                    "no schedule and no proof: looking for a proof of infeasibility on the first "
+                    "1/32, 1/8 and 1/2 of the horizon (at most %.3g s%s)",
+                    r.diagnosis_time_limit_s,
+                    std::isfinite(options.milp.time_limit_s) ? ", the rest of the time limit" : "");
       options.announce(buf);
     }
     const auto t_diagnosis = std::chrono::steady_clock::now();
-    const std::string reason = DiagnosePrefixes(milp, solver, options);
+    const std::string reason = DiagnosePrefixes(milp, solver, options, r.diagnosis_time_limit_s);
     r.diagnosis_seconds = Seconds(t_diagnosis);
     if (!reason.empty()) {
       r.solve.status = milp::SolveStatus::kInfeasible;
@@ -174,6 +213,10 @@ bool SolveScheduleOptions::IsValid(std::string* error) const {
   if (!milp.IsValid(&e)) return common::Fail(error, "milp: " + e);
   if (search.enabled && !search.IsValid(&e)) return common::Fail(error, "search: " + e);
   if (check_schedule && !check.IsValid(&e)) return common::Fail(error, "check." + e);
+  if (!(diagnosis_share >= 0.0 && diagnosis_share < 1.0)) {
+    return common::Fail(
+        error, "diagnosis_share: must be in [0, 1), got " + common::FormatG(diagnosis_share, 10));
+  }
   return true;
 }
 

@@ -49,8 +49,12 @@ struct SolveScheduleOptions {
   /// of the whole problem restricted to such a prefix is feasible for it, so
   /// an infeasible prefix proves the whole problem infeasible (status
   /// kInfeasible, the reason in infeasibility_reasons). It spends at most
-  /// this many seconds beyond the time limit (0: off); not after an interrupt.
+  /// this many seconds (0: off), inside milp.time_limit_s: see
+  /// ShareTimeLimit. Not after an interrupt.
   double prefix_diagnosis_s = 30.0;
+  /// The largest fraction of a finite milp.time_limit_s kept for the
+  /// diagnosis when it may run (ShareTimeLimit); in [0, 1).
+  double diagnosis_share = 0.25;
   /// Called (from the calling thread) when a phase after the solve starts,
   /// with a sentence saying what it does and how long it may take (e.g. the
   /// infeasibility diagnosis), so that a user is told why the work goes on.
@@ -58,10 +62,31 @@ struct SolveScheduleOptions {
 
   /// build and milp are valid, search when it is enabled and check when
   /// check_schedule is set (neither is read otherwise). prefix_diagnosis_s
-  /// takes any value (<= 0 or NaN: off). On failure `*error` (if given) names
-  /// the field and the value.
+  /// takes any value (<= 0 or NaN: off); diagnosis_share is in [0, 1). On
+  /// failure `*error` (if given) names the field and the value.
   bool IsValid(std::string* error) const;
 };
+
+/// A time limit shared between the solve and the infeasibility diagnosis.
+struct TimeLimitShares {
+  double solve_s = std::numeric_limits<double>::infinity();
+  double diagnosis_s = 0.0;
+};
+
+/// The time limit bounds the solve and the diagnosis together: with a
+/// diagnosis of at most `diagnosis_cap_s` (<= 0 or NaN: none) the solve
+/// stops at time_limit_s minus min(diagnosis_cap_s, diagnosis_share *
+/// time_limit_s), which is kept for the diagnosis. An infinite limit is not
+/// shared (the solve has no limit, the diagnosis its cap).
+///   ShareTimeLimit(5, 30, 0.25)  -> {3.75, 1.25}
+///   ShareTimeLimit(600, 30, 0.25) -> {570, 30}
+TimeLimitShares ShareTimeLimit(double time_limit_s, double diagnosis_cap_s, double diagnosis_share);
+
+/// The diagnosis's limit once the solve has used `used_s` of time_limit_s:
+/// what is left of the limit, at most diagnosis_cap_s, never below 0 (so a
+/// solve that stopped early, e.g. on a node limit, leaves the diagnosis more
+/// than its share). DiagnosisTimeLeft(5, 30, 3.8) -> 1.2.
+double DiagnosisTimeLeft(double time_limit_s, double diagnosis_cap_s, double used_s);
 
 /// Check of an impulsive schedule: impulses applied to the continuous model
 /// (adaptive propagation between nodes), window at nodes, terminal error.
@@ -81,7 +106,13 @@ struct ScheduleResult {
   ImpulsiveCheck impulsive_check;  // impulsive mode
   double check_seconds = 0.0;
   double diagnosis_seconds = 0.0;  // the infeasibility diagnosis (0 if it did not run)
-  SearchReport search;             // what the search did (on-off mode, search enabled)
+  /// The limits the solve and the diagnosis were given (ShareTimeLimit,
+  /// DiagnosisTimeLeft): their sum is at most milp.time_limit_s.
+  /// diagnosis_time_limit_s is its share when it did not run, 0 when it
+  /// could not (impulsive, soft or no window, prefix_diagnosis_s off).
+  double solve_time_limit_s = std::numeric_limits<double>::infinity();
+  double diagnosis_time_limit_s = 0.0;
+  SearchReport search;  // what the search did (on-off mode, search enabled)
   std::vector<std::string> infeasibility_reasons;  // from the rules, known before solving
   bool has_schedule() const { return solve.has_solution(); }
 };

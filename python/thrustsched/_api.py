@@ -30,7 +30,9 @@ def solve(problem: Any, *, time_limit_s: Optional[float] = None, relative_gap: O
     possibly with your own rows).
 
     Keywords override the scenario's ``solver`` section (unset: the file's
-    values): time_limit_s (wall clock), relative_gap, threads (CBC threads),
+    values): time_limit_s (wall clock, the solve and the infeasibility
+    diagnosis together: data/scenarios/README.md, section 1.1), relative_gap,
+    threads (CBC threads),
     max_nodes (a node budget: the same result on every run with threads=1),
     search (the problem-aware search; False hands the whole MILP to CBC),
     diagnosis_time_limit_s, log_level, random_seed; scheme, formulation,

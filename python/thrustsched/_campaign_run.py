@@ -71,6 +71,10 @@ def prepare_out(out: str, spec: CampaignSpec, tasks: List[Task], resume: bool, f
             elif os.path.exists(p):
                 os.remove(p)
     os.makedirs(out, exist_ok=True)
+    # Made here, not only by the tasks: a task that fails before its code runs
+    # on a worker (e.g. one that cannot import thrustsched) is recorded here.
+    for name in ("scenarios", "tasks", "rows", "attempts"):
+        os.makedirs(os.path.join(out, name), exist_ok=True)
     write_json_atomic(record, {"name": spec.name, "source": spec.source, "base": spec.base_source,
                                "kind": spec.kind, "parameters": spec.parameters,
                                "tasks": [{"task": t.index, "task_id": t.id, "params": t.params} for t in tasks]})
@@ -152,6 +156,8 @@ def _run_dask(outcome: CampaignOutcome, pending: List[Task], progress: _Progress
               faults: Dict[str, str]) -> None:
     from distributed import as_completed
 
+    from ._campaign_workers import erred_workers
+
     out = os.path.abspath(outcome.out)
     futures = {}
     for t in pending:
@@ -168,7 +174,10 @@ def _run_dask(outcome: CampaignOutcome, pending: List[Task], progress: _Progress
                 exc = f.exception()
                 if isinstance(exc, TaskInterrupted):
                     raise KeyboardInterrupt
-                _record(outcome, t, None, f"{type(exc).__name__}: {exc}", progress)
+                # The worker's message and its address (Dask retried the task once).
+                where = erred_workers(client, [f.key]).get(f.key, "")
+                _record(outcome, t, None, f"{type(exc).__name__}: {exc}"
+                        + (f" (on worker {where})" if where else ""), progress)
     finally:
         for f in futures:
             if not f.done():
@@ -177,18 +186,26 @@ def _run_dask(outcome: CampaignOutcome, pending: List[Task], progress: _Progress
 
 def run_campaign(spec: CampaignSpec, out: str, *, client: Any = None, workers: Optional[int] = None,
                  resume: bool = False, force: bool = False, progress: bool = True,
-                 _faults: Optional[Dict[str, str]] = None) -> CampaignOutcome:
+                 _faults: Optional[Dict[str, str]] = None, _check_workers: bool = True) -> CampaignOutcome:
     """Runs what is missing of the campaign into out (see the module's text).
 
     client: a dask.distributed Client (an existing cluster); else workers
     (default: one per core) local worker processes, or 1 to run the tasks one
     after the other in this process's children without Dask.
     _faults: task id -> a fault to inject (tests only; run_task's fault).
+    _check_workers: False skips the workers' handshake (tests only: to see
+    how a task that fails on a worker is recorded).
+    A client's workers are checked first (_campaign_workers.check_workers):
+    CampaignError, nothing run, when one cannot run tasks.
     """
     from ._campaign_report import write_report
 
     start = time.monotonic()
     tasks = expand(spec)
+    if client is not None and _check_workers:
+        from ._campaign_workers import check_workers
+
+        check_workers(client, out)
     prepare_out(out, spec, tasks, resume, force)
     outcome = CampaignOutcome(out=out, spec=spec, tasks=tasks)
     pending = []

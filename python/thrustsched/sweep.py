@@ -147,7 +147,10 @@ def main(argv: Optional[List[str]] = None) -> int:
         if args.scheduler:
             from distributed import Client
 
-            client = Client(args.scheduler)
+            try:
+                client = Client(args.scheduler, timeout="20s")
+            except (OSError, TimeoutError) as e:
+                raise CampaignError(f"--scheduler {args.scheduler}: cannot connect ({e})") from None
         outcome = run_campaign(spec, args.out, client=client, workers=args.workers, resume=args.resume,
                                force=args.force, progress=not args.quiet)
     except CampaignError as e:

@@ -122,34 +122,56 @@ TEST(Signals, SigtermAfterAnIncumbentKeepsTheSchedule) {
   fs::remove_all(dir);
 }
 
-// The infeasibility diagnosis after an undecided solve is announced, timed in
-// the `times` line, and switched off by --no-diagnose (then the command ends
-// with its time limit).
-TEST(TimeLimit, DiagnosisIsAnnouncedTimedAndSwitchable) {
+// The infeasibility diagnosis after an undecided solve runs inside the time
+// limit (transcription::ShareTimeLimit: the solve stops at 3/4 of a 2 s
+// limit, the diagnosis has the rest), is announced, timed in the `times`
+// line, its shares recorded in summary.json, and switched off by
+// --no-diagnose or the scenario field (then the solve has the whole limit).
+// The shares are asserted, not the seconds taken: whether the diagnosis
+// finds its proof within 0.5 s depends on the machine's load.
+TEST(TimeLimit, DiagnosisRunsInsideTheLimitAnnouncedTimedAndSwitchable) {
   const std::string dir = TempDir("diagnose");
   const std::string scenario = kTestData + "hcw_10km_infeasible_1d.json";
-  // A limit too short for CBC to decide: the diagnosis proves infeasibility.
-  RunResult r = RunCli({"solve", scenario, "--out", dir + "/a", "--time-limit", "0.05"});
+  RunResult r = RunCli({"solve", scenario, "--out", dir + "/a", "--time-limit", "2", "--no-plots"});
   ASSERT_TRUE(r.exited) << r.Describe();
   if (r.exit_code == 3 && r.err.find("looking for a proof of infeasibility") == std::string::npos) {
-    GTEST_SKIP() << "CBC decided within 0.05 s: no diagnosis to test";
+    GTEST_SKIP() << "CBC decided within 1.5 s: no diagnosis to test";
   }
-  EXPECT_EQ(r.exit_code, 3) << r.Describe();
   EXPECT_HAS(r.err, "looking for a proof of infeasibility");
+  EXPECT_HAS(r.err, "the rest of the time limit");
   EXPECT_HAS(r.err, "--no-diagnose");
   EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(times .*, diagnose [0-9.]+ s,)"))) << r.out;
-  r = RunCli({"solve", scenario, "--out", dir + "/b", "--time-limit", "0.05", "--no-diagnose"});
+  json summary = ReadJson(dir + "/a/summary.json");
+  EXPECT_DOUBLE_EQ(summary["time_limit_s"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(summary["solve_time_limit_s"].get<double>(), 1.5);  // 2 s less a quarter
+  const double diagnosis_limit = summary["diagnosis_time_limit_s"].get<double>();
+  EXPECT_GT(diagnosis_limit, 0.0);
+  EXPECT_LE(diagnosis_limit, 2.0 - summary["solve_seconds"].get<double>() + 1e-9);
+  EXPECT_GT(summary["diagnosis_seconds"].get<double>(), 0.0);
+  if (r.exit_code == 3) {  // proven in time: the reason names the prefix
+    EXPECT_EQ(summary["status"], "infeasible");
+    EXPECT_HAS(r.out, "are infeasible on their own");
+  } else {
+    EXPECT_EQ(r.exit_code, 4) << r.Describe();
+  }
+  r = RunCli(
+      {"solve", scenario, "--out", dir + "/b", "--time-limit", "2", "--no-diagnose", "--no-plots"});
   EXPECT_EQ(r.exit_code, 4) << r.Describe();
   EXPECT_EQ(r.err.find("looking for a proof"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find(", diagnose "), std::string::npos) << r.out;
-  const json summary = ReadJson(dir + "/b/summary.json");
+  summary = ReadJson(dir + "/b/summary.json");
   EXPECT_EQ(summary["status"], "no_solution");
+  EXPECT_DOUBLE_EQ(summary["solve_time_limit_s"].get<double>(), 2.0);  // the whole limit
+  EXPECT_DOUBLE_EQ(summary["diagnosis_time_limit_s"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(summary["diagnosis_seconds"].get<double>(), 0.0);
   // The scenario field does the same.
   json sc = ReadJson(scenario);
   sc["solver"]["diagnosis_time_limit_s"] = 0;
   WriteFile(dir + "/nodiag.json", sc.dump());
-  r = RunCli({"solve", dir + "/nodiag.json", "--out", dir + "/c", "--time-limit", "0.05"});
+  r = RunCli(
+      {"solve", dir + "/nodiag.json", "--out", dir + "/c", "--time-limit", "2", "--no-plots"});
   EXPECT_EQ(r.exit_code, 4) << r.Describe();
+  EXPECT_DOUBLE_EQ(ReadJson(dir + "/c/summary.json")["solve_time_limit_s"].get<double>(), 2.0);
   fs::remove_all(dir);
 }
 

@@ -86,6 +86,35 @@ TEST(SafeDualBound, FreeColumnsAreProjectedOut) {
   EXPECT_NEAR(SafeDualBound(lp, y).bound, 1.0, 1e-12);
 }
 
+// An LP without columns (a restricted MILP with every column fixed out;
+// the random-problem soak met it: tests/transcription/random_problems.h,
+// seed 9) has the offset as its exact bound, through SafeDualBound directly
+// and through SolveLpRelaxation, which computes it (it used to read the
+// largest cost of an empty vector and crash).
+TEST(SafeDualBound, AnLpWithoutColumnsIsBoundedByItsOffset) {
+  LpData lp;
+  lp.objective_offset = 2.5;
+  lp.col_cost.resize(0);
+  lp.col_lower.resize(0);
+  lp.col_upper.resize(0);
+  lp.a_matrix.resize(1, 0);
+  lp.row_lower = Eigen::VectorXd::Constant(1, -1.0);
+  lp.row_upper = Eigen::VectorXd::Constant(1, 1.0);
+  std::string error;
+  ASSERT_TRUE(lp.IsValid(&error)) << error;
+  // A zero dual gives the offset; a dual 0.3 on the row's lower side -1
+  // gives 2.5 - 0.3, still a bound.
+  const DualBound b = SafeDualBound(lp, Eigen::VectorXd::Zero(1));
+  EXPECT_DOUBLE_EQ(b.bound, 2.5);
+  EXPECT_EQ(b.reduced_costs.size(), 0);
+  EXPECT_DOUBLE_EQ(SafeDualBound(lp, Eigen::VectorXd::Constant(1, 0.3)).bound, 2.2);
+  const auto solver = MakeCbcSolver();
+  const LpRelaxationResult r = solver->SolveLpRelaxation(lp);
+  ASSERT_EQ(r.status, SolveStatus::kOptimal) << r.detail;
+  EXPECT_DOUBLE_EQ(r.objective, 2.5);
+  EXPECT_DOUBLE_EQ(r.dual_bound, 2.5);
+}
+
 // Reduced-cost fixing never removes a point better than the incumbent:
 // checked by enumerating every 0/1 point of small knapsacks.
 TEST(FixByReducedCost, KeepsEveryBetterPoint) {

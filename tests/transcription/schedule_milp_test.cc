@@ -207,8 +207,15 @@ TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
   o.prefix_diagnosis_s = 0.0;
   const ScheduleResult undecided = SolveSchedule(p, *solver, o);
   EXPECT_EQ(undecided.solve.status, milp::SolveStatus::kNoSolutionFound) << undecided.solve.detail;
+  // The diagnosis runs inside the time limit (ShareTimeLimit): 0.5 s of
+  // solve, the rest of a 60.5 s limit (at most 60 s) for the diagnosis.
+  o.milp.time_limit_s = 60.5;
+  o.diagnosis_share = 60.0 / 60.5;
   o.prefix_diagnosis_s = 60.0;
   const ScheduleResult r = SolveSchedule(p, *solver, o);
+  EXPECT_NEAR(r.solve_time_limit_s, 0.5, 1e-12);
+  EXPECT_GT(r.diagnosis_time_limit_s, 0.0);
+  EXPECT_LE(r.solve_time_limit_s + r.diagnosis_time_limit_s, 60.5 + 1e-12);
   ASSERT_EQ(r.solve.status, milp::SolveStatus::kInfeasible) << r.solve.detail;
   ASSERT_FALSE(r.infeasibility_reasons.empty());
   EXPECT_NE(r.infeasibility_reasons.back().find("are infeasible on their own"), std::string::npos)
@@ -218,6 +225,55 @@ TEST(ScheduleMilpTest, PrefixDiagnosisProvesAWeekInfeasible) {
   o.milp.time_limit_s = 0.01;
   const ScheduleResult f = SolveSchedule(feasible, *solver, o);
   EXPECT_NE(f.solve.status, milp::SolveStatus::kInfeasible) << f.solve.detail;
+}
+
+// The time limit bounds the solve and the diagnosis together: the solve
+// stops early by the diagnosis's share (at most its cap), and the diagnosis
+// gets what the solve left of the limit, at most its cap.
+TEST(ScheduleMilpTest, TimeLimitIsSharedWithTheDiagnosis) {
+  const double inf = std::numeric_limits<double>::infinity();
+  TimeLimitShares s = ShareTimeLimit(5.0, 30.0, 0.25);  // `--time-limit 5`, default cap
+  EXPECT_DOUBLE_EQ(s.solve_s, 3.75);
+  EXPECT_DOUBLE_EQ(s.diagnosis_s, 1.25);
+  s = ShareTimeLimit(600.0, 30.0, 0.25);  // the cap binds: 30 s of 600
+  EXPECT_DOUBLE_EQ(s.solve_s, 570.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis_s, 30.0);
+  s = ShareTimeLimit(5.0, 0.0, 0.25);  // no diagnosis (--no-diagnose): the whole limit solves
+  EXPECT_DOUBLE_EQ(s.solve_s, 5.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis_s, 0.0);
+  s = ShareTimeLimit(5.0, std::nan(""), 0.25);
+  EXPECT_DOUBLE_EQ(s.solve_s, 5.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis_s, 0.0);
+  s = ShareTimeLimit(inf, 30.0, 0.25);  // no limit to share
+  EXPECT_EQ(s.solve_s, inf);
+  EXPECT_DOUBLE_EQ(s.diagnosis_s, 30.0);
+  // After the solve: what is left of the limit, at most the cap, never < 0.
+  EXPECT_DOUBLE_EQ(DiagnosisTimeLeft(5.0, 30.0, 3.8), 1.2);
+  EXPECT_DOUBLE_EQ(DiagnosisTimeLeft(5.0, 30.0, 7.0), 0.0);     // the solve overran
+  EXPECT_DOUBLE_EQ(DiagnosisTimeLeft(600.0, 30.0, 2.0), 30.0);  // a node limit stopped it early
+  EXPECT_DOUBLE_EQ(DiagnosisTimeLeft(inf, 30.0, 100.0), 30.0);
+  EXPECT_DOUBLE_EQ(DiagnosisTimeLeft(5.0, 0.0, 1.0), 0.0);
+
+  // In a solve: a feasible problem (thesis Table 4.1, 1 day) under a 20 s
+  // limit: the solve was given 15 s (the diagnosis's 5 s were kept); an
+  // impulsive or soft-window problem, which the diagnosis never follows,
+  // keeps the whole limit.
+  auto solver = milp::MakeCbcSolver();
+  ScheduleProblem p = ThesisTable41(1.0);
+  SolveScheduleOptions o;
+  o.milp.time_limit_s = 20.0;
+  const ScheduleResult r = SolveSchedule(p, *solver, o);
+  EXPECT_DOUBLE_EQ(r.solve_time_limit_s, 15.0);
+  EXPECT_DOUBLE_EQ(r.diagnosis_time_limit_s, 5.0);
+  EXPECT_EQ(r.diagnosis_seconds, 0.0);  // a schedule was found: no diagnosis
+  p.window.soft = true;
+  const ScheduleResult soft = SolveSchedule(p, *solver, o);
+  EXPECT_DOUBLE_EQ(soft.solve_time_limit_s, 20.0);
+  EXPECT_DOUBLE_EQ(soft.diagnosis_time_limit_s, 0.0);
+  o.diagnosis_share = 1.0;
+  std::string error;
+  EXPECT_FALSE(o.IsValid(&error));
+  EXPECT_NE(error.find("diagnosis_share: must be in [0, 1), got 1"), std::string::npos) << error;
 }
 
 // The GEO week's matrix is scaled (every row's largest coefficient is 1) and
