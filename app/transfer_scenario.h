@@ -18,12 +18,11 @@
 // {"keplerian": {"a_m", ...}} or one of the station-keeping scenarios' orbit
 // forms read by their parser (app/initial_orbit.h: "eci_state", "keplerian"
 // with "semi_major_axis_km", "opm", relative to the scenario file's folder),
-// whose stated epoch becomes the transfer's "epoch"; "target" gives "p_m" or "a_m" and the equinoctial
-// ex, ey, hx, hy (hx + j hy = tan(i/2) exp(j RAAN)), "free" lists the ones
-// left free (the final longitude is always free). Strict: unknown keys,
-// negative thrust, a hyperbolic start, a perigee below the Earth's surface
-// or a target beyond the Earth's sphere of influence throw ScenarioError
-// naming the field and the value (exit 2).
+// whose stated epoch becomes the transfer's "epoch"; "target" gives "p_m" or "a_m" and the
+// equinoctial ex, ey, hx, hy (hx + j hy = tan(i/2) exp(j RAAN)), "free" lists the ones left free
+// (the final longitude is always free). Strict: unknown keys, negative thrust, a hyperbolic start,
+// a perigee below the Earth's surface or a target beyond the Earth's sphere of influence throw
+// ScenarioError naming the field and the value (exit 2).
 #ifndef THRUSTSCHED_APP_TRANSFER_SCENARIO_H_
 #define THRUSTSCHED_APP_TRANSFER_SCENARIO_H_
 
