@@ -10,11 +10,10 @@
 // goes back to the kernel as well. An LP session that re-solves a GEO week's
 // LP (26,000 columns, 66,000 rows) hundreds of times allocates CLP's work
 // arrays of a few MiB anew for each solve, and each one is then paged in
-// again by the kernel. Measured on the 75 deg E week of data/scenarios/hard/
-// (two threads, 60 s): the 274 window LPs of the search's step 4d took 48 s
-// with two thirds of the process' time in the kernel, and 23 s with the
-// thresholds below; how fast depended on which steps had run before (the
-// threshold is raised by the first large free).
+// again by the kernel: the window LPs of the search spent two thirds of the
+// process' time in the kernel before the thresholds below, and ran twice as
+// fast with them (docs/results.md); how fast depended on which steps had
+// run before (the threshold is raised by the first large free).
 //
 // What it sets (glibc only; elsewhere nothing): M_MMAP_THRESHOLD to 32 MiB
 // (glibc's largest on 64-bit systems) and M_TRIM_THRESHOLD to 512 MiB, unless

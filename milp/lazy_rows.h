@@ -45,24 +45,19 @@ struct LazyRowOptions {
   /// Presolve the LP relaxation that picks the first subset's dense rows
   /// (where SolveOptions::presolve allows it). Off: the dual simplex on the
   /// model as it is, and with presolve only if that does not end optimal.
-  /// On a condensed restricted MILP CLP's presolve costs far more than the
-  /// simplex: on a six-thruster GEO week restricted to 4043 slots (8.5 M
-  /// nonzeros in its window rows; the `cbc` program's -dualS on the
-  /// exported MILP) CLP spends 4.1 s in presolve and 0.8 s in 26 dual
-  /// simplex iterations, and 0.85 s in all without presolve. Either way the
-  /// rows are those an LP optimum binds, and the result is exact whichever
-  /// optimum it is (see above); but the optimum differs where the LP is
-  /// degenerate, and so does the subset (see
-  /// transcription::SearchOptions::lazy_rows_presolve_lp).
+  /// On a condensed restricted MILP CLP's presolve can cost far more than
+  /// the simplex (docs/results.md, the ablations of the search). Either way
+  /// the rows are those an LP optimum binds, and the result is exact
+  /// whichever optimum it is (see above); but the optimum differs where the
+  /// LP is degenerate, and so does the subset.
   bool presolve_lp_relaxation = true;
   /// That LP without the dense rows the column bounds imply (their activity
   /// over the bounds stays within the row's bounds: no point within the
   /// bounds breaks them, so the LP is the same). Why: CLP's presolve removes
-  /// them one entry at a time from its column copy, slow on dense rows; on
-  /// a condensed six-thruster GEO week restricted to every slot of +T and
-  /// -T (4043 slots), the early window rows, which those few slots cannot
-  /// move out of the box. They stay left out of the subsets and are checked
-  /// like every left-out row. Off: the previous release's first LP.
+  /// them one entry at a time from its column copy, slow on dense rows (on
+  /// a restricted GEO week, the early window rows that the few free slots
+  /// cannot move out of the box). They stay left out of the subsets and are
+  /// checked like every left-out row. Off: every dense row in the first LP.
   bool skip_implied_rows_in_lp = true;
   /// Keep each subset incumbent that satisfies every row, as the solver
   /// reports it (SolveOptions::on_incumbent): a search that ends at a limit

@@ -246,11 +246,10 @@ class LpSession {
   /// crossover to a basis, then the dual simplex, instead of a solve from
   /// scratch. For a near-optimal point, e.g. SolveLpRelaxation's interior
   /// point without crossover (kBarrierNoCrossover), extended to the
-  /// session's LP: on weeks 10 and 33 of data/scenarios/hard/ (six
-  /// thrusters) the crossover takes 1.2-2 s where a second interior point
-  /// with its crossover takes 13-14 s. The crossover first puts every column
-  /// the duals price out at its bound (a central point holds thousands of
-  /// them strictly inside: week 33's took 61-71 s without). Default:
+  /// session's LP: on a six-thruster GEO week a few times faster than a
+  /// second interior point with its crossover (docs/search.md). The
+  /// crossover first puts every column the duals price out at its bound (a
+  /// central point holds thousands of them strictly inside). Default:
   /// ignored (the next Solve as without it); the CBC backend's session
   /// throws std::invalid_argument unless one value per column and one dual
   /// per row.
