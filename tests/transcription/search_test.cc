@@ -121,7 +121,7 @@ TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {
   }
 }
 
-// Step 4 on the tree's open leaves: with max_exact_slots below the whole
+// The exact MILP on the tree's open leaves: with exact.max_slots below the whole
 // MILP's free slots (782) and max_exact_leaf_slots above every slot (864),
 // the search goes through the tree and then solves its open leaves exactly; it still ends at CBC's
 // proven optimum (47 slots here; the tree alone stops at 45, total_branching_test.cc) with a bound

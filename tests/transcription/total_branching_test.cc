@@ -558,8 +558,8 @@ std::string StepLines(const SearchReport& report) {
 
 // Step 4d of the search, on the day above: given CBC alone's optimum (36
 // slots) as its start, with the steps that could prove it otherwise off
-// (step 4's exact MILPs, the wider nets), step 4b's tree ends one step
-// above its bound (35). With 7 levels of windows step 4d proves the start
+// (the exact MILPs, the wider nets), the phase "tree" ends one step
+// above its bound (35). With 7 levels of windows the phase "windows" proves the start
 // optimal, and CBC on the whole MILP never runs: right after the tree,
 // before the exchange; with 5 levels
 // (windows of 4-5 slots) or none the proof is left to CBC on the whole MILP.
@@ -594,8 +594,8 @@ TEST(SearchSchedule, StepFourDProvesTheOptimumOneStepAboveTheTreesBound) {
 }
 
 // The order of steps 4 and 4b on the day above, started from CBC alone's
-// optimum (36 slots, one step above the rounded LP bound), with step 4's
-// exact MILP allowed: tree_first_at_one_step on, the tree and step 4d's
+// optimum (36 slots, one step above the rounded LP bound), with the
+// exact MILP allowed: by the plan "default", the tree and the
 // windows prove the start optimal and the exact MILP never runs; by the
 // plan "exact_first", the exact MILP runs first and proves it by itself.
 TEST(SearchSchedule, TreeFirstWhereTheFirstIncumbentIsOneStepAboveTheBound) {
