@@ -208,10 +208,16 @@ void WritePlotsReport(const RunFolder& folder, const Scenario& s, bool nonlinear
   }
 }
 
-// One progress line: the phase, then what is known (root LP iterate, or
-// incumbent, bound, gap and nodes). `best` is the best incumbent seen so far.
+// One progress line: the search's phase (if any), the solver's phase, then what is known (root LP
+// iterate, or incumbent, bound, gap and nodes). `best` is the best incumbent seen so far.
 std::string ProgressLine(const milp::SolveProgress& p, double best) {
   std::ostringstream os;
+  if (!p.stage().empty()) os << p.stage() << ": ";
+  if (p.stage_begins) {
+    os << "begins; incumbent " << F(std::isfinite(p.objective) ? p.objective : best) << ", bound "
+       << F(p.best_bound);
+    return os.str();
+  }
   if (p.phase == milp::SolvePhase::kRootLp && !p.new_incumbent) {
     os << "root LP relaxation";
     if (p.lp_iterations >= 0) {

@@ -65,21 +65,7 @@ class LazySolve {
         clock_(options.time_limit_s, options.interrupt) {}
 
   SolveResult Run() {
-    std::vector<int> nonzeros(static_cast<size_t>(lp_.num_rows()), 0);
-    for (int j = 0; j < lp_.num_cols(); ++j) {
-      for (SparseCol::InnerIterator it(lp_.a_matrix, j); it; ++it) ++nonzeros[it.row()];
-    }
-    in_.assign(static_cast<size_t>(lp_.num_rows()), 0);
-    int dense = 0;
-    long long dense_nonzeros = 0;
-    for (int i = 0; i < lp_.num_rows(); ++i) {
-      const int count = nonzeros[static_cast<size_t>(i)];
-      const bool is_dense = count >= lazy_.dense_row_min_nonzeros;
-      in_[static_cast<size_t>(i)] = is_dense ? 0 : 1;
-      dense += is_dense ? 1 : 0;
-      dense_nonzeros += is_dense ? count : 0;
-    }
-    report_->dense_rows = dense;
+    const long long dense_nonzeros = LeaveOutDenseRows();
     if (static_cast<double>(dense_nonzeros) < lazy_.min_dense_share * lp_.num_nonzeros()) {
       return Whole("few nonzeros in dense rows");
     }
@@ -89,30 +75,7 @@ class LazySolve {
     double bound = -std::numeric_limits<double>::infinity() * Sign();
     long long nodes = 0;
     for (int round = 0; round < lazy_.max_rounds; ++round) {
-      SolveOptions o = options_;
-      o.time_limit_s = std::max(0.0, Remaining());
-      // A kept solution is a fallback only, not the next subset's MIP start:
-      // with a start CBC searches differently (a cutoff, fewer heuristics),
-      // and on a six-thruster week of the year (node limits) the next
-      // round then ended one step above the optimum it found without one.
-      o.on_incumbent = nullptr;
-      if (lazy_.keep_model_incumbents) {
-        o.on_incumbent = [this](const Eigen::VectorXd& x) { KeepIfTheModelsSolution(x); };
-      }
-      // A subset's incumbent may break a left-out row: not the model's, so
-      // not reported as one (the caller would count on a schedule it cannot
-      // have); a solution that keeps every row is reported by
-      // KeepIfTheModelsSolution or, at the end, ReportSolution.
-      if (options_.progress) {
-        const double offset = Elapsed();
-        o.progress = [this, offset](const SolveProgress& sub) {
-          SolveProgress p = sub;
-          p.wall_seconds += offset;
-          p.new_incumbent = false;
-          p.objective = p.gap = std::numeric_limits<double>::quiet_NaN();
-          options_.progress(p);
-        };
-      }
+      const SolveOptions o = RoundOptions();
       const LpData subset = SelectRows(lp_, Rows());
       SolveResult s = solver_.Solve(subset, o);
       ++report_->rounds;
@@ -150,6 +113,57 @@ class LazySolve {
   }
 
  private:
+  // Marks the rows with at least dense_row_min_nonzeros entries as left out
+  // (in_ 0), the others as in; returns the left-out rows' nonzeros.
+  long long LeaveOutDenseRows() {
+    std::vector<int> nonzeros(static_cast<size_t>(lp_.num_rows()), 0);
+    for (int j = 0; j < lp_.num_cols(); ++j) {
+      for (SparseCol::InnerIterator it(lp_.a_matrix, j); it; ++it) ++nonzeros[it.row()];
+    }
+    in_.assign(static_cast<size_t>(lp_.num_rows()), 0);
+    int dense = 0;
+    long long dense_nonzeros = 0;
+    for (int i = 0; i < lp_.num_rows(); ++i) {
+      const int count = nonzeros[static_cast<size_t>(i)];
+      const bool is_dense = count >= lazy_.dense_row_min_nonzeros;
+      in_[static_cast<size_t>(i)] = is_dense ? 0 : 1;
+      dense += is_dense ? 1 : 0;
+      dense_nonzeros += is_dense ? count : 0;
+    }
+    report_->dense_rows = dense;
+    return dense_nonzeros;
+  }
+
+  // The options of one round's subset solve: the time left, and the
+  // callbacks that keep the model's own solutions only.
+  SolveOptions RoundOptions() {
+    SolveOptions o = options_;
+    o.time_limit_s = std::max(0.0, Remaining());
+    // A kept solution is a fallback only, not the next subset's MIP start:
+    // with a start CBC searches differently (a cutoff, fewer heuristics),
+    // and on a six-thruster week of the year (node limits) the next
+    // round then ended one step above the optimum it found without one.
+    o.on_incumbent = nullptr;
+    if (lazy_.keep_model_incumbents) {
+      o.on_incumbent = [this](const Eigen::VectorXd& x) { KeepIfTheModelsSolution(x); };
+    }
+    // A subset's incumbent may break a left-out row: not the model's, so
+    // not reported as one (the caller would count on a schedule it cannot
+    // have); a solution that keeps every row is reported by
+    // KeepIfTheModelsSolution or, at the end, ReportSolution.
+    if (options_.progress) {
+      const double offset = Elapsed();
+      o.progress = [this, offset](const SolveProgress& sub) {
+        SolveProgress p = sub;
+        p.wall_seconds += offset;
+        p.new_incumbent = false;
+        p.objective = p.gap = std::numeric_limits<double>::quiet_NaN();
+        options_.progress(p);
+      };
+    }
+    return o;
+  }
+
   double Elapsed() const { return clock_.Elapsed(); }
   double Remaining() const { return clock_.Remaining(); }
   bool Interrupted() const { return clock_.Interrupted(); }

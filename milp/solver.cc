@@ -70,6 +70,12 @@ bool GapClosed(double objective, double bound, const SolveOptions& options) {
          RelativeGap(objective, bound) <= options.relative_gap;
 }
 
+void SolveProgress::set_stage(std::string_view name) {
+  const size_t n = std::min(name.size(), sizeof(stage_name_) - 1);
+  std::copy_n(name.data(), n, stage_name_);
+  stage_name_[n] = '\0';
+}
+
 std::string_view ToString(SolvePhase phase) {
   switch (phase) {
     case SolvePhase::kRootLp:

@@ -70,12 +70,25 @@ struct SolveProgress {
   /// search: no incumbent, no bound yet); reported every progress_interval_s.
   bool in_root_lp = false;
   SolvePhase phase = SolvePhase::kSearch;
+  /// True on the one report that announces stage() has begun.
+  bool stage_begins = false;
+
+  /// The step of the caller's algorithm this progress belongs to (the
+  /// schedule search names its phases), empty when there is none. Held in a
+  /// fixed array, cut at 31 characters: the struct stays trivially copyable
+  /// (backends pass it between processes as bytes).
+  std::string_view stage() const { return std::string_view(stage_name_); }
+  void set_stage(std::string_view name);
+
   /// In the root LP: simplex iterations so far, and the current objective
   /// (model sense, with offset; not a bound until the LP is optimal) and sum
   /// of primal infeasibilities of the iterate. -1 / NaN when not known.
   long long lp_iterations = -1;
   double lp_objective = std::numeric_limits<double>::quiet_NaN();
   double lp_primal_infeasibility = std::numeric_limits<double>::quiet_NaN();
+
+ private:
+  char stage_name_[32] = {};
 };
 
 /// Options of a solve. IsValid() rules: time_limit_s >= 0 (not NaN, may be

@@ -20,7 +20,10 @@ namespace thrustsched::bench {
 /// The scenario file of `spec` with spec.patch (then `extra`) merged in,
 /// parsed by app::ParseScenario. @throws app::ScenarioError.
 app::Scenario LoadPatched(const CaseSpec& spec, const nlohmann::json& extra = {});
-/// section, case_id, repeat, variant, scenario, model, scheme, formulation,
+/// The columns every row of a case has: section, case_id, repeat, variant
+/// and scenario.
+Row CaseHeaderRow(const CaseSpec& spec, int repeat);
+/// CaseHeaderRow, then model, scheme, formulation,
 /// encoding, step, horizon, thruster count, published value and note.
 Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s);
 /// The whole file as text. @throws std::runtime_error naming the path.

@@ -367,12 +367,7 @@ std::vector<Row> ReadRowsJson(const std::string& path) {
 
 Row FailureRow(const CaseSpec& spec, int repeat, const std::string& status,
                const std::string& why) {
-  Row r;
-  r.Set("section", spec.section);
-  r.Set("case_id", spec.id);
-  r.Set("repeat", repeat);
-  r.Set("variant", spec.variant);
-  r.Set("scenario", spec.scenario);
+  Row r = CaseHeaderRow(spec, repeat);
   r.Set("status", status);
   r.Set("note", why);
   return r;
@@ -403,13 +398,18 @@ app::Scenario LoadPatched(const CaseSpec& spec, const nlohmann::json& extra) {
   return s;
 }
 
-Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
+Row CaseHeaderRow(const CaseSpec& spec, int repeat) {
   Row r;
   r.Set("section", spec.section);
   r.Set("case_id", spec.id);
   r.Set("repeat", repeat);
   r.Set("variant", spec.variant);
   r.Set("scenario", spec.scenario);
+  return r;
+}
+
+Row BaseRow(const CaseSpec& spec, int repeat, const app::Scenario& s) {
+  Row r = CaseHeaderRow(spec, repeat);
   r.Set("target_1pct_s", spec.target_1pct_s);  // NaN (not a target): empty cells
   r.Set("target_opt_s", spec.target_opt_s);
   r.Set("target_gap", spec.target_gap);

@@ -77,12 +77,7 @@ std::vector<Row> ExecuteTransfer(const CaseSpec& spec, int repeat, const RunCont
   json j = app::ParseJsonText(ReadTextFile(spec.scenario_path), spec.scenario_path);
   j = MergePatch(j, spec.patch);
   const app::TransferScenario sc = app::ParseTransferScenario(j, spec.scenario_path);
-  Row r;
-  r.Set("section", spec.section);
-  r.Set("case_id", spec.id);
-  r.Set("repeat", repeat);
-  r.Set("variant", spec.variant);
-  r.Set("scenario", spec.scenario);
+  Row r = CaseHeaderRow(spec, repeat);
   if (!spec.note.empty()) r.Set("note", spec.note);
   const std::string unit = UnitOf(spec.reference_key);
   SetPublished(spec, unit, &r);

@@ -127,6 +127,8 @@ py::dict ProgressDict(const milp::SolveProgress& p) {
   d["nodes"] = p.nodes;
   d["new_incumbent"] = p.new_incumbent;
   d["phase"] = PhaseName(p.phase);
+  d["stage"] = std::string(p.stage());
+  d["stage_begins"] = p.stage_begins;
   if (p.phase == milp::SolvePhase::kRootLp) {
     d["lp_iterations"] = p.lp_iterations;
     d["lp_objective"] = p.lp_objective;

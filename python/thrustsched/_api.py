@@ -39,7 +39,9 @@ def solve(problem: Any, *, time_limit_s: Optional[float] = None, relative_gap: O
     encoding (the transcription). check=False skips the independent checker.
     progress: None (silent), True (plain lines on stderr after 3 s), or a
     callable receiving dicts (phase, wall_seconds, objective, best_bound, gap,
-    nodes, new_incumbent), called in this thread with the GIL.
+    nodes, new_incumbent; stage: the search's phase, empty outside it, and
+    stage_begins: True on the one report announcing it), called in this
+    thread with the GIL.
 
     The GIL is released while the C++ code runs (other Python threads run,
     and several solves may run at once in threads: each has its own model,

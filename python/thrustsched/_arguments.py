@@ -28,13 +28,18 @@ def _progress_printer(delay_s: float = 3.0) -> Callable[[Dict[str, Any]], None]:
         t = d.get("wall_seconds", 0.0)
         if t < delay_s:
             return
+        stage = f"{d['stage']}: " if d.get("stage") else ""
+        if d.get("stage_begins"):
+            print(f"  [{t:.2f} s] {stage}begins; incumbent {d.get('objective'):.6g}, bound {d.get('best_bound'):.6g}",
+                  file=sys.stderr, flush=True)
+            return
         if phase == "root_lp":
-            print(f"  [{t:.2f} s] root LP relaxation: {d.get('lp_iterations')} iterations", file=sys.stderr,
+            print(f"  [{t:.2f} s] {stage}root LP relaxation: {d.get('lp_iterations')} iterations", file=sys.stderr,
                   flush=True)
             return
         gap = d.get("gap")
         gap_s = "n/a" if gap is None or gap != gap else f"{100 * gap:.3g}%"
-        print(f"  [{t:.2f} s] {phase}: incumbent {d.get('objective'):.6g}, bound {d.get('best_bound'):.6g}, "
+        print(f"  [{t:.2f} s] {stage}{phase}: incumbent {d.get('objective'):.6g}, bound {d.get('best_bound'):.6g}, "
               f"gap {gap_s}, {d.get('nodes')} nodes{' (new incumbent)' if d.get('new_incumbent') else ''}",
               file=sys.stderr, flush=True)
 

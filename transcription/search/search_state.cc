@@ -96,9 +96,21 @@ void SearchState::Step(const std::string& line) {
   if (report_ != nullptr) report_->steps.push_back(named);
 }
 
+void SearchState::BeginPhase(const std::string& name) {
+  phase_ = name;
+  if (!options_.progress || name.empty()) return;
+  milp::SolveProgress p = Progress(milp::SolvePhase::kSearch, false);
+  p.stage_begins = true;
+  options_.progress(p);
+}
+
 void SearchState::Report(milp::SolvePhase phase, bool new_incumbent) const {
-  if (!options_.progress) return;
+  if (options_.progress) options_.progress(Progress(phase, new_incumbent));
+}
+
+milp::SolveProgress SearchState::Progress(milp::SolvePhase phase, bool new_incumbent) const {
   milp::SolveProgress p;
+  p.set_stage(phase_);
   p.wall_seconds = Elapsed();
   p.phase = phase;
   p.in_root_lp = phase == milp::SolvePhase::kRootLp;
@@ -107,7 +119,7 @@ void SearchState::Report(milp::SolvePhase phase, bool new_incumbent) const {
   p.gap = has_incumbent() ? milp::RelativeGap(objective_, bound_) : kNaN;
   p.new_incumbent = new_incumbent;
   p.nodes = nodes_;
-  options_.progress(p);
+  return p;
 }
 
 milp::SolveOptions SearchState::SubOptions(bool global_bound) const {
@@ -119,8 +131,9 @@ milp::SolveOptions SearchState::SubOptions(bool global_bound) const {
   const double offset = Elapsed();
   o.progress = nullptr;
   if (options_.progress) {
-    o.progress = [this, offset, global_bound](const milp::SolveProgress& sub) {
+    o.progress = [this, offset, global_bound, stage = phase_](const milp::SolveProgress& sub) {
       milp::SolveProgress p = sub;
+      p.set_stage(stage);
       p.wall_seconds += offset;
       if (has_incumbent() && !(p.objective < objective_)) p.objective = objective_;
       if (!global_bound || !(p.best_bound > bound_)) p.best_bound = bound_;

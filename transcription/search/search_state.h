@@ -121,7 +121,9 @@ class SearchState {
 
   // ---------------------------------------------------------- the log
   /// The phase now running: its name prefixes the step lines.
-  void BeginPhase(const std::string& name) { phase_ = name; }
+  /// The phase now running (empty: none), named in the step log and in
+  /// progress reports; a non-empty name is announced by one progress report.
+  void BeginPhase(const std::string& name);
   const std::string& phase() const { return phase_; }
   void Step(const std::string& line);
   /// A progress report on the search's clock with its incumbent and bound.
@@ -141,6 +143,8 @@ class SearchState {
   milp::SolveResult Result() const;
 
  private:
+  milp::SolveProgress Progress(milp::SolvePhase phase, bool new_incumbent) const;
+
   const ScheduleMilp& milp_;
   const milp::LpData& lp_;
   const milp::Solver& solver_;
