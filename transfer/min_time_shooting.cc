@@ -97,6 +97,7 @@ struct Shooting {
   std::array<double, 6> start{};  // at lambda = 0: the residual terms of the guess's end
   double lambda = 1.0;
   int evaluations = 0;
+  const std::atomic<bool>* interrupt = nullptr;
 
   // Final-condition terms (targets or costates, then p_L) without the homotopy.
   std::array<double, 6> Terms(const FlowState& yf) const {
@@ -123,6 +124,10 @@ struct Shooting {
 
 int ShootingCallback(void* data, int n, const double* z, double* f, int /*iflag*/) {
   auto* s = static_cast<Shooting*>(data);
+  if (s->interrupt != nullptr && s->interrupt->load()) {
+    std::fill(f, f + n, 0.0);
+    return -1;  // a stop request: hybrd returns at once
+  }
   try {
     s->Evaluate(z, f);
   } catch (const std::runtime_error&) {
@@ -190,7 +195,7 @@ bool MinTimeProblem::IsValid(std::string* error) const {
   }
   const double et = std::hypot(target.value[1], target.value[2]);
   if (!(et < 1)) return common::Fail(error, "target is not an ellipse: e = " + FormatG(et, 10));
-  return true;
+  return force_model.IsValid(error);
 }
 
 bool ShootingOptions::IsValid(std::string* error) const {
@@ -288,19 +293,25 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   std::string error;
   if (!p.IsValid(&error)) throw std::invalid_argument("minimum-time problem: " + error);
   if (!options.IsValid(&error)) throw std::invalid_argument("shooting options: " + error);
+  if (p.force_model.kind != ForceModelKind::kTwoBody) {
+    throw std::invalid_argument("minimum_time supports force_model two_body only, got " +
+                                ToString(p.force_model.kind));
+  }
   if (!(guess.duration_s > 0) || !(guess.costate.norm() > 0)) {
     throw std::invalid_argument("shooting guess: duration_s and the costate must be > 0");
   }
   const ScaledUnits u = UnitsOf(p);
   Shooting s{&p, MakeFlow(p, u), u.ToScaled(p.initial), guess.duration_s / u.time_s,
              options.integration_tolerance};
+  s.interrupt = options.interrupt;
   std::array<double, 7> z{};
   z[0] = 1.0;
   const Vector6 p0 = guess.costate.normalized();
   for (int i = 0; i < 6; ++i) z[1 + i] = p0(i);
   std::array<double, 7> start = z;
   HybrdOutcome out = RunHybrd(&s, &z, options);
-  if (!(out.info == 1 && out.residual < 1e-6) && options.target_homotopy_steps > 0) {
+  if (!(out.info == 1 && out.residual < 1e-6) && options.target_homotopy_steps > 0 &&
+      !options.Interrupted()) {
     // Homotopy on the target from the end of the guess's extremal.
     z = start;
     try {
@@ -310,7 +321,7 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
       s.start.fill(0.0);
     }
     double lambda = 0, step = 1.0 / options.target_homotopy_steps;
-    while (lambda < 1 && step > 1e-4) {
+    while (lambda < 1 && step > 1e-4 && !options.Interrupted()) {
       std::array<double, 7> trial = z;
       s.lambda = std::min(1.0, lambda + step);
       const HybrdOutcome o = RunHybrd(&s, &trial, options);
@@ -327,8 +338,9 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   Vector6 costate;
   for (int i = 0; i < 6; ++i) costate(i) = z[1 + i];
   MinTimeSolution sol;
+  const bool interrupted = options.Interrupted();
   const double tf_s = z[0] * guess.duration_s;
-  if (tf_s > 0 && out.info >= 0) {
+  if (tf_s > 0 && out.info >= 0 && !interrupted) {
     try {
       sol = Extremal(p, tf_s, costate, options, 20.0);
     } catch (const std::runtime_error&) {
@@ -338,7 +350,8 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   sol.hybrd_info = out.info;
   sol.evaluations = s.evaluations;
   sol.residual_norm = out.residual;
-  sol.converged = out.info == 1 && out.residual < 1e-6 && sol.hamiltonian > 0;
+  sol.converged = !interrupted && out.info == 1 && out.residual < 1e-6 && sol.hamiltonian > 0;
+  sol.interrupted = interrupted;
   return sol;
 }
 
@@ -361,6 +374,10 @@ ContinuationResult ContinueOnThrust(const MinTimeProblem& p, const MinTimeSoluti
   double log_step = 0.25;
   const double direction = final_thrust_n < p.thrust_n ? -1.0 : 1.0;
   while (c.thrust_n != final_thrust_n && log_step > 1e-4) {
+    if (options.Interrupted()) {
+      c.interrupted = true;
+      break;
+    }
     double next = c.thrust_n * std::exp(direction * log_step);
     if ((next - final_thrust_n) * direction > 0) next = final_thrust_n;
     MinTimeProblem q = p;
@@ -369,6 +386,10 @@ ContinuationResult ContinueOnThrust(const MinTimeProblem& p, const MinTimeSoluti
     g.duration_s = c.solution.duration_s * c.thrust_n / next;
     g.costate = c.solution.costate;
     const MinTimeSolution s = SolveMinTime(q, g, o);
+    if (s.interrupted) {
+      c.interrupted = true;  // not a failed step: keep the last converged solution
+      break;
+    }
     ContinuationStep step{next, s.duration_s, s.converged, s.evaluations};
     c.steps.push_back(step);
     if (progress) progress(step);

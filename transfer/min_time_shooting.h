@@ -29,11 +29,13 @@
 #define THRUSTSCHED_TRANSFER_MIN_TIME_SHOOTING_H_
 
 #include <array>
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "transfer/equinoctial.h"
+#include "transfer/force_model.h"
 
 namespace thrustsched::transfer {
 
@@ -53,6 +55,10 @@ struct MinTimeProblem {
   double thrust_n = 0.0;
   double isp_s = 0.0;
   double mu = kMuEarth;
+  /// Used by the feedback (lyapunov_feedback.h), the Gauss propagation and
+  /// the replay; the minimum-time shooting supports two_body only (its
+  /// costate equations have no J2 terms).
+  ForceModel force_model;
   bool IsValid(std::string* error) const;
 };
 
@@ -79,6 +85,12 @@ struct ShootingOptions {
   /// Continuation on the target (0 -> 1) from the orbit the guess reaches,
   /// when the direct solve from the guess fails.
   int target_homotopy_steps = 20;
+  /// A stop request (Ctrl-C; may be null), polled before every evaluation of
+  /// the shooting function and every continuation step: once it is set the
+  /// solve returns unconverged with `interrupted`, the continuation its last
+  /// converged solution.
+  const std::atomic<bool>* interrupt = nullptr;
+  bool Interrupted() const { return interrupt != nullptr && interrupt->load(); }
   bool IsValid(std::string* error) const;
 };
 
@@ -92,7 +104,8 @@ struct TrajectorySample {
 
 struct MinTimeSolution {
   bool converged = false;
-  int hybrd_info = 0;  // MINPACK's info (1: converged to xtol)
+  bool interrupted = false;  // stopped by ShootingOptions::interrupt
+  int hybrd_info = 0;        // MINPACK's info (1: converged to xtol)
   int evaluations = 0;
   double residual_norm = 0.0;  // shooting function, scaled units
   double duration_s = 0.0;
@@ -108,7 +121,8 @@ struct MinTimeSolution {
 };
 
 /// Solves the shooting equations from `guess`.
-/// @throws std::invalid_argument if the problem or the options are invalid.
+/// @throws std::invalid_argument if the problem or the options are invalid,
+///         or p.force_model is not two_body.
 MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess,
                              const ShootingOptions& options = {});
 
@@ -127,6 +141,7 @@ struct ContinuationStep {
 struct ContinuationResult {
   MinTimeSolution solution;  // at the final thrust (converged or the last one that did)
   double thrust_n = 0.0;     // the thrust of `solution`
+  bool interrupted = false;  // stopped by options.interrupt before final_thrust_n
   std::vector<ContinuationStep> steps;
 };
 
