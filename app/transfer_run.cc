@@ -1,5 +1,6 @@
 #include "app/transfer_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "common/constants.h"
 #include "common/format.h"
 #include "dynamics/two_body.h"
+#include "transfer/second_order.h"
 #include "transfer/two_impulse.h"
 
 namespace thrustsched::app {
@@ -102,6 +104,27 @@ transfer::ShootingOptions WithInterrupt(transfer::ShootingOptions o, const Trans
   return o;
 }
 
+// The second-order necessary conditions of a converged extremal
+// (transfer/second_order.h), sampled at most 2000 times along it.
+json SecondOrderJson(const transfer::MinTimeProblem& p, const transfer::MinTimeSolution& s,
+                     const transfer::ShootingOptions& shooting) {
+  transfer::SecondOrderOptions o;
+  o.shooting = shooting;
+  o.samples_per_hour = std::min(20.0, 2000.0 / (s.duration_s / 3600));
+  const transfer::SecondOrderCheck c = transfer::CheckSecondOrder(p, s, o);
+  return {{"conjugate_point_test", c.verdict},
+          {"legendre_holds", c.legendre_holds},
+          {"min_switching_norm_ratio", c.min_switching_norm},
+          {"no_conjugate_point", c.no_conjugate_point},
+          {"conjugate_times_s", c.conjugate_times_s},
+          {"resolved_from_s", c.resolved_from_s},
+          {"resolved_samples", c.resolved_samples},
+          {"resolved_fraction_second_half", c.resolved_fraction_second_half},
+          {"min_abs_determinant_second_half", c.min_abs_determinant},
+          {"final_determinant", c.final_determinant},
+          {"samples", c.t_s.size()}};
+}
+
 Outcome RunMinimumTime(const TransferScenario& sc, bool quiet, const TransferHooks& hooks) {
   transfer::MinTimeProblem p = sc.problem;
   if (sc.continuation_from_thrust_n) p.thrust_n = *sc.continuation_from_thrust_n;
@@ -156,6 +179,8 @@ Outcome RunMinimumTime(const TransferScenario& sc, bool quiet, const TransferHoo
   }
   o.extra["propellant_check_kg"] =
       reached.thrust_n * s.duration_s / (common::kStandardGravity_m_s2 * reached.isp_s);
+  // Of the converged extremal only (an interrupted run keeps its time).
+  o.extra["second_order"] = s.converged ? SecondOrderJson(reached, s, sc.shooting) : json(nullptr);
   return o;
 }
 

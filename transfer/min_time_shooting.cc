@@ -276,6 +276,9 @@ MinTimeSolution Extremal(const MinTimeProblem& p, double duration_s, const Vecto
     const double pm = states[k][12] - i_f;
     ts.hamiltonian =
         flow.ReducedHamiltonian(states[k], times[k], &ts.direction_qsw) - flow.flow * pm;
+    Vector6 costate_k;
+    for (int i = 0; i < 6; ++i) costate_k(i) = states[k][6 + i];
+    ts.switching_norm = (Gauss(x, flow.mu).F.transpose() * costate_k).norm();
     s.hamiltonian_drift =
         std::max(s.hamiltonian_drift, std::abs(ts.hamiltonian - hf) / std::abs(hf));
     s.trajectory.push_back(ts);

@@ -100,6 +100,7 @@ struct TrajectorySample {
   double mass_kg = 0.0;
   Eigen::Vector3d direction_qsw = Eigen::Vector3d::Zero();  // unit thrust direction
   double hamiltonian = 0.0;                                 // scaled units
+  double switching_norm = 0.0;  // |F^T p|, scaled units (the thrust direction's definition)
 };
 
 struct MinTimeSolution {
