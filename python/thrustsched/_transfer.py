@@ -5,6 +5,7 @@
     res.trajectory                   # DataFrame of trajectory.csv
     res.orbit                        # DataFrame of orbit.csv (Cartesian states)
     res.summary["final_state"]       # a station-keeping scenario's initial_state
+    transfer(path, progress=print)   # continuation steps; Ctrl-C returns the best so far (res.interrupted)
 """
 from __future__ import annotations
 
