@@ -272,16 +272,11 @@ TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::st
 
 void CheckForceModel(const TransferScenario& s) {
   if (s.problem.force_model.kind == transfer::ForceModelKind::kTwoBody) return;
-  const std::string model = transfer::ToString(s.problem.force_model.kind);
-  if (s.method != TransferMethod::kFeedback) {
-    throw ScenarioError("scenario.transfer.force_model: " + ToString(s.method) +
-                        " supports force_model two_body only, got \"" + model + "\"");
-  }
-  if (s.optimal_end) {
+  if (s.method == TransferMethod::kTwoImpulse) {
     throw ScenarioError(
-        "scenario.transfer.feedback.optimal_end: the feedback's minimum-time end supports "
-        "force_model two_body only (scenario.transfer.force_model is \"" +
-        model + "\"): set \"optimal_end\": false");
+        "scenario.transfer.force_model: two_impulse (the Hohmann closed form) supports "
+        "force_model two_body only, got \"" +
+        transfer::ToString(s.problem.force_model.kind) + "\"");
   }
 }
 

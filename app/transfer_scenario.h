@@ -71,10 +71,10 @@ inline constexpr double kEarthRadiusM = 6378137.0;
 inline constexpr double kEarthSphereOfInfluenceM = 9.25e8;
 
 TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::string& path);
-/// "force_model": "j2" is for the feedback without its minimum-time end
-/// (the shooting's costate equations are two-body); @throws ScenarioError
-/// naming the field otherwise. Called by the parser and, after a method
-/// override, by RunTransferScenario.
+/// "force_model": "j2" is for minimum_time and feedback (two_impulse is the
+/// two-body Hohmann closed form); @throws ScenarioError naming the field
+/// otherwise. Called by the parser and, after a method override, by
+/// RunTransferScenario.
 void CheckForceModel(const TransferScenario& s);
 /// @throws ScenarioError on unreadable files and on every error above.
 TransferScenario LoadTransferScenario(const std::string& path);

@@ -45,6 +45,42 @@ Eigen::Vector3d PerturbationQsw(const Vector6& x, const ForceModel& f, const Sca
                          -6 * k * (1 - hx * hx - hy * hy) * z / s4);
 }
 
+Eigen::Matrix<double, 3, 6> PerturbationJacobianQsw(const Vector6& x, const ForceModel& f,
+                                                    const ScaledUnits& u) {
+  enum { kP = 0, kEx, kEy, kHx, kHy, kL };
+  Eigen::Matrix<double, 3, 6> d = Eigen::Matrix<double, 3, 6>::Zero();
+  if (f.kind == ForceModelKind::kTwoBody) return d;
+  const Eigen::Vector3d g = PerturbationQsw(x, f, u);
+  const double p = x(0), ex = x(1), ey = x(2), hx = x(3), hy = x(4);
+  const double cl = std::cos(x(5)), sl = std::sin(x(5));
+  const double w = 1 + ex * cl + ey * sl, wl = -ex * sl + ey * cl;  // wl = dw/dL
+  const double r = p / w, radius = f.radius_m / u.length_m;
+  const double k = u.mu() * f.j2 * radius * radius / (r * r * r * r);  // k = mu J2 R^2 w^4 / P^4
+  const double z = hx * sl - hy * cl, zl = hx * cl + hy * sl;
+  const double s2 = 1 + hx * hx + hy * hy, s4 = s2 * s2, s6 = s4 * s2;
+  const double c1 = 1 - hx * hx - hy * hy;
+  // k's factor: every component is k times a function of (hx, hy, L).
+  d.col(kP) = -4 * g / p;
+  d.col(kEx) = 4 * g * cl / w;
+  d.col(kEy) = 4 * g * sl / w;
+  d.col(kL) = 4 * g * wl / w;
+  // The (hx, hy, L) factors: A = Z^2 / s2^2, B = Z Zl / s2^2, C = c1 Z / s2^2,
+  // with dZ/dhx = sin L, dZ/dhy = -cos L, dZ/dL = Zl, dZl/dhx = cos L,
+  // dZl/dhy = sin L, dZl/dL = -Z.
+  auto add = [&](int j, double dz, double dzl, double ds2, double dc1) {
+    const double da = 2 * z * dz / s4 - 2 * z * z * ds2 / s6;
+    const double db = (dz * zl + z * dzl) / s4 - 2 * z * zl * ds2 / s6;
+    const double dc = (dc1 * z + c1 * dz) / s4 - 2 * c1 * z * ds2 / s6;
+    d(0, j) += 18 * k * da;  // gamma_Q = -3/2 k (1 - 12 A)
+    d(1, j) += -12 * k * db;
+    d(2, j) += -6 * k * dc;
+  };
+  add(kHx, sl, cl, 2 * hx, -2 * hx);
+  add(kHy, -cl, sl, 2 * hy, -2 * hy);
+  add(kL, zl, -z, 0, 0);
+  return d;
+}
+
 Vector6 GaussRates(const Vector6& x, const Eigen::Vector3d& control_acceleration_qsw,
                    const ForceModel& f, const ScaledUnits& u) {
   const GaussTerms g = Gauss(x, u.mu());

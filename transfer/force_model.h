@@ -1,7 +1,8 @@
 // The force model of a transfer beyond the point mass: Earth's J2 zonal
 // harmonic as a perturbing acceleration in the local QSW frame, added to the
 // thrust in the Gauss equations of transfer/equinoctial.h (Bombrun 2007
-// sec. 1.2: dq/dt = f0(q) + F(q) (T/m u + gamma_pert)). The J2 components are
+// sec. 1.2: dq/dt = f0(q) + F(q) (T/m u + gamma_pert)), with its
+// derivatives for the minimum-time costate equations. The J2 components are
 // those of Betts 2010 (sec. 6.3, the low-thrust transfer's Delta_r,
 // Delta_theta, Delta_h; Walker, Ireland & Owens 1985 for the elements), in
 // the modified equinoctial elements:
@@ -56,6 +57,12 @@ struct ForceModel {
 /// The perturbing acceleration (zero for two_body) in QSW at the scaled
 /// elements x, in scaled units (length / time^2).
 Eigen::Vector3d PerturbationQsw(const Vector6& x, const ForceModel& f, const ScaledUnits& u);
+
+/// Its derivatives with respect to the scaled elements, written by hand
+/// (tested against finite differences): column j is d gamma / d x_j. The
+/// minimum-time costate equations need them.
+Eigen::Matrix<double, 3, 6> PerturbationJacobianQsw(const Vector6& x, const ForceModel& f,
+                                                    const ScaledUnits& u);
 
 /// dx/dt = f0 + F (control_acceleration_qsw + PerturbationQsw), scaled units.
 Vector6 GaussRates(const Vector6& x, const Eigen::Vector3d& control_acceleration_qsw,

@@ -26,6 +26,8 @@ struct ExtremalFlow {
   double thrust;  // kg Mm / h^2
   double m0;      // kg
   double flow;    // kg / h (T / (g0 Isp))
+  ForceModel force;
+  ScaledUnits units;
 
   double Mass(double t) const { return m0 - flow * t; }
 
@@ -43,10 +45,22 @@ struct ExtremalFlow {
     const double norm = ftp.norm();
     const Eigen::Vector3d u = norm > 0 ? Eigen::Vector3d(ftp / norm) : Eigen::Vector3d::Zero();
     const double acc = thrust / m;
-    const Vector6 dx = g.f0 + acc * g.F * u;
-    for (int j = 0; j < 6; ++j) {
-      dy[j] = dx(j);
-      dy[6 + j] = -(p.dot(d.df0.col(j)) + acc * p.dot(d.dF[j] * u));
+    if (force.kind == ForceModelKind::kTwoBody) {
+      const Vector6 dx = g.f0 + acc * g.F * u;
+      for (int j = 0; j < 6; ++j) {
+        dy[j] = dx(j);
+        dy[6 + j] = -(p.dot(d.df0.col(j)) + acc * p.dot(d.dF[j] * u));
+      }
+    } else {
+      // H gains p . F gamma(x): its x-derivative p . dF_j gamma + (F^T p) . dgamma/dx_j.
+      const Eigen::Vector3d gamma = PerturbationQsw(x, force, units);
+      const Eigen::Matrix<double, 3, 6> dgamma = PerturbationJacobianQsw(x, force, units);
+      const Eigen::Vector3d a = acc * u + gamma;
+      const Vector6 dx = g.f0 + g.F * a;
+      for (int j = 0; j < 6; ++j) {
+        dy[j] = dx(j);
+        dy[6 + j] = -(p.dot(d.df0.col(j)) + p.dot(d.dF[j] * a) + ftp.dot(dgamma.col(j)));
+      }
     }
     dy[12] = thrust * norm / (m * m);
   }
@@ -58,14 +72,17 @@ struct ExtremalFlow {
     const GaussTerms g = Gauss(x, mu);
     const Eigen::Vector3d ftp = g.F.transpose() * p;
     if (u != nullptr) *u = ftp.norm() > 0 ? Eigen::Vector3d(ftp.normalized()) : ftp;
-    return p.dot(g.f0) + thrust / Mass(t) * ftp.norm();
+    const double perturbation =
+        force.kind == ForceModelKind::kTwoBody ? 0.0 : ftp.dot(PerturbationQsw(x, force, units));
+    return p.dot(g.f0) + perturbation + thrust / Mass(t) * ftp.norm();
   }
 };
 
 ExtremalFlow MakeFlow(const MinTimeProblem& p, const ScaledUnits& u) {
   const double thrust = u.Thrust(p.thrust_n);
-  return ExtremalFlow{u.mu(), thrust, p.mass_kg,
-                      thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s)};
+  return ExtremalFlow{u.mu(),        thrust,
+                      p.mass_kg,     thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s),
+                      p.force_model, u};
 }
 
 ScaledUnits UnitsOf(const MinTimeProblem& p) {
@@ -296,10 +313,6 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   std::string error;
   if (!p.IsValid(&error)) throw std::invalid_argument("minimum-time problem: " + error);
   if (!options.IsValid(&error)) throw std::invalid_argument("shooting options: " + error);
-  if (p.force_model.kind != ForceModelKind::kTwoBody) {
-    throw std::invalid_argument("minimum_time supports force_model two_body only, got " +
-                                ToString(p.force_model.kind));
-  }
   if (!(guess.duration_s > 0) || !(guess.costate.norm() > 0)) {
     throw std::invalid_argument("shooting guess: duration_s and the costate must be > 0");
   }

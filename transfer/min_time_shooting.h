@@ -10,7 +10,8 @@
 // free final time fixes only its scale); the equations are the five target
 // elements at t_f (or p_j(t_f) = 0 for an element left free), p_L(t_f) = 0
 // (free final longitude) and |p(0)|^2 = 1. The costate equations are the
-// hand-written derivatives of transfer/equinoctial.h; MINPACK's hybrd solves
+// hand-written derivatives of transfer/equinoctial.h (and, with J2, of
+// transfer/force_model.h); MINPACK's hybrd solves
 // the shooting equations with a forward-difference Jacobian; the flow is
 // Runge-Kutta-Fehlberg 7(8) (Boost.Odeint) at a tight tolerance.
 //
@@ -21,7 +22,8 @@
 //   transfer::ContinuationResult c = transfer::ContinueOnThrust(p, s, 0.2);
 //
 // Checks reported with every solution: the shooting residual, the drift of
-// the maximised Hamiltonian H = p.f0 + (T/m)|F^T p| + p_m dm/dt (the problem
+// the maximised Hamiltonian H = p.(f0 + F gamma) + (T/m)|F^T p| + p_m dm/dt
+// (gamma: the force model's perturbation, transfer/force_model.h; the problem
 // is autonomous once the mass costate p_m is carried: H is constant, equal to
 // -p^0 > 0 at the free final time, with p_m(t_f) = 0 for a free final mass),
 // and the propellant T t_f / (g0 Isp).
@@ -55,9 +57,9 @@ struct MinTimeProblem {
   double thrust_n = 0.0;
   double isp_s = 0.0;
   double mu = kMuEarth;
-  /// Used by the feedback (lyapunov_feedback.h), the Gauss propagation and
-  /// the replay; the minimum-time shooting supports two_body only (its
-  /// costate equations have no J2 terms).
+  /// Used everywhere: the shooting's state and costate equations (with
+  /// the hand-written J2 derivatives of force_model.h), the feedback
+  /// (lyapunov_feedback.h), the Gauss propagation and the replay.
   ForceModel force_model;
   bool IsValid(std::string* error) const;
 };
@@ -122,8 +124,7 @@ struct MinTimeSolution {
 };
 
 /// Solves the shooting equations from `guess`.
-/// @throws std::invalid_argument if the problem or the options are invalid,
-///         or p.force_model is not two_body.
+/// @throws std::invalid_argument if the problem or the options are invalid.
 MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess,
                              const ShootingOptions& options = {});
 
