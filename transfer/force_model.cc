@@ -33,7 +33,7 @@ bool ForceModel::IsValid(std::string* error) const {
 
 Eigen::Vector3d PerturbationQsw(const Vector6& x, const ForceModel& f, const ScaledUnits& u) {
   if (f.kind == ForceModelKind::kTwoBody) return Eigen::Vector3d::Zero();
-  // Betts 2010 sec. 6.3 (Delta_r, Delta_theta, Delta_h).
+  // Betts 2010 ch. 6, the low-thrust orbit transfer (Delta_r, Delta_theta, Delta_h).
   const double p = x(0), ex = x(1), ey = x(2), hx = x(3), hy = x(4);
   const double cl = std::cos(x(5)), sl = std::sin(x(5));
   const double r = p / (1 + ex * cl + ey * sl);

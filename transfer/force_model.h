@@ -1,9 +1,9 @@
 // The force model of a transfer beyond the point mass: Earth's J2 zonal
 // harmonic as a perturbing acceleration in the local QSW frame, added to the
 // thrust in the Gauss equations of transfer/equinoctial.h (Bombrun 2007
-// sec. 1.2: dq/dt = f0(q) + F(q) (T/m u + gamma_pert)), with its
+// (1.29)-(1.34): dq/dt = f0(q) + F(q) (T/m u + gamma_pert)), with its
 // derivatives for the minimum-time costate equations. The J2 components are
-// those of Betts 2010 (sec. 6.3, the low-thrust transfer's Delta_r,
+// those of Betts 2010 (ch. 6, the low-thrust orbit transfer's Delta_r,
 // Delta_theta, Delta_h; Walker, Ireland & Owens 1985 for the elements), in
 // the modified equinoctial elements:
 //

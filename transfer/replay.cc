@@ -14,7 +14,7 @@ namespace thrustsched::transfer {
 namespace {
 
 // The J2 acceleration from the gradient of the zonal potential
-// U = -mu J2 R^2 / (2 r^3) (3 z^2 / r^2 - 1) (Vallado 2013 eq. 8-29), in
+// U = -mu J2 R^2 / (2 r^3) (3 z^2 / r^2 - 1) (e.g. Vallado 2013 ch. 8), in
 // the inertial frame whose z axis is the pole; any consistent units.
 Eigen::Vector3d J2AccelerationCartesian(const Eigen::Vector3d& r, double mu, double j2,
                                         double radius) {

@@ -6,11 +6,14 @@
 
 #include <Eigen/LU>
 
+#include "transfer/force_model.h"
+
 namespace thrustsched::transfer {
 namespace {
 
-// An orthonormal basis of the plane orthogonal to p0 (columns): the last
-// five columns of the Q of a QR of [p0 I].
+// An orthonormal basis of the hyperplane orthogonal to p0 (columns): the
+// unit vectors made orthogonal to p0 and to each other (Gram-Schmidt), the
+// one nearest p0 skipped.
 Eigen::Matrix<double, 6, 5> TangentBasis(const Vector6& p0) {
   Eigen::Matrix<double, 6, 5> e;
   int n = 0;
@@ -18,7 +21,7 @@ Eigen::Matrix<double, 6, 5> TangentBasis(const Vector6& p0) {
   for (int k = 0; k < 6 && n < 5; ++k) {
     Vector6 v = Vector6::Unit(k) - d * d(k);
     for (int j = 0; j < n; ++j) v -= e.col(j) * e.col(j).dot(v);
-    if (v.norm() > 0.3) e.col(n++) = v.normalized();  // a unit vector nearly along p0 is skipped
+    if (v.norm() > 0.3) e.col(n++) = v.normalized();
   }
   return e;
 }
@@ -86,14 +89,14 @@ SecondOrderCheck CheckSecondOrder(const MinTimeProblem& p, const MinTimeSolution
   }
   c.min_switching_norm = max_switch > 0 ? min_switch / max_switch : 0.0;
   c.legendre_holds = min_switch > 0;
-  const double mu = u.mu(), thrust = u.Thrust(p.thrust_n);
+  const double thrust = u.Thrust(p.thrust_n);
   c.min_abs_determinant = HUGE_VAL;
   double last_resolved = 0;  // the last resolved determinant (0: none yet)
   int second_half = 0, second_half_resolved = 0;
   for (std::size_t i = 1; i < nominal.trajectory.size(); ++i) {
     const TrajectorySample& x = nominal.trajectory[i];
-    const GaussTerms g = Gauss(Scaled(x, u), mu);
-    m[i].col(5) = m2[i].col(5) = g.f0 + thrust / x.mass_kg * g.F * x.direction_qsw;  // dx/dt
+    m[i].col(5) = m2[i].col(5) =  // dx/dt
+        GaussRates(Scaled(x, u), thrust / x.mass_kg * x.direction_qsw, p.force_model, u);
     const double det = EquilibratedDeterminant(m[i]), check = EquilibratedDeterminant(m2[i]);
     const bool resolved = std::abs(det - check) <= 0.1 * std::max(std::abs(det), std::abs(check));
     if (resolved) {

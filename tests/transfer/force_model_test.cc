@@ -37,7 +37,7 @@ double Slope(const std::vector<double>& t, const std::vector<double>& y) {
 }
 
 // The secular J2 drift of an unthrusted orbit (first-order theory, e.g.
-// Vallado 2013 eq. 9-41 and 9-42): dW/dt = -3/2 n J2 (R/p)^2 cos i,
+// Vallado 2013 ch. 9): dW/dt = -3/2 n J2 (R/p)^2 cos i,
 // dw/dt = 3/4 n J2 (R/p)^2 (5 cos^2 i - 1), fitted over 50 revolutions of
 // the Gauss equations with the QSW perturbation (short-period terms average out
 // over whole revolutions; the mean and osculating elements differ by O(J2)).
