@@ -232,7 +232,8 @@ void AddTransferCommand(CLI::App* cli, Subcommands* c) {
       "transfer",
       "Orbit transfer (minimum time by shooting, Lyapunov feedback, two impulses) "
       "from a transfer scenario; writes summary.json (with the end state as a station-keeping "
-      "initial_state), trajectory.csv, orbit.csv, SVG plots and report.html.");
+      "initial_state), trajectory.csv, orbit.csv, SVG plots and report.html. Ctrl-C stops it and "
+      "writes the best result so far (exit 4).");
   c->c_transfer->add_option("scenario", c->transfer.scenario, "transfer scenario file (JSON)")
       ->required();
   c->c_transfer->add_option("--out", c->transfer.out_dir,

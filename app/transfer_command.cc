@@ -7,6 +7,7 @@
 
 #include "app/ccsds_oem.h"
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "app/outputs.h"
 #include "app/run_folder.h"
 #include "app/transfer_handover.h"
@@ -52,7 +53,19 @@ int RunTransfer(const TransferArgs& a) {
     }
   }
   const fs::path dir(folder.path());
-  TransferRun run = RunTransferScenario(sc, a.scenario, a.quiet);
+  TransferRun run;
+  {
+    // Ctrl-C (SIGINT, SIGTERM, SIGHUP) stops the shooting or the feedback and
+    // keeps the best result so far, written as usual; a second one exits.
+    InterruptWatcher watcher;
+    TransferHooks hooks;
+    hooks.interrupt = InterruptWatcher::flag();
+    run = RunTransferScenario(sc, a.scenario, a.quiet, hooks);
+  }
+  if (run.interrupted && !a.quiet) {
+    std::cerr << "interrupted (" << InterruptWatcher::signal_name()
+              << "): writing the best result so far\n";
+  }
   run.summary["command_line"] = a.command_line;
   WriteJsonFile((dir / "summary.json").string(), run.summary);
   WriteTextFile((dir / "trajectory.csv").string(), run.trajectory_csv);
@@ -77,12 +90,17 @@ int RunTransfer(const TransferArgs& a) {
   const json& s = run.summary;
   std::cout << "transfer      " << sc.name << " (" << a.scenario << "), " << ToString(sc.method)
             << "\n"
-            << "status        " << (run.converged ? "converged" : "not converged") << "\n"
+            << "status        "
+            << (run.converged     ? "converged"
+                : run.interrupted ? "interrupted"
+                                  : "not converged")
+            << "\n"
             << "duration      " << common::FormatG(s["duration_h"].get<double>(), 8) << " h ("
             << common::FormatG(s["duration_d"].get<double>(), 7) << " d)\n"
             << "propellant    " << common::FormatG(s["propellant_kg"].get<double>(), 7) << " kg\n"
             << "output        " << out_dir << " (" << files << ")\n";
   if (!a.oem.empty()) std::cout << "oem           " << a.oem << "\n";
+  if (run.interrupted) return kExitInterrupted;
   return run.converged ? kExitOk : kExitNoSolution;
 }
 

@@ -11,7 +11,11 @@
 //   app::TransferArgs a;
 //   a.scenario = "data/scenarios/transfer/gto_geo_caillau_60n.json";
 //   a.out_dir = "out/gto60";
-//   int exit_code = app::RunTransfer(a);   // 0 converged / reached, 4 not, 2 bad input
+//   int exit_code = app::RunTransfer(a);   // 0 converged / reached, 4 not or interrupted, 2 bad
+//   input
+//
+// The first Ctrl-C (SIGINT, SIGTERM, SIGHUP) stops the transfer and writes its best result so far
+// (summary "status": "interrupted", exit 4); a second one exits at once (128 + signal).
 #ifndef THRUSTSCHED_APP_TRANSFER_COMMAND_H_
 #define THRUSTSCHED_APP_TRANSFER_COMMAND_H_
 

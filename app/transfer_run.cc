@@ -1,5 +1,6 @@
 #include "app/transfer_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "common/constants.h"
 #include "common/format.h"
 #include "dynamics/two_body.h"
+#include "transfer/second_order.h"
 #include "transfer/two_impulse.h"
 
 namespace thrustsched::app {
@@ -97,17 +99,52 @@ json ReplayJson(const transfer::MinTimeProblem& p, const transfer::ReplayResult&
           {"mu_m3_s2", p.mu}};
 }
 
-Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
+transfer::ShootingOptions WithInterrupt(transfer::ShootingOptions o, const TransferHooks& hooks) {
+  o.interrupt = hooks.interrupt;
+  return o;
+}
+
+// The second-order necessary conditions of a converged extremal
+// (transfer/second_order.h), sampled at most 2000 times along it.
+json SecondOrderJson(const transfer::MinTimeProblem& p, const transfer::MinTimeSolution& s,
+                     const transfer::ShootingOptions& shooting) {
+  transfer::SecondOrderOptions o;
+  o.shooting = shooting;
+  o.samples_per_hour = std::min(20.0, 2000.0 / (s.duration_s / 3600));
+  const transfer::SecondOrderCheck c = transfer::CheckSecondOrder(p, s, o);
+  return {{"conjugate_point_test", c.verdict},
+          {"legendre_holds", c.legendre_holds},
+          {"min_switching_norm_ratio", c.min_switching_norm},
+          {"no_conjugate_point", c.no_conjugate_point},
+          {"conjugate_times_s", c.conjugate_times_s},
+          {"resolved_from_s", c.resolved_from_s},
+          {"resolved_samples", c.resolved_samples},
+          {"resolved_fraction_second_half", c.resolved_fraction_second_half},
+          {"min_abs_determinant_second_half", c.min_abs_determinant},
+          {"final_determinant", c.final_determinant},
+          {"samples", c.t_s.size()}};
+}
+
+Outcome RunMinimumTime(const TransferScenario& sc, bool quiet, const TransferHooks& hooks) {
   transfer::MinTimeProblem p = sc.problem;
   if (sc.continuation_from_thrust_n) p.thrust_n = *sc.continuation_from_thrust_n;
+  const transfer::ShootingOptions options = WithInterrupt(sc.shooting, hooks);
   const transfer::ShootingGuess guess = sc.guess ? *sc.guess : transfer::InitialGuess(p);
-  transfer::MinTimeSolution s = transfer::SolveMinTime(p, guess, sc.shooting);
+  transfer::MinTimeSolution s = transfer::SolveMinTime(p, guess, options);
   Outcome o;
   int steps = 0;
+  // The problem the solution solves: the thrust the continuation reached.
+  transfer::MinTimeProblem reached = sc.problem;
   if (sc.continuation_from_thrust_n && s.converged && p.thrust_n != sc.problem.thrust_n) {
     if (!quiet) std::cerr << "shooting at " << p.thrust_n << " N: converged, continuing\n";
     const transfer::ContinuationResult c = transfer::ContinueOnThrust(
-        p, s, sc.problem.thrust_n, sc.shooting, [&](const transfer::ContinuationStep& st) {
+        p, s, sc.problem.thrust_n, options, [&](const transfer::ContinuationStep& st) {
+          if (hooks.progress) {
+            hooks.progress({{"phase", "continuation"},
+                            {"thrust_n", st.thrust_n},
+                            {"converged", st.converged},
+                            {"duration_s", st.duration_s}});
+          }
           if (quiet) return;
           std::cerr << "  thrust " << common::FormatG(st.thrust_n, 6)
                     << " N: " << (st.converged ? "converged, t_f = " : "not converged, t_f ~ ")
@@ -116,6 +153,9 @@ Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
     steps = static_cast<int>(c.steps.size());
     s = c.solution;
     s.converged = s.converged && c.thrust_n == sc.problem.thrust_n;
+    reached.thrust_n = c.thrust_n;
+  } else {
+    reached.thrust_n = p.thrust_n;  // no continuation ran: the start's shooting
   }
   o.ok = s.converged;
   o.duration_s = s.duration_s;
@@ -125,16 +165,22 @@ Outcome RunMinimumTime(const TransferScenario& sc, bool quiet) {
   o.revolutions = s.revolutions;
   o.convergence = ShootingJson(s);
   o.convergence["continuation_steps"] = steps;
+  if (sc.continuation_from_thrust_n) {
+    // Null when not even the start's shooting converged.
+    o.convergence["continuation_thrust_reached_n"] =
+        steps > 0 || s.converged ? json(reached.thrust_n) : json(nullptr);
+  }
   AppendShooting(s, &o, 0.0);
   if (s.trajectory.size() >= 2) {
-    const transfer::ReplayResult r =
-        transfer::ReplaySamples(sc.problem, s.trajectory, s.duration_s);
-    o.extra["replay"] = ReplayJson(sc.problem, r, s.final_elements);
+    const transfer::ReplayResult r = transfer::ReplaySamples(reached, s.trajectory, s.duration_s);
+    o.extra["replay"] = ReplayJson(reached, r, s.final_elements);
     o.orbit = r.states;
     o.orbit_source = "replay";
   }
   o.extra["propellant_check_kg"] =
-      sc.problem.thrust_n * s.duration_s / (common::kStandardGravity_m_s2 * sc.problem.isp_s);
+      reached.thrust_n * s.duration_s / (common::kStandardGravity_m_s2 * reached.isp_s);
+  // Of the converged extremal only (an interrupted run keeps its time).
+  o.extra["second_order"] = s.converged ? SecondOrderJson(reached, s, sc.shooting) : json(nullptr);
   return o;
 }
 
@@ -148,14 +194,23 @@ json SwitchJson(const transfer::SwitchedTransfer& t, const transfer::SwitchOptio
   return j;
 }
 
-Outcome RunFeedbackMethod(const TransferScenario& sc, bool quiet) {
+Outcome RunFeedbackMethod(const TransferScenario& sc, bool quiet, const TransferHooks& hooks) {
   const transfer::MinTimeProblem& p = sc.problem;
-  transfer::FeedbackResult f = transfer::RunFeedback(p, sc.feedback);
+  transfer::FeedbackOptions feedback_options = sc.feedback;
+  feedback_options.interrupt = hooks.interrupt;
+  transfer::FeedbackResult f = transfer::RunFeedback(p, feedback_options);
   json feedback_phase = {{"saturation_s", f.duration_s}};
   std::optional<transfer::SwitchedTransfer> end;
   if (sc.optimal_end && !f.reached && f.stop_reason == "saturation") {
     end = transfer::SwitchToMinimumTime(
-        p, f, sc.feedback_switch, sc.shooting, [&](const transfer::SwitchAttempt& a) {
+        p, f, sc.feedback_switch, WithInterrupt(sc.shooting, hooks),
+        [&](const transfer::SwitchAttempt& a) {
+          if (hooks.progress) {
+            hooks.progress({{"phase", "switch"},
+                            {"switch_s", a.switch_s},
+                            {"converged", a.converged},
+                            {"end_s", a.end_s}});
+          }
           if (quiet) return;
           std::cerr << "  end from " << common::FormatG(a.switch_s / common::kSecondsPerDay, 7)
                     << " d: "
@@ -273,7 +328,8 @@ std::string TrajectoryCsv(const std::vector<Row>& rows) {
   return s.str();
 }
 
-json Summary(const TransferScenario& sc, const std::string& scenario_path, const Outcome& o) {
+json Summary(const TransferScenario& sc, const std::string& scenario_path, const Outcome& o,
+             bool interrupted) {
   const transfer::TargetElements& t = sc.problem.target;
   json target = {{"p_m", t.value[0]}, {"ex", t.value[1]}, {"ey", t.value[2]},
                  {"hx", t.value[3]},  {"hy", t.value[4]}, {"free", json::array()}};
@@ -285,7 +341,11 @@ json Summary(const TransferScenario& sc, const std::string& scenario_path, const
             {"scenario", scenario_path},
             {"name", sc.name},
             {"method", ToString(sc.method)},
-            {"status", o.ok ? "converged" : "not_converged"},
+            {"force_model", transfer::ToString(sc.problem.force_model.kind)},
+            {"status", o.ok          ? "converged"
+                       : interrupted ? "interrupted"
+                                     : "not_converged"},
+            {"interrupted", interrupted},
             {"duration_s", o.duration_s},
             {"duration_h", o.duration_s / 3600},
             {"duration_d", o.duration_s / common::kSecondsPerDay},
@@ -315,14 +375,15 @@ json Summary(const TransferScenario& sc, const std::string& scenario_path, const
 }  // namespace
 
 TransferRun RunTransferScenario(const TransferScenario& sc, const std::string& scenario_path,
-                                bool quiet) {
+                                bool quiet, const TransferHooks& hooks) {
+  CheckForceModel(sc);  // again: the method may have been overridden
   Outcome o;
   switch (sc.method) {
     case TransferMethod::kMinimumTime:
-      o = RunMinimumTime(sc, quiet);
+      o = RunMinimumTime(sc, quiet, hooks);
       break;
     case TransferMethod::kFeedback:
-      o = RunFeedbackMethod(sc, quiet);
+      o = RunFeedbackMethod(sc, quiet, hooks);
       break;
     case TransferMethod::kTwoImpulse:
       o = RunTwoImpulse(sc);
@@ -330,7 +391,9 @@ TransferRun RunTransferScenario(const TransferScenario& sc, const std::string& s
   }
   TransferRun run;
   run.converged = o.ok;
-  run.summary = Summary(sc, scenario_path, o);
+  // A stop request that came after the run converged changes nothing.
+  run.interrupted = !o.ok && hooks.interrupt != nullptr && hooks.interrupt->load();
+  run.summary = Summary(sc, scenario_path, o, run.interrupted);
   run.trajectory_csv = TrajectoryCsv(o.rows);
   run.trajectory_rows = o.rows.size();
   run.orbit = std::move(o.orbit);

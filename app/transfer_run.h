@@ -16,7 +16,9 @@
 #ifndef THRUSTSCHED_APP_TRANSFER_RUN_H_
 #define THRUSTSCHED_APP_TRANSFER_RUN_H_
 
+#include <atomic>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,18 +30,35 @@
 namespace thrustsched::app {
 
 struct TransferRun {
-  bool converged = false;  // shooting converged / target reached
-  nlohmann::json summary;  // summary.json
+  bool converged = false;    // shooting converged / target reached
+  bool interrupted = false;  // stopped by TransferHooks::interrupt before it converged
+  nlohmann::json summary;    // summary.json
   std::string trajectory_csv;
   std::size_t trajectory_rows = 0;
   std::vector<transfer::ReplayState> orbit;  // orbit.csv
+};
+
+/// What a caller hands to a run besides the scenario: a stop request
+/// (Ctrl-C) and a progress callback, both optional.
+struct TransferHooks {
+  /// Polled by the shooting (every evaluation, every continuation step) and
+  /// by the feedback (every step). Once set, the run stops within one
+  /// evaluation and returns its best result so far: the last converged
+  /// continuation step (summary "convergence.continuation_thrust_reached_n"),
+  /// the feedback up to where it stopped; summary "status" "interrupted".
+  const std::atomic<bool>* interrupt = nullptr;
+  /// Called from the running thread with {"phase": "continuation", "thrust_n",
+  /// "converged", "duration_s"} after every continuation step and
+  /// {"phase": "switch", "switch_s", "converged", "end_s"} after every try of
+  /// the feedback's optimal end.
+  std::function<void(const nlohmann::json& event)> progress;
 };
 
 /// Runs sc.method; progress lines on stderr unless quiet. @throws
 /// ScenarioError for a method the scenario does not allow (two_impulse on
 /// non-circular orbits).
 TransferRun RunTransferScenario(const TransferScenario& sc, const std::string& scenario_path,
-                                bool quiet);
+                                bool quiet, const TransferHooks& hooks = {});
 
 /// orbit.csv: t_s,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,mass_kg.
 std::string OrbitCsv(const std::vector<transfer::ReplayState>& orbit);

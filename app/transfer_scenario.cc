@@ -239,7 +239,7 @@ TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::st
   // A misspelt key is named (with its closest accepted name) before any
   // required field it hides is reported missing.
   for (const char* key : {"mu_m3_s2", "initial", "target", "thrust_n", "isp_s", "mass_kg", "method",
-                          "epoch", "shooting", "feedback"}) {
+                          "epoch", "shooting", "feedback", "force_model"}) {
     t.Has(key);
   }
   t.Finish();
@@ -256,12 +256,28 @@ TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::st
   p.isp_s = t.Number("isp_s", Bound::kPositive);
   p.mass_kg = t.Number("mass_kg", Bound::kPositive);
   s.method = ParseTransferMethod(t.String("method"), t.FieldPath("method"));
+  if (t.Has("force_model")) {
+    const std::string model = t.Choice("force_model", {"two_body", "j2"});
+    p.force_model.kind =
+        model == "j2" ? transfer::ForceModelKind::kJ2 : transfer::ForceModelKind::kTwoBody;
+  }
   if (t.Has("shooting")) ReadShooting(t.Object("shooting"), &s);
   if (t.Has("feedback")) ReadFeedback(t.Object("feedback"), &s);
   t.Finish();
   std::string error;
   if (!p.IsValid(&error)) throw ScenarioError(t.path() + ": " + error);
+  CheckForceModel(s);
   return s;
+}
+
+void CheckForceModel(const TransferScenario& s) {
+  if (s.problem.force_model.kind == transfer::ForceModelKind::kTwoBody) return;
+  if (s.method == TransferMethod::kTwoImpulse) {
+    throw ScenarioError(
+        "scenario.transfer.force_model: two_impulse (the Hohmann closed form) supports "
+        "force_model two_body only, got \"" +
+        transfer::ToString(s.problem.force_model.kind) + "\"");
+  }
 }
 
 TransferScenario LoadTransferScenario(const std::string& path) {

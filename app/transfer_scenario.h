@@ -9,6 +9,7 @@
 //      "target":  {"a_m": 42165e3, "ex": 0, "ey": 0, "hx": 0, "hy": 0, "free": []},
 //      "thrust_n": 0.35, "isp_s": 2000, "mass_kg": 2000,
 //      "method": "feedback",
+//      "force_model": "two_body",          // optional: "two_body" (default) or "j2"
 //      "epoch": "2034-01-01T00:00:00Z"}}   // optional, UTC: dates the hand-over state
 //
 //   app::TransferScenario s = app::LoadTransferScenario("data/scenarios/transfer/x.json");
@@ -70,6 +71,11 @@ inline constexpr double kEarthRadiusM = 6378137.0;
 inline constexpr double kEarthSphereOfInfluenceM = 9.25e8;
 
 TransferScenario ParseTransferScenario(const nlohmann::json& root, const std::string& path);
+/// "force_model": "j2" is for minimum_time and feedback (two_impulse is the
+/// two-body Hohmann closed form); @throws ScenarioError naming the field
+/// otherwise. Called by the parser and, after a method override, by
+/// RunTransferScenario.
+void CheckForceModel(const TransferScenario& s);
 /// @throws ScenarioError on unreadable files and on every error above.
 TransferScenario LoadTransferScenario(const std::string& path);
 

@@ -63,7 +63,7 @@ SwitchedTransfer SwitchToMinimumTime(const MinTimeProblem& p, const FeedbackResu
   if (s.rule == SwitchRule::kSaturation || !out.transfer.end.converged) return out;
   // Backwards from the saturation point, one try per interval_s.
   std::size_t k = feedback.trajectory.size() - 1;
-  for (int n = 1; n <= s.max_attempts; ++n) {
+  for (int n = 1; n <= s.max_attempts && !shooting.Interrupted(); ++n) {
     const double t = feedback.duration_s - n * s.interval_s;
     if (t < 0) break;
     while (k > 0 && feedback.trajectory[k].t_s > t) --k;

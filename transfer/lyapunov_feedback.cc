@@ -7,6 +7,7 @@
 #include "common/constants.h"
 #include "common/error.h"
 #include "common/format.h"
+#include "transfer/force_model.h"
 #include "transfer/internal/integrator.h"
 
 namespace thrustsched::transfer {
@@ -152,7 +153,7 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
   if (!o.IsValid(&error)) throw std::invalid_argument("feedback options: " + error);
   ScaledUnits u;
   u.mu_si = p.mu;
-  const double mu = u.mu(), thrust = u.Thrust(p.thrust_n);
+  const double thrust = u.Thrust(p.thrust_n);
   const double flow =
       thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s);  // kg/h at full thrust
   const double l0 = p.initial.l_rad;
@@ -171,8 +172,7 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
     }
     double eff = 0;
     const Eigen::Vector3d c = control(x, &eff);
-    const GaussTerms g = Gauss(x, mu);
-    const Vector6 dx = g.f0 + thrust / y[6] * g.F * c;
+    const Vector6 dx = GaussRates(x, thrust / y[6] * c, p.force_model, u);
     for (int i = 0; i < 6; ++i) dy[i] = dx(i);
     dy[6] = -flow * c.norm();
   };
@@ -195,6 +195,11 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
     const bool at_target = v <= o.v_stop;
     const bool done = at_target || (o.stop_at_saturation && eff <= o.delta);
     if (done) r.stop_reason = at_target ? "target" : "saturation";
+    if (o.interrupt != nullptr && o.interrupt->load()) {
+      r.reached = false;
+      r.stop_reason = "interrupted";
+      return false;
+    }
     if (s[6] <= 1e-3 * p.mass_kg) {  // out of propellant: stop, not reached
       r.reached = false;
       r.stop_reason = "propellant";
@@ -257,7 +262,7 @@ FeedbackWithEnd FinishWithMinimumTime(const MinTimeProblem& p, const FeedbackRes
     ShootingGuess g = guess;
     g.duration_s *= factor;
     r.end = SolveMinTime(end, g, options);
-    if (r.end.converged) break;
+    if (r.end.converged || r.end.interrupted) break;
   }
   r.total_duration_s = feedback.duration_s + r.end.duration_s;
   r.total_propellant_kg = feedback.propellant_kg + r.end.propellant_kg;

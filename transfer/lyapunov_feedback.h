@@ -30,6 +30,7 @@
 #ifndef THRUSTSCHED_TRANSFER_LYAPUNOV_FEEDBACK_H_
 #define THRUSTSCHED_TRANSFER_LYAPUNOV_FEEDBACK_H_
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ struct FeedbackOptions {
   double on_off_p = 0.5;        // threshold fraction p in [0, 1]
   double integration_tolerance = 1e-10;
   double sample_step_s = 600.0;  // trajectory output
+  /// A stop request (Ctrl-C; may be null), polled at every accepted step:
+  /// the run stops there with stop_reason "interrupted".
+  const std::atomic<bool>* interrupt = nullptr;
   bool IsValid(std::string* error) const;
 };
 
@@ -77,8 +81,9 @@ struct FeedbackSample {
 struct FeedbackResult {
   bool reached = false;
   /// "target" (V <= v_stop), "saturation" (|F^T grad V| <= delta), "max_duration",
-  /// "propellant" (mass exhausted) or "integration: ..." (the step control failed:
-  /// the saturated law is stiff when delta is small against the thrust).
+  /// "propellant" (mass exhausted), "interrupted" (FeedbackOptions::interrupt) or "integration:
+  /// ..." (the step control failed: the saturated law is stiff when delta is small against the
+  /// thrust).
   std::string stop_reason;
   double duration_s = 0.0;
   double propellant_kg = 0.0;

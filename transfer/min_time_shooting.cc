@@ -26,6 +26,8 @@ struct ExtremalFlow {
   double thrust;  // kg Mm / h^2
   double m0;      // kg
   double flow;    // kg / h (T / (g0 Isp))
+  ForceModel force;
+  ScaledUnits units;
 
   double Mass(double t) const { return m0 - flow * t; }
 
@@ -43,10 +45,22 @@ struct ExtremalFlow {
     const double norm = ftp.norm();
     const Eigen::Vector3d u = norm > 0 ? Eigen::Vector3d(ftp / norm) : Eigen::Vector3d::Zero();
     const double acc = thrust / m;
-    const Vector6 dx = g.f0 + acc * g.F * u;
-    for (int j = 0; j < 6; ++j) {
-      dy[j] = dx(j);
-      dy[6 + j] = -(p.dot(d.df0.col(j)) + acc * p.dot(d.dF[j] * u));
+    if (force.kind == ForceModelKind::kTwoBody) {
+      const Vector6 dx = g.f0 + acc * g.F * u;
+      for (int j = 0; j < 6; ++j) {
+        dy[j] = dx(j);
+        dy[6 + j] = -(p.dot(d.df0.col(j)) + acc * p.dot(d.dF[j] * u));
+      }
+    } else {
+      // H gains p . F gamma(x): its x-derivative p . dF_j gamma + (F^T p) . dgamma/dx_j.
+      const Eigen::Vector3d gamma = PerturbationQsw(x, force, units);
+      const Eigen::Matrix<double, 3, 6> dgamma = PerturbationJacobianQsw(x, force, units);
+      const Eigen::Vector3d a = acc * u + gamma;
+      const Vector6 dx = g.f0 + g.F * a;
+      for (int j = 0; j < 6; ++j) {
+        dy[j] = dx(j);
+        dy[6 + j] = -(p.dot(d.df0.col(j)) + p.dot(d.dF[j] * a) + ftp.dot(dgamma.col(j)));
+      }
     }
     dy[12] = thrust * norm / (m * m);
   }
@@ -58,14 +72,17 @@ struct ExtremalFlow {
     const GaussTerms g = Gauss(x, mu);
     const Eigen::Vector3d ftp = g.F.transpose() * p;
     if (u != nullptr) *u = ftp.norm() > 0 ? Eigen::Vector3d(ftp.normalized()) : ftp;
-    return p.dot(g.f0) + thrust / Mass(t) * ftp.norm();
+    const double perturbation =
+        force.kind == ForceModelKind::kTwoBody ? 0.0 : ftp.dot(PerturbationQsw(x, force, units));
+    return p.dot(g.f0) + perturbation + thrust / Mass(t) * ftp.norm();
   }
 };
 
 ExtremalFlow MakeFlow(const MinTimeProblem& p, const ScaledUnits& u) {
   const double thrust = u.Thrust(p.thrust_n);
-  return ExtremalFlow{u.mu(), thrust, p.mass_kg,
-                      thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s)};
+  return ExtremalFlow{u.mu(),        thrust,
+                      p.mass_kg,     thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s),
+                      p.force_model, u};
 }
 
 ScaledUnits UnitsOf(const MinTimeProblem& p) {
@@ -97,6 +114,7 @@ struct Shooting {
   std::array<double, 6> start{};  // at lambda = 0: the residual terms of the guess's end
   double lambda = 1.0;
   int evaluations = 0;
+  const std::atomic<bool>* interrupt = nullptr;
 
   // Final-condition terms (targets or costates, then p_L) without the homotopy.
   std::array<double, 6> Terms(const FlowState& yf) const {
@@ -123,6 +141,10 @@ struct Shooting {
 
 int ShootingCallback(void* data, int n, const double* z, double* f, int /*iflag*/) {
   auto* s = static_cast<Shooting*>(data);
+  if (s->interrupt != nullptr && s->interrupt->load()) {
+    std::fill(f, f + n, 0.0);
+    return -1;  // a stop request: hybrd returns at once
+  }
   try {
     s->Evaluate(z, f);
   } catch (const std::runtime_error&) {
@@ -190,7 +212,7 @@ bool MinTimeProblem::IsValid(std::string* error) const {
   }
   const double et = std::hypot(target.value[1], target.value[2]);
   if (!(et < 1)) return common::Fail(error, "target is not an ellipse: e = " + FormatG(et, 10));
-  return true;
+  return force_model.IsValid(error);
 }
 
 bool ShootingOptions::IsValid(std::string* error) const {
@@ -271,6 +293,9 @@ MinTimeSolution Extremal(const MinTimeProblem& p, double duration_s, const Vecto
     const double pm = states[k][12] - i_f;
     ts.hamiltonian =
         flow.ReducedHamiltonian(states[k], times[k], &ts.direction_qsw) - flow.flow * pm;
+    Vector6 costate_k;
+    for (int i = 0; i < 6; ++i) costate_k(i) = states[k][6 + i];
+    ts.switching_norm = (Gauss(x, flow.mu).F.transpose() * costate_k).norm();
     s.hamiltonian_drift =
         std::max(s.hamiltonian_drift, std::abs(ts.hamiltonian - hf) / std::abs(hf));
     s.trajectory.push_back(ts);
@@ -294,13 +319,15 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   const ScaledUnits u = UnitsOf(p);
   Shooting s{&p, MakeFlow(p, u), u.ToScaled(p.initial), guess.duration_s / u.time_s,
              options.integration_tolerance};
+  s.interrupt = options.interrupt;
   std::array<double, 7> z{};
   z[0] = 1.0;
   const Vector6 p0 = guess.costate.normalized();
   for (int i = 0; i < 6; ++i) z[1 + i] = p0(i);
   std::array<double, 7> start = z;
   HybrdOutcome out = RunHybrd(&s, &z, options);
-  if (!(out.info == 1 && out.residual < 1e-6) && options.target_homotopy_steps > 0) {
+  if (!(out.info == 1 && out.residual < 1e-6) && options.target_homotopy_steps > 0 &&
+      !options.Interrupted()) {
     // Homotopy on the target from the end of the guess's extremal.
     z = start;
     try {
@@ -310,7 +337,7 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
       s.start.fill(0.0);
     }
     double lambda = 0, step = 1.0 / options.target_homotopy_steps;
-    while (lambda < 1 && step > 1e-4) {
+    while (lambda < 1 && step > 1e-4 && !options.Interrupted()) {
       std::array<double, 7> trial = z;
       s.lambda = std::min(1.0, lambda + step);
       const HybrdOutcome o = RunHybrd(&s, &trial, options);
@@ -327,8 +354,9 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   Vector6 costate;
   for (int i = 0; i < 6; ++i) costate(i) = z[1 + i];
   MinTimeSolution sol;
+  const bool interrupted = options.Interrupted();
   const double tf_s = z[0] * guess.duration_s;
-  if (tf_s > 0 && out.info >= 0) {
+  if (tf_s > 0 && out.info >= 0 && !interrupted) {
     try {
       sol = Extremal(p, tf_s, costate, options, 20.0);
     } catch (const std::runtime_error&) {
@@ -338,7 +366,8 @@ MinTimeSolution SolveMinTime(const MinTimeProblem& p, const ShootingGuess& guess
   sol.hybrd_info = out.info;
   sol.evaluations = s.evaluations;
   sol.residual_norm = out.residual;
-  sol.converged = out.info == 1 && out.residual < 1e-6 && sol.hamiltonian > 0;
+  sol.converged = !interrupted && out.info == 1 && out.residual < 1e-6 && sol.hamiltonian > 0;
+  sol.interrupted = interrupted;
   return sol;
 }
 
@@ -361,6 +390,10 @@ ContinuationResult ContinueOnThrust(const MinTimeProblem& p, const MinTimeSoluti
   double log_step = 0.25;
   const double direction = final_thrust_n < p.thrust_n ? -1.0 : 1.0;
   while (c.thrust_n != final_thrust_n && log_step > 1e-4) {
+    if (options.Interrupted()) {
+      c.interrupted = true;
+      break;
+    }
     double next = c.thrust_n * std::exp(direction * log_step);
     if ((next - final_thrust_n) * direction > 0) next = final_thrust_n;
     MinTimeProblem q = p;
@@ -369,6 +402,10 @@ ContinuationResult ContinueOnThrust(const MinTimeProblem& p, const MinTimeSoluti
     g.duration_s = c.solution.duration_s * c.thrust_n / next;
     g.costate = c.solution.costate;
     const MinTimeSolution s = SolveMinTime(q, g, o);
+    if (s.interrupted) {
+      c.interrupted = true;  // not a failed step: keep the last converged solution
+      break;
+    }
     ContinuationStep step{next, s.duration_s, s.converged, s.evaluations};
     c.steps.push_back(step);
     if (progress) progress(step);

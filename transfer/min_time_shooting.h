@@ -10,7 +10,8 @@
 // free final time fixes only its scale); the equations are the five target
 // elements at t_f (or p_j(t_f) = 0 for an element left free), p_L(t_f) = 0
 // (free final longitude) and |p(0)|^2 = 1. The costate equations are the
-// hand-written derivatives of transfer/equinoctial.h; MINPACK's hybrd solves
+// hand-written derivatives of transfer/equinoctial.h (and, with J2, of
+// transfer/force_model.h); MINPACK's hybrd solves
 // the shooting equations with a forward-difference Jacobian; the flow is
 // Runge-Kutta-Fehlberg 7(8) (Boost.Odeint) at a tight tolerance.
 //
@@ -21,7 +22,8 @@
 //   transfer::ContinuationResult c = transfer::ContinueOnThrust(p, s, 0.2);
 //
 // Checks reported with every solution: the shooting residual, the drift of
-// the maximised Hamiltonian H = p.f0 + (T/m)|F^T p| + p_m dm/dt (the problem
+// the maximised Hamiltonian H = p.(f0 + F gamma) + (T/m)|F^T p| + p_m dm/dt
+// (gamma: the force model's perturbation, transfer/force_model.h; the problem
 // is autonomous once the mass costate p_m is carried: H is constant, equal to
 // -p^0 > 0 at the free final time, with p_m(t_f) = 0 for a free final mass),
 // and the propellant T t_f / (g0 Isp).
@@ -29,11 +31,13 @@
 #define THRUSTSCHED_TRANSFER_MIN_TIME_SHOOTING_H_
 
 #include <array>
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "transfer/equinoctial.h"
+#include "transfer/force_model.h"
 
 namespace thrustsched::transfer {
 
@@ -53,6 +57,10 @@ struct MinTimeProblem {
   double thrust_n = 0.0;
   double isp_s = 0.0;
   double mu = kMuEarth;
+  /// Used everywhere: the shooting's state and costate equations (with
+  /// the hand-written J2 derivatives of force_model.h), the feedback
+  /// (lyapunov_feedback.h), the Gauss propagation and the replay.
+  ForceModel force_model;
   bool IsValid(std::string* error) const;
 };
 
@@ -79,6 +87,12 @@ struct ShootingOptions {
   /// Continuation on the target (0 -> 1) from the orbit the guess reaches,
   /// when the direct solve from the guess fails.
   int target_homotopy_steps = 20;
+  /// A stop request (Ctrl-C; may be null), polled before every evaluation of
+  /// the shooting function and every continuation step: once it is set the
+  /// solve returns unconverged with `interrupted`, the continuation its last
+  /// converged solution.
+  const std::atomic<bool>* interrupt = nullptr;
+  bool Interrupted() const { return interrupt != nullptr && interrupt->load(); }
   bool IsValid(std::string* error) const;
 };
 
@@ -88,11 +102,13 @@ struct TrajectorySample {
   double mass_kg = 0.0;
   Eigen::Vector3d direction_qsw = Eigen::Vector3d::Zero();  // unit thrust direction
   double hamiltonian = 0.0;                                 // scaled units
+  double switching_norm = 0.0;  // |F^T p|, scaled units (the thrust direction's definition)
 };
 
 struct MinTimeSolution {
   bool converged = false;
-  int hybrd_info = 0;  // MINPACK's info (1: converged to xtol)
+  bool interrupted = false;  // stopped by ShootingOptions::interrupt
+  int hybrd_info = 0;        // MINPACK's info (1: converged to xtol)
   int evaluations = 0;
   double residual_norm = 0.0;  // shooting function, scaled units
   double duration_s = 0.0;
@@ -127,6 +143,7 @@ struct ContinuationStep {
 struct ContinuationResult {
   MinTimeSolution solution;  // at the final thrust (converged or the last one that did)
   double thrust_n = 0.0;     // the thrust of `solution`
+  bool interrupted = false;  // stopped by options.interrupt before final_thrust_n
   std::vector<ContinuationStep> steps;
 };
 

@@ -11,6 +11,20 @@
 #include "transfer/internal/integrator.h"
 
 namespace thrustsched::transfer {
+namespace {
+
+// The J2 acceleration from the gradient of the zonal potential
+// U = -mu J2 R^2 / (2 r^3) (3 z^2 / r^2 - 1) (e.g. Vallado 2013 ch. 8), in
+// the inertial frame whose z axis is the pole; any consistent units.
+Eigen::Vector3d J2AccelerationCartesian(const Eigen::Vector3d& r, double mu, double j2,
+                                        double radius) {
+  const double rn = r.norm(), r2 = rn * rn;
+  const double k = -1.5 * j2 * mu * radius * radius / (r2 * r2 * rn);
+  const double z2 = 5 * r.z() * r.z() / r2;
+  return k * Eigen::Vector3d(r.x() * (1 - z2), r.y() * (1 - z2), r.z() * (3 - z2));
+}
+
+}  // namespace
 
 ReplayResult Replay(const MinTimeProblem& p, double duration_s, const QswCommand& command,
                     double tolerance) {
@@ -25,6 +39,8 @@ ReplayResult Replay(const MinTimeProblem& p, double duration_s, const QswCommand
   const double mu = p.mu * kTime * kTime / (kLength * kLength * kLength);
   const double thrust = p.thrust_n * kTime * kTime / kLength;  // kg Mm / h^2
   const double flow = p.thrust_n / (common::kStandardGravity_m_s2 * p.isp_s) * kTime;  // kg / h
+  const bool j2 = p.force_model.kind == ForceModelKind::kJ2;
+  const double j2_radius = p.force_model.radius_m / kLength;
   auto si_state = [&](const std::array<double, 7>& y) {
     dynamics::Vector6d rv;
     for (int i = 0; i < 3; ++i) rv(i) = y[i] * kLength, rv(3 + i) = y[3 + i] * kSpeed;
@@ -35,7 +51,8 @@ ReplayResult Replay(const MinTimeProblem& p, double duration_s, const QswCommand
     const double rn = r.norm();
     const dynamics::Vector6d rv = si_state(y);
     const Eigen::Vector3d c = command(t * kTime, rv, y[6]);
-    const Eigen::Vector3d acc = -mu * r / (rn * rn * rn) + thrust / y[6] * (QswBasis(rv) * c);
+    Eigen::Vector3d acc = -mu * r / (rn * rn * rn) + thrust / y[6] * (QswBasis(rv) * c);
+    if (j2) acc += J2AccelerationCartesian(r, mu, p.force_model.j2, j2_radius);
     for (int i = 0; i < 3; ++i) dy[i] = y[3 + i], dy[3 + i] = acc(i);
     dy[6] = -flow * c.norm();
   };

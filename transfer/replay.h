@@ -3,7 +3,10 @@
 // (1.23)-(1.26)) integrated on position, velocity and mass, with the thrust
 // direction given in the local QSW frame, and the final orbit read with the
 // classical-element conversion of dynamics/keplerian.h. Nothing of the Gauss
-// equations (transfer/equinoctial.h) is used, so an error there shows here.
+// equations (transfer/equinoctial.h) is used, so an error there shows here;
+// with the problem's force_model j2 the J2 acceleration is added in its
+// Cartesian form (the gradient of the zonal potential), independently of
+// the QSW form of transfer/force_model.h.
 //
 //   transfer::MinTimeSolution s = transfer::SolveMinTime(p, guess);
 //   transfer::ReplayResult r = transfer::ReplaySamples(p, s.trajectory, s.duration_s);

@@ -5,6 +5,7 @@
     res.trajectory                   # DataFrame of trajectory.csv
     res.orbit                        # DataFrame of orbit.csv (Cartesian states)
     res.summary["final_state"]       # a station-keeping scenario's initial_state
+    transfer(path, progress=print)   # continuation steps; Ctrl-C returns the best so far (res.interrupted)
 """
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import io
 import json
 import os
 from collections.abc import Mapping
-from typing import Any, Dict, Optional, Union
+from typing import Any, Callable, Dict, Optional, Union
 
 from . import _core
 from ._scenario import PathLike, ScenarioError, _check_finite
@@ -43,6 +44,12 @@ class TransferResult:
         return self.summary["status"] == "converged"
 
     @property
+    def interrupted(self) -> bool:
+        """A Ctrl-C stopped the transfer: the result is the best one so far
+        (the last converged continuation step, or the feedback up to there)."""
+        return bool(self.summary.get("interrupted", False))
+
+    @property
     def trajectory(self):
         if self._trajectory is None:
             import pandas as pd
@@ -64,7 +71,8 @@ class TransferResult:
                 f"propellant {s['propellant_kg']:.6g} kg)")
 
 
-def transfer(scenario: Union[PathLike, Mapping], method: Optional[str] = None) -> TransferResult:
+def transfer(scenario: Union[PathLike, Mapping], method: Optional[str] = None,
+             progress: Optional[Callable[[Dict[str, Any]], None]] = None) -> TransferResult:
     """Runs an orbit transfer as ``thrustsched transfer`` does (minimum time by
     shooting, Lyapunov feedback or two impulses) and returns a
     :class:`TransferResult` (no files written).
@@ -74,8 +82,15 @@ def transfer(scenario: Union[PathLike, Mapping], method: Optional[str] = None) -
     ``method`` (``"minimum_time"``, ``"feedback"``, ``"two_impulse"``)
     overrides the scenario's. A bad field raises :class:`ScenarioError` (a
     ``ValueError``) with the CLI's message (field path and value). The GIL
-    is released while the transfer runs (it cannot be interrupted: the
-    shipped 0.2 N case takes about 20 s)."""
+    is released while the transfer runs. The first Ctrl-C stops it and
+    returns the best result so far (``status`` ``"interrupted"``: the last
+    converged thrust of the continuation,
+    ``summary["convergence"]["continuation_thrust_reached_n"]``, or the
+    feedback up to where it stopped); the second raises KeyboardInterrupt.
+    ``progress(dict)``, if given, is called with ``{"phase": "continuation",
+    "thrust_n", "converged", "duration_s"}`` after every continuation step,
+    ``{"phase": "switch", ...}`` after every try of the feedback's optimal
+    end and ``{"phase": "stopping", "message"}`` on the first Ctrl-C."""
     if isinstance(scenario, (str, os.PathLike)):
         source = os.fspath(scenario)
         if os.path.isdir(source):
@@ -90,5 +105,7 @@ def transfer(scenario: Union[PathLike, Mapping], method: Optional[str] = None) -
         raise TypeError(f"transfer: scenario must be a path or a dict, got {type(scenario).__name__}")
     if method is not None and not isinstance(method, str):
         raise TypeError(f"transfer: method must be a string, got {type(method).__name__}")
-    summary, trajectory, orbit = _core.transfer(text, source, method)
+    if progress is not None and not callable(progress):
+        raise TypeError(f"transfer: progress must be callable, got {type(progress).__name__}")
+    summary, trajectory, orbit, _ = _core.transfer(text, source, method, progress)
     return TransferResult(json.loads(summary), trajectory, orbit)

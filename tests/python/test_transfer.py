@@ -53,7 +53,8 @@ def test_equals_the_cli_summary(tmp_path):
     assert cli.returncode == 0, cli.stderr
     want = read_json(tmp_path / "cli" / "summary.json")
     got = ts.transfer(CAILLAU_60N).summary
-    for key in ["duration_s", "propellant_kg", "final_elements", "convergence", "replay", "final_state"]:
+    for key in ["duration_s", "propellant_kg", "final_elements", "convergence", "replay", "final_state",
+                "second_order", "interrupted", "force_model"]:
         assert got[key] == want[key], key
     traj = pd.read_csv(tmp_path / "cli" / "trajectory.csv")
     pd.testing.assert_frame_equal(ts.transfer(CAILLAU_60N).trajectory, traj)
@@ -96,3 +97,29 @@ def test_two_impulse_is_hohmann():
     dv = res.orbit[["vx_m_s", "vy_m_s", "vz_m_s"]].to_numpy()
     assert ((dv[1] - dv[0]) ** 2).sum() ** 0.5 == pytest.approx(res.summary["two_impulse"]["dv0_m_s"], rel=1e-9)
     assert ((dv[-1] - dv[-2]) ** 2).sum() ** 0.5 == pytest.approx(res.summary["two_impulse"]["dvf_m_s"], rel=1e-6)
+
+
+def test_j2_feedback_minimum_time_and_two_impulse_refusing_j2():
+    # The feedback at 10 N to V <= 1e-5 from Caillau's GTO, with and without
+    # J2: both reach GEO (the final a within 0.16 %); the J2 run's longitude
+    # differs (the node and perigee drift). Minimum time at 60 N with J2:
+    # 14.800065 h (two-body 14.800364 h), its replay (with J2) at GEO.
+    d = read_json(CAILLAU_60N)
+    d["transfer"].update(thrust_n=10.0, method="feedback",
+                         feedback={"optimal_end": False, "stop_at_saturation": False, "v_stop": 1e-5})
+    two_body = ts.transfer(d).summary
+    d["transfer"]["force_model"] = "j2"
+    j2 = ts.transfer(d).summary
+    assert two_body["force_model"] == "two_body" and j2["force_model"] == "j2"
+    for s in (two_body, j2):
+        assert s["status"] == "converged" and s["feedback"]["stop_reason"] == "target"
+        assert s["final_elements"]["a_m"] == pytest.approx(42165e3, rel=0.0016)
+    assert abs(j2["final_elements"]["l_rad"] - two_body["final_elements"]["l_rad"]) > 1e-3
+    mt = read_json(CAILLAU_60N)
+    mt["transfer"]["force_model"] = "j2"
+    s = ts.transfer(mt).summary
+    assert s["status"] == "converged" and s["duration_h"] == pytest.approx(14.800065, abs=1e-5)
+    assert abs(s["replay"]["a_m"] - 42165e3) < 50 and s["replay"]["e"] < 2e-6
+    assert s["second_order"]["conjugate_point_test"] == "no_conjugate_point"
+    with pytest.raises(ts.ScenarioError, match=r"scenario\.transfer\.force_model: two_impulse"):
+        ts.transfer(d, method="two_impulse")

@@ -1,5 +1,6 @@
 #include "transfer/lyapunov_feedback.h"
 
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -97,6 +98,26 @@ TEST(LyapunovFeedbackTest, FeedbackWithOptimalEndAndOnOffVariant) {
   double coasting = 0;
   for (const FeedbackSample& s : h.feedback.trajectory) coasting += s.throttle == 0 ? 1 : 0;
   EXPECT_GT(coasting, 0);
+}
+
+// A stop request (Ctrl-C) halts the feedback at the next accepted step with
+// what it has propagated so far.
+TEST(LyapunovFeedbackTest, InterruptStopsThePropagationWhereItIs) {
+  const MinTimeProblem p = CaillauGtoProblem(10.0);
+  std::atomic<bool> stop{true};
+  FeedbackOptions o;
+  o.interrupt = &stop;
+  const FeedbackResult r = RunFeedback(p, o);
+  EXPECT_EQ(r.stop_reason, "interrupted");
+  EXPECT_FALSE(r.reached);
+  EXPECT_EQ(r.duration_s, 0.0);
+  EXPECT_EQ(r.final_mass_kg, p.mass_kg);
+  ASSERT_FALSE(r.trajectory.empty());
+  ShootingOptions shooting;
+  shooting.interrupt = &stop;
+  const FeedbackWithEnd e = FinishWithMinimumTime(p, r, shooting);
+  EXPECT_TRUE(e.end.interrupted);
+  EXPECT_EQ(e.end.evaluations, 0);
 }
 
 TEST(LyapunovFeedbackTest, BadOptionsAreRefusedNamingTheField) {

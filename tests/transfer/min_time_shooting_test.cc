@@ -1,8 +1,10 @@
 #include "transfer/min_time_shooting.h"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -97,6 +99,37 @@ TEST(MinTimeShootingTest, ContinuationOnTheThrustKeepsThrustTimesTimeNearlyConst
   EXPECT_LT(c.solution.hamiltonian_drift, 1e-9);
   EXPECT_LT(c.solution.residual_norm, 1e-8);
   EXPECT_LT(Eccentricity(c.solution.final_elements), 1e-8);
+}
+
+// A stop request (Ctrl-C) raised after the first continuation step: the
+// continuation returns at once with that step's converged solution (its
+// thrust, its t_f), marked interrupted; a shooting asked to stop before it
+// starts returns unconverged and interrupted without evaluating anything.
+TEST(MinTimeShootingTest, InterruptKeepsTheLastConvergedContinuationStep) {
+  const MinTimeProblem p = CaillauGtoProblem(60.0);
+  const MinTimeSolution s = SolveMinTime(p, InitialGuess(p));
+  ASSERT_TRUE(s.converged);
+  std::atomic<bool> stop{false};
+  ShootingOptions o;
+  o.interrupt = &stop;
+  std::vector<ContinuationStep> seen;
+  const ContinuationResult c = ContinueOnThrust(p, s, 0.2, o, [&](const ContinuationStep& step) {
+    seen.push_back(step);
+    if (step.converged) stop.store(true);
+  });
+  EXPECT_TRUE(c.interrupted);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(c.steps.size(), seen.size());
+  EXPECT_TRUE(seen.back().converged);
+  EXPECT_EQ(c.thrust_n, seen.back().thrust_n);
+  EXPECT_LT(c.thrust_n, 60.0);
+  EXPECT_GT(c.thrust_n, 0.2);
+  EXPECT_TRUE(c.solution.converged);
+  EXPECT_EQ(c.solution.duration_s, seen.back().duration_s);
+  const MinTimeSolution none = SolveMinTime(p, InitialGuess(p), o);
+  EXPECT_TRUE(none.interrupted);
+  EXPECT_FALSE(none.converged);
+  EXPECT_EQ(none.evaluations, 0);
 }
 
 // A guess with t_f 30 % short: the direct solve fails, the homotopy on the

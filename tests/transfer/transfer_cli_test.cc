@@ -39,6 +39,12 @@ TEST(TransferCli, Caillau60NewtonScenarioWritesTheSummaryAndTrajectory) {
   EXPECT_LT(s["convergence"]["hamiltonian_drift"].get<double>(), 1e-9);
   EXPECT_LT(std::abs(s["replay"]["a_difference_m"].get<double>()), 200.0);
   EXPECT_NEAR(s["revolutions"].get<double>(), 1.05, 0.05);
+  EXPECT_EQ(s["interrupted"], false);
+  EXPECT_EQ(s["force_model"], "two_body");
+  // The second-order necessary conditions (transfer/second_order.h).
+  EXPECT_EQ(s["second_order"]["conjugate_point_test"], "no_conjugate_point");
+  EXPECT_EQ(s["second_order"]["legendre_holds"], true);
+  EXPECT_GT(s["second_order"]["min_abs_determinant_second_half"].get<double>(), 0.05);
   const CsvRows rows = ReadCsv(out + "/trajectory.csv");
   EXPECT_EQ(rows.header, "t_s,p_m,ex,ey,hx,hy,l_rad,a_m,e,i_deg,mass_kg,u_q,u_s,u_w");
   ASSERT_GT(rows.rows.size(), 100u);

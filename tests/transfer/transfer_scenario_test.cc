@@ -174,5 +174,38 @@ TEST(TransferScenario, BadOrbitFormsNameTheFieldAndTheValue) {
   EXPECT_NE(e.find("below the Earth"), std::string::npos) << e;
 }
 
+// "force_model": "j2" is read for the feedback and minimum time; two_impulse
+// (the Hohmann closed form) refuses it naming the field, also after a
+// method override, and an unknown model is named with its value.
+TEST(TransferScenario, ForceModelJ2IsReadAndRefusedByTwoImpulse) {
+  nlohmann::json j = Scenario(EciState("EME2000"));
+  EXPECT_EQ(ParseTransferScenario(j, "x.json").problem.force_model.kind,
+            transfer::ForceModelKind::kTwoBody);
+  j["transfer"]["force_model"] = "j2";
+  const TransferScenario sc = ParseTransferScenario(j, "x.json");
+  EXPECT_EQ(sc.problem.force_model.kind, transfer::ForceModelKind::kJ2);
+  EXPECT_EQ(sc.problem.force_model.j2, transfer::kEarthJ2);
+  j["transfer"]["method"] = "minimum_time";
+  EXPECT_EQ(ParseTransferScenario(j, "x.json").problem.force_model.kind,
+            transfer::ForceModelKind::kJ2);
+
+  j["transfer"]["method"] = "two_impulse";
+  std::string e = Error(j);
+  EXPECT_NE(e.find("scenario.transfer.force_model: two_impulse"), std::string::npos) << e;
+  EXPECT_NE(e.find("two_body only, got \"j2\""), std::string::npos) << e;
+
+  j["transfer"]["method"] = "feedback";
+  j["transfer"]["force_model"] = "j4";
+  e = Error(j);
+  EXPECT_NE(e.find("scenario.transfer.force_model"), std::string::npos) << e;
+  EXPECT_NE(e.find("j4"), std::string::npos) << e;
+
+  // The method overridden after parsing (--method, ts.transfer(method=...)).
+  j["transfer"]["force_model"] = "j2";
+  TransferScenario over = ParseTransferScenario(j, "x.json");
+  over.method = TransferMethod::kTwoImpulse;
+  EXPECT_THROW(CheckForceModel(over), ScenarioError);
+}
+
 }  // namespace
 }  // namespace thrustsched::app
