@@ -1,12 +1,11 @@
 #include "milp/mps_reader.h"
 
-#include <cctype>
 #include <cmath>
 #include <fstream>
-#include <istream>
-#include <set>
 #include <stdexcept>
 #include <string>
+
+#include "milp/internal/mps_structure.h"
 
 #include "CoinMessageHandler.hpp"
 #include "CoinMpsIO.hpp"
@@ -23,42 +22,13 @@ class SilentHandler : public CoinMessageHandler {
   CoinMessageHandler* clone() const override { return new SilentHandler(*this); }
 };
 
-// The section headers of an MPS file (a line starting in column 1).
-bool IsSectionHeader(const std::string& word) {
-  for (const char* s :
-       {"NAME", "ROWS", "COLUMNS", "RHS", "RANGES", "BOUNDS", "SOS", "OBJSENSE", "OBJSENS",
-        "QUADOBJ", "QSECTION", "QMATRIX", "QCMATRIX", "CSECTION", "ENDATA"}) {
-    if (word == s) return true;
-  }
-  return false;
-}
-
-// Rejects a section that appears twice: CoinMpsIO (CoinUtils 2.11) sizes its
-// arrays from counts that a second ROWS or COLUMNS section corrupts, and
-// then asks malloc for ~2^64 bytes. @throws std::runtime_error naming the
-// file, the line and the keyword.
-void CheckSectionsOnce(const std::string& path, std::istream& in) {
-  std::set<std::string> seen;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (line.empty() || std::isspace(static_cast<unsigned char>(line[0])) || line[0] == '*') {
-      continue;
-    }
-    const std::string word = line.substr(0, line.find_first_of(" \t\r"));
-    if (IsSectionHeader(word) && !seen.insert(word).second) {
-      throw std::runtime_error("ReadMpsFile: '" + path + "' line " + std::to_string(number) +
-                               ": section " + word + " appears a second time");
-    }
-  }
-}
-
 }  // namespace
 
 LpData ReadMpsFile(const std::string& path) {
   {
     std::ifstream probe(path);
     if (!probe) throw std::runtime_error("ReadMpsFile: cannot open '" + path + "'");
-    CheckSectionsOnce(path, probe);
+    internal::CheckMpsStructure(path, probe);
   }
   SilentHandler silent;
   CoinMpsIO mps;

@@ -1,0 +1,81 @@
+#include "milp/internal/mps_structure.h"
+
+#include <cctype>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+namespace thrustsched::milp::internal {
+namespace {
+
+// Section headers and their rank: a section may not follow one of a higher
+// rank (0: anywhere before ROWS; the quadratic and SOS sections after COLUMNS).
+struct Section {
+  const char* name;
+  int rank;
+};
+constexpr Section kSections[] = {{"NAME", 0},     {"OBJSENSE", 0}, {"OBJSENS", 0},  {"ROWS", 1},
+                                 {"COLUMNS", 2},  {"RHS", 3},      {"RANGES", 4},   {"BOUNDS", 5},
+                                 {"SOS", 6},      {"QUADOBJ", 6},  {"QSECTION", 6}, {"QMATRIX", 6},
+                                 {"QCMATRIX", 6}, {"CSECTION", 6}, {"ENDATA", 7}};
+
+const Section* FindSection(const std::string& word) {
+  for (const Section& s : kSections) {
+    if (word == s.name) return &s;
+  }
+  return nullptr;
+}
+
+[[noreturn]] void Fail(const std::string& path, int line, const std::string& what,
+                       const std::string& why) {
+  throw std::runtime_error("ReadMpsFile: '" + path + "' line " + std::to_string(line) + ": " +
+                           what + ": " + why);
+}
+
+std::string Shown(const std::string& line) {
+  std::string s;
+  for (char c : line.substr(0, 40)) s += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  return "\"" + s + (line.size() > 40 ? "...\"" : "\"");
+}
+
+}  // namespace
+
+void CheckMpsStructure(const std::string& path, std::istream& in) {
+  std::set<std::string> seen;
+  int rank = 0;
+  bool ended = false;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    for (char c : line) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u != '\t' && (u < 32 || u > 126)) {
+        Fail(path, number, Shown(line), "byte " + std::to_string(u) + " is not printable ASCII");
+      }
+    }
+    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '*') continue;
+    if (ended) Fail(path, number, Shown(line), "text after ENDATA");
+    if (line[0] == ' ' || line[0] == '\t') {
+      if (seen.empty()) {
+        Fail(path, number, Shown(line), "data line before any section");
+      }
+      continue;
+    }
+    const std::string word = line.substr(0, line.find_first_of(" \t"));
+    const Section* s = FindSection(word);
+    if (s == nullptr) {
+      Fail(path, number, word, "not a section header (data lines start with a blank)");
+    }
+    if (!seen.insert(word).second) Fail(path, number, word, "section appears a second time");
+    if (s->rank < rank) Fail(path, number, word, "section out of order");
+    if (s->rank >= 3 && seen.count("COLUMNS") == 0) {
+      Fail(path, number, word, "section before ROWS and COLUMNS");
+    }
+    if (s->rank == 2 && seen.count("ROWS") == 0) Fail(path, number, word, "COLUMNS before ROWS");
+    rank = s->rank;
+    ended = s->rank == 7;
+  }
+  if (!ended) Fail(path, 0, "ENDATA", "missing (the file ends without it)");
+}
+
+}  // namespace thrustsched::milp::internal
