@@ -131,15 +131,20 @@ void ParseCheckpoint(const std::string& text, const std::string& path, const Sim
                      int num_thrusters, planning::LongHorizonState* st,
                      std::vector<CycleRecord>* cycles) {
   const nlohmann::json j = ParseJsonText(text, path);
-  if (!j.is_object() || j.value("format", "") != kCheckpointFormat) {
+  // j.value(key, "") throws a JSON type_error (exit 1) on a non-string.
+  auto text_of = [&j](const char* key, const char* absent) {
+    return j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>()
+                                                    : std::string(absent);
+  };
+  if (!j.is_object() || text_of("format", "") != kCheckpointFormat) {
     throw ScenarioError(path + ": not a thrustsched year checkpoint (format " +
                         std::string(kCheckpointFormat) + ")");
   }
-  if (j.value("fingerprint", "") != setup.fingerprint) {
+  if (text_of("fingerprint", "") != setup.fingerprint) {
     throw ScenarioError(path +
                         ": the checkpoint was written for another scenario or other "
                         "settings (fingerprint " +
-                        j.value("fingerprint", "?") + ", this scenario " + setup.fingerprint +
+                        text_of("fingerprint", "?") + ", this scenario " + setup.fingerprint +
                         "); run without --resume to start again");
   }
   st->next_cycle = static_cast<int>(GetInteger(j, "next_cycle", path, 0, kMaxCheckpointCycles));

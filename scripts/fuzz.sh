@@ -63,12 +63,14 @@ for h in "${harnesses[@]}"; do
   log=$out/$h.log
   echo "== $h: $seconds s (log $log)"
   # One process; a finding ends the run (its input is in $crashes).
+  started=$SECONDS
   set +e
   nice -n 10 "$build/tests/fuzz/fuzz_$h" "$corpus" -max_total_time="$seconds" -timeout=1 \
     -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$crashes/" > "$log" 2>&1
   status=$?
   set -e
+  ran=$((SECONDS - started))
   # libFuzzer's last status line: "#N  DONE|pulse|...  cov: C ft: F corp: ..."
   last=$(grep -E '^#[0-9]+' "$log" | tail -1)
   execs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || true)
@@ -81,13 +83,12 @@ for h in "${harnesses[@]}"; do
     echo "   FINDING (exit $status): $(grep -E 'ERROR|SUMMARY|terminate|what\(\)' "$log" | head -3)"
     echo "   input: $(grep -oE "$crashes/[^ ]+" "$log" | tail -1)"
   fi
-  echo "$h,$seconds,${execs:-0},$cov,$ft,$found,$(date -u +%FT%TZ)" >> "$totals"
+  echo "$h,$ran,${execs:-0},$cov,$ft,$found,$(date -u +%FT%TZ)" >> "$totals"
 done
 
 echo "totals per harness (all sessions, $totals):"
+printf "%-16s %9s %12s %7s %7s %8s\n" harness seconds executions cov ft crashes
 awk -F, 'NR > 1 { s[$1] += $2; e[$1] += $3; c[$1] += $6; if ($4 > cov[$1]) cov[$1] = $4;
                   if ($5 > ft[$1]) ft[$1] = $5 }
-         END { printf "%-16s %9s %12s %7s %7s %8s\n", "harness", "seconds", "executions", "cov",
-                      "ft", "crashes";
-               for (h in s) printf "%-16s %9d %12d %7d %7d %8d\n", h, s[h], e[h], cov[h], ft[h],
+         END { for (h in s) printf "%-16s %9d %12d %7d %7d %8d\n", h, s[h], e[h], cov[h], ft[h],
                                    c[h] }' "$totals" | sort
