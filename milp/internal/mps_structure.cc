@@ -45,7 +45,9 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
   int rank = 0;
   bool ended = false;
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     for (char c : line) {
       const auto u = static_cast<unsigned char>(c);
@@ -66,6 +68,9 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
     if (s == nullptr) {
       Fail(path, number, word, "not a section header (data lines start with a blank)");
     }
+    if (seen.empty() && word != "NAME") {
+      Fail(path, number, word, "the first section must be NAME");
+    }
     if (!seen.insert(word).second) Fail(path, number, word, "section appears a second time");
     if (s->rank < rank) Fail(path, number, word, "section out of order");
     if (s->rank >= 3 && seen.count("COLUMNS") == 0) {
@@ -75,7 +80,7 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
     rank = s->rank;
     ended = s->rank == 7;
   }
-  if (!ended) Fail(path, 0, "ENDATA", "missing (the file ends without it)");
+  if (!ended) Fail(path, number, "ENDATA", "missing (the file ends without it)");
 }
 
 }  // namespace thrustsched::milp::internal

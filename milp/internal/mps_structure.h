@@ -9,7 +9,8 @@
 //
 // Accepted: comment lines ('*' in column 1) and blank lines anywhere; section
 // headers in column 1 (NAME, OBJSENSE/OBJSENS, ROWS, COLUMNS, RHS, RANGES,
-// BOUNDS, SOS, the quadratic sections, ENDATA), each at most once, ROWS before
+// BOUNDS, SOS, the quadratic sections, ENDATA), each at most once, NAME first
+// (CoinMpsIO asked malloc for ~2^64 bytes without it), ROWS before
 // COLUMNS before RHS, RANGES and BOUNDS, ENDATA last; data lines indented;
 // tabs and printable ASCII only.
 #ifndef THRUSTSCHED_MILP_INTERNAL_MPS_STRUCTURE_H_
