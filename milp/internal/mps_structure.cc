@@ -1,9 +1,12 @@
 #include "milp/internal/mps_structure.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 #include <stdexcept>
 #include <vector>
+
+#include "CoinMpsIO.hpp"  // COIN_MAX_FIELD_LENGTH, MAX_CARD_LENGTH: its fixed buffers
 
 namespace thrustsched::milp::internal {
 namespace {
@@ -49,6 +52,20 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // CoinMpsIO strcpy()s lines and fields into fixed buffers (a 170-character
+    // problem name overflowed one).
+    if (line.size() >= static_cast<size_t>(MAX_CARD_LENGTH)) {
+      Fail(path, number, Shown(line),
+           "line longer than " + std::to_string(MAX_CARD_LENGTH - 1) + " characters");
+    }
+    for (size_t a = line.find_first_not_of(" \t"); a != std::string::npos;) {
+      const size_t b = std::min(line.find_first_of(" \t", a), line.size());
+      if (b - a >= static_cast<size_t>(COIN_MAX_FIELD_LENGTH)) {
+        Fail(path, number, Shown(line.substr(a)),
+             "field longer than " + std::to_string(COIN_MAX_FIELD_LENGTH - 1) + " characters");
+      }
+      a = line.find_first_not_of(" \t", b);
+    }
     for (char c : line) {
       const auto u = static_cast<unsigned char>(c);
       if (u != '\t' && (u < 32 || u > 126)) {

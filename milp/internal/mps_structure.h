@@ -12,7 +12,8 @@
 // BOUNDS, SOS, the quadratic sections, ENDATA), each at most once, NAME first
 // (CoinMpsIO asked malloc for ~2^64 bytes without it), ROWS before
 // COLUMNS before RHS, RANGES and BOUNDS, ENDATA last; data lines indented;
-// tabs and printable ASCII only.
+// tabs and printable ASCII only; fields and lines that fit CoinMpsIO's fixed
+// buffers (159 and 879 characters: a longer problem name overflowed one).
 #ifndef THRUSTSCHED_MILP_INTERNAL_MPS_STRUCTURE_H_
 #define THRUSTSCHED_MILP_INTERNAL_MPS_STRUCTURE_H_
 

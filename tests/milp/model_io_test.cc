@@ -527,6 +527,8 @@ TEST(ModelIoErrorsTest, BrokenSectionStructureIsRejectedByLineAndKeyword) {
       {"NAME a\nROWS\n N OBJ\nCOLUMNS\n x OBJ 1\n", "line 5: ENDATA: missing"},
       {"* no NAME\nROWS\n N OBJ\nCOLUMNS\n x OBJ 1\nENDATA\n",
        "line 2: ROWS: the first section must be NAME"},
+      {"NAME " + std::string(170, 'n') + "\nROWS\n N OBJ\nCOLUMNS\nENDATA\n",
+       "line 1: \"nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn...\": field longer than 159 characters"},
   };
   for (const auto& [text, message] : cases) {
     std::ofstream(path, std::ios::binary) << text;
