@@ -76,10 +76,10 @@ struct CsvTable {
   std::vector<Row> rows;
 };
 
-CsvTable ReadCsv(const std::string& path, const std::vector<std::string>& required,
+// `path` names the text in messages.
+CsvTable ReadCsv(std::istream& in, const std::string& path,
+                 const std::vector<std::string>& required,
                  const std::vector<std::string>& optional) {
-  std::ifstream in(path);
-  if (!in) throw ScenarioError(path + ": cannot open the file");
   CsvTable t;
   std::string line;
   int number = 0;
@@ -602,9 +602,32 @@ void WriteImpulsesCsv(const std::string& path, const Scenario& s,
   WriteTextFile(path, ImpulsesCsvText(s, impulses));
 }
 
+namespace {
+
+std::string ReadCsvFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScenarioError(path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ScenarioError(path + ": read error");
+  return text.str();
+}
+
+}  // namespace
+
 std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const Scenario& s) {
+  return ParseScheduleCsv(ReadCsvFile(path), path, s);
+}
+
+std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path, const Scenario& s) {
+  return ParseImpulsesCsv(ReadCsvFile(path), path, s);
+}
+
+std::vector<transcription::Burn> ParseScheduleCsv(std::string_view text, const std::string& path,
+                                                  const Scenario& s) {
+  std::istringstream in{std::string(text)};
   const CsvTable t =
-      ReadCsv(path, {"thruster", "start_s", "end_s"},
+      ReadCsv(in, path, {"thruster", "start_s", "end_s"},
               {"duration_s", "start_utc", "end_utc", "dir_r", "dir_t", "dir_n", "delta_v_m_s"});
   std::vector<transcription::Burn> burns;
   for (const CsvTable::Row& row : t.rows) {
@@ -632,8 +655,10 @@ std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const 
   return burns;
 }
 
-std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path, const Scenario& s) {
-  const CsvTable t = ReadCsv(path, {"thruster", "node", "delta_v_m_s"}, {"time_s"});
+std::vector<transcription::Impulse> ParseImpulsesCsv(std::string_view text, const std::string& path,
+                                                     const Scenario& s) {
+  std::istringstream in{std::string(text)};
+  const CsvTable t = ReadCsv(in, path, {"thruster", "node", "delta_v_m_s"}, {"time_s"});
   std::vector<transcription::Impulse> out;
   const int nn = s.problem.num_intervals();
   for (const CsvTable::Row& row : t.rows) {

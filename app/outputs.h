@@ -13,6 +13,7 @@
 #define THRUSTSCHED_APP_OUTPUTS_H_
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -140,6 +141,13 @@ std::vector<transcription::Burn> ReadScheduleCsv(const std::string& path, const 
 /// empty, must equal the node's time. @throws ScenarioError as ReadScheduleCsv.
 std::vector<transcription::Impulse> ReadImpulsesCsv(const std::string& path,
                                                     const Scenario& scenario);
+/// ReadScheduleCsv and ReadImpulsesCsv of text already read; `source`
+/// names it in messages.
+std::vector<transcription::Burn> ParseScheduleCsv(std::string_view text, const std::string& source,
+                                                  const Scenario& scenario);
+std::vector<transcription::Impulse> ParseImpulsesCsv(std::string_view text,
+                                                     const std::string& source,
+                                                     const Scenario& scenario);
 
 /// Columns of trajectory.csv for the scenario (see the README).
 std::vector<std::string> TrajectoryColumns(const Scenario& scenario, bool with_nonlinear);

@@ -48,6 +48,16 @@ double GetNumber(const nlohmann::json& j, const char* key, const std::string& pa
   return v.get<double>();
 }
 
+double GetInteger(const nlohmann::json& j, const char* key, const std::string& path, double min,
+                  double max) {
+  const double v = GetNumber(j, key, path);
+  if (!(v >= min && v <= max && v == std::floor(v))) {  // also rejects null (NaN)
+    throw ScenarioError(path + "." + key + ": expected an integer in [" + FormatNumber(min) + ", " +
+                        FormatNumber(max) + "], got " + DescribeJson(j.at(key)));
+  }
+  return v;
+}
+
 std::vector<double> GetNumbers(const nlohmann::json& j, const char* key, const std::string& path,
                                double null_value) {
   if (!j.contains(key) || !j.at(key).is_array()) {
@@ -114,19 +124,30 @@ void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int n
   if (!in) throw ScenarioError(path + ": cannot open the checkpoint");
   std::ostringstream ss;
   ss << in.rdbuf();
-  const nlohmann::json j = ParseJsonText(ss.str(), path);
-  if (!j.is_object() || j.value("format", "") != kCheckpointFormat) {
+  ParseCheckpoint(ss.str(), path, setup, num_thrusters, st, cycles);
+}
+
+void ParseCheckpoint(const std::string& text, const std::string& path, const SimulationSetup& setup,
+                     int num_thrusters, planning::LongHorizonState* st,
+                     std::vector<CycleRecord>* cycles) {
+  const nlohmann::json j = ParseJsonText(text, path);
+  // j.value(key, "") throws a JSON type_error (exit 1) on a non-string.
+  auto text_of = [&j](const char* key, const char* absent) {
+    return j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>()
+                                                    : std::string(absent);
+  };
+  if (!j.is_object() || text_of("format", "") != kCheckpointFormat) {
     throw ScenarioError(path + ": not a thrustsched year checkpoint (format " +
                         std::string(kCheckpointFormat) + ")");
   }
-  if (j.value("fingerprint", "") != setup.fingerprint) {
+  if (text_of("fingerprint", "") != setup.fingerprint) {
     throw ScenarioError(path +
                         ": the checkpoint was written for another scenario or other "
                         "settings (fingerprint " +
-                        j.value("fingerprint", "?") + ", this scenario " + setup.fingerprint +
+                        text_of("fingerprint", "?") + ", this scenario " + setup.fingerprint +
                         "); run without --resume to start again");
   }
-  st->next_cycle = static_cast<int>(GetNumber(j, "next_cycle", path));
+  st->next_cycle = static_cast<int>(GetInteger(j, "next_cycle", path, 0, kMaxCheckpointCycles));
   st->time_s = GetNumber(j, "time_s", path);
   st->eci = ToVector6(GetNumbers(j, "eci", path), path + ".eci");
   st->last_burn_end_s = GetNumbers(j, "last_burn_end_s", path, -kInf);
@@ -139,8 +160,14 @@ void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int n
   }
   cycles->clear();
   for (size_t k = 0; k < j.at("cycles").size(); ++k) {
-    cycles->push_back(
-        CycleRecordFromJson(j.at("cycles")[k], path + ".cycles[" + std::to_string(k) + "]"));
+    const std::string at = path + ".cycles[" + std::to_string(k) + "]";
+    cycles->push_back(CycleRecordFromJson(j.at("cycles")[k], at));
+    for (const transcription::Burn& b : cycles->back().burns) {
+      if (b.thruster < 0 || b.thruster >= num_thrusters) {
+        throw ScenarioError(at + ".burns: thruster " + std::to_string(b.thruster) +
+                            " is not one of the scenario's " + std::to_string(num_thrusters));
+      }
+    }
   }
   if (static_cast<int>(cycles->size()) != st->next_cycle) {
     throw ScenarioError(path + ": " + std::to_string(cycles->size()) +

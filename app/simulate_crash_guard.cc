@@ -23,13 +23,16 @@ std::optional<InProgress> ReadInProgress(const std::string& path, const std::str
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object() || j.value("fingerprint", "") != fingerprint || !j.contains("cycle") ||
+  // Types checked first: j.value() throws a JSON type_error on a value of another type.
+  if (!j.is_object() || !j.contains("fingerprint") || !j.at("fingerprint").is_string() ||
+      j.at("fingerprint").get<std::string>() != fingerprint || !j.contains("cycle") ||
       !j.at("cycle").is_number_integer()) {
     return std::nullopt;  // not ours or unreadable: ignore, it is rewritten below
   }
   InProgress p;
   p.cycle = j.at("cycle").get<int>();
-  p.safe = j.value("solver_preprocessing_off", false);
+  const auto safe = j.find("solver_preprocessing_off");
+  p.safe = safe != j.end() && safe->is_boolean() && safe->get<bool>();
   return p;
 }
 

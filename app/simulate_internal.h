@@ -88,6 +88,13 @@ class InProgressGuard {
 /// @throws ScenarioError naming the file on an unknown status name.
 milp::SolveStatus ParseStatus(const std::string& name, const std::string& path);
 double GetNumber(const nlohmann::json& j, const char* key, const std::string& path);
+/// An integer-valued number in [min, max] (not null), so that the caller's
+/// cast to an integer type is defined. @throws ScenarioError naming the key.
+double GetInteger(const nlohmann::json& j, const char* key, const std::string& path, double min,
+                  double max);
+/// More cycles than a checkpoint can hold (a century of weekly cycles):
+/// bounds next_cycle and the cycle indices read back.
+inline constexpr double kMaxCheckpointCycles = 100 * 53;
 std::vector<double> GetNumbers(const nlohmann::json& j, const char* key, const std::string& path,
                                double null_value = kNaN);
 nlohmann::json VectorJson(const Eigen::VectorXd& v);
@@ -98,6 +105,10 @@ nlohmann::json CheckpointJson(const SimulationSetup& setup, const planning::Long
 /// @throws ScenarioError when the checkpoint is of another scenario or malformed.
 void ReadCheckpoint(const std::string& path, const SimulationSetup& setup, int num_thrusters,
                     planning::LongHorizonState* st, std::vector<planning::CycleRecord>* cycles);
+/// ReadCheckpoint of text already read (`path` names it in messages).
+void ParseCheckpoint(const std::string& text, const std::string& path, const SimulationSetup& setup,
+                     int num_thrusters, planning::LongHorizonState* st,
+                     std::vector<planning::CycleRecord>* cycles);
 
 // ---- The long_horizon section (simulate_setup.cc).
 /// Fills setup->options and setup->failures from setup->scenario's JSON.

@@ -95,7 +95,7 @@ CycleRecord CycleRecordFromJson(const nlohmann::json& j, const std::string& path
     return j.at(key).get<bool>();
   };
   CycleRecord r;
-  r.index = static_cast<int>(GetNumber(j, "index", path));
+  r.index = static_cast<int>(GetInteger(j, "index", path, 0, kMaxCheckpointCycles));
   r.start_s = GetNumber(j, "start_s", path);
   r.applied_end_s = GetNumber(j, "applied_end_s", path);
   r.prediction_end_s = GetNumber(j, "prediction_end_s", path);
@@ -107,7 +107,9 @@ CycleRecord CycleRecordFromJson(const nlohmann::json& j, const std::string& path
   for (size_t k = 0; k < j.at("attempts").size(); ++k) {
     const nlohmann::json& a = j.at("attempts")[k];
     const std::string ap = path + ".attempts[" + std::to_string(k) + "]";
-    if (!a.is_object() || !a.contains("level") || !a.contains("status") || !a.contains("detail")) {
+    if (!a.is_object() || !a.contains("level") || !a.at("level").is_string() ||
+        !a.contains("status") || !a.at("status").is_string() || !a.contains("detail") ||
+        !a.at("detail").is_string()) {
       throw ScenarioError(ap + ": expected {level, status, solve_seconds, detail}");
     }
     planning::CycleAttempt at;
@@ -121,7 +123,7 @@ CycleRecord CycleRecordFromJson(const nlohmann::json& j, const std::string& path
   r.objective = GetNumber(j, "objective", path);
   r.best_bound = GetNumber(j, "best_bound", path);
   r.gap = GetNumber(j, "gap", path);
-  r.nodes = static_cast<long long>(GetNumber(j, "nodes", path));
+  r.nodes = static_cast<long long>(GetInteger(j, "nodes", path, -1, 9.0e15));
   r.solve_seconds = GetNumber(j, "solve_seconds", path);
   r.first_solution_seconds = GetNumber(j, "first_solution_seconds", path);
   r.build_seconds = GetNumber(j, "build_seconds", path);
@@ -143,7 +145,7 @@ CycleRecord CycleRecordFromJson(const nlohmann::json& j, const std::string& path
     }
     r.burns.push_back({b[0].get<int>(), b[1].get<double>(), b[2].get<double>()});
   }
-  r.planned_burns = static_cast<int>(GetNumber(j, "planned_burns", path));
+  r.planned_burns = static_cast<int>(GetInteger(j, "planned_burns", path, 0, 2.0e9));
   r.consumption_l1_m_s = GetNumber(j, "consumption_l1_m_s", path);
   r.delta_v_m_s = GetNumber(j, "delta_v_m_s", path);
   r.propellant_kg = GetNumber(j, "propellant_kg", path);

@@ -28,6 +28,13 @@ std::vector<std::string> Tokens(const std::string& line) {
 
 std::string Where(const std::string& path, int line) { return path + ":" + std::to_string(line); }
 
+// A count or an index read as a number: an integer in [min, max] (NaN fails
+// every comparison, so it is rejected too), so that the cast is defined and
+// the count cannot size a vector beyond any model.
+bool IsIntegerIn(double v, double min, double max) {
+  return v >= min && v <= max && v == std::floor(v);
+}
+
 ImportedSolution ReadCbc(const std::string& path, std::istream& in) {
   ImportedSolution sol;
   std::string line;
@@ -59,6 +66,10 @@ ImportedSolution ReadCbc(const std::string& path, std::istream& in) {
     if (tok.size() < 3 || !ParseDouble(tok[0], &idx) || !ParseDouble(tok[2], &value)) {
       throw ScenarioError(Where(path, number) +
                           ": expected \"index name value [reduced cost]\", got \"" + line + "\"");
+    }
+    if (!IsIntegerIn(idx, 0.0, kMaxSolutionColumns)) {
+      throw ScenarioError(Where(path, number) + ": index " + tok[0] + " is not an integer in [0, " +
+                          std::to_string(kMaxSolutionColumns) + "]: \"" + line + "\"");
     }
     // With "printingOptions all" CBC lists rows first, then columns, each
     // numbered from 0: a restart of the numbering means the rows are over.
@@ -158,6 +169,11 @@ ImportedSolution ReadGlpkRaw(const std::string& path, std::istream& in) {
       if (tok.size() < 6 || !ParseDouble(tok[3], &c) || !ParseDouble(tok.back(), &obj)) {
         throw ScenarioError(Where(path, number) + ": bad solution line \"" + line + "\"");
       }
+      if (!IsIntegerIn(c, 0.0, kMaxSolutionColumns)) {
+        throw ScenarioError(Where(path, number) + ": column count " + tok[3] +
+                            " is not an integer in [0, " + std::to_string(kMaxSolutionColumns) +
+                            "]: \"" + line + "\"");
+      }
       kind = tok[1];
       cols = static_cast<long>(c);
       sol.objective = obj;
@@ -173,8 +189,8 @@ ImportedSolution ReadGlpkRaw(const std::string& path, std::istream& in) {
         throw ScenarioError(Where(path, number) + ": column line before the \"s\" line");
       double idx = 0.0, v = 0.0;
       const size_t at = kind == "bas" ? 3 : 2;
-      if (tok.size() <= at || !ParseDouble(tok[1], &idx) || !ParseDouble(tok[at], &v) || idx < 1 ||
-          idx > cols) {
+      if (tok.size() <= at || !ParseDouble(tok[1], &idx) || !ParseDouble(tok[at], &v) ||
+          !IsIntegerIn(idx, 1.0, static_cast<double>(cols))) {
         throw ScenarioError(Where(path, number) + ": bad column line \"" + line + "\"");
       }
       sol.values_by_index[static_cast<size_t>(idx) - 1] = v;
@@ -185,6 +201,18 @@ ImportedSolution ReadGlpkRaw(const std::string& path, std::istream& in) {
   }
   if (cols < 0) throw ScenarioError(path + ": no \"s\" line (not a glpsol -w raw solution?)");
   return sol;
+}
+
+ImportedSolution ReadSolution(const std::string& path, std::istream& in, SolutionFormat format) {
+  switch (format) {
+    case SolutionFormat::kCbc:
+      return ReadCbc(path, in);
+    case SolutionFormat::kGlpsol:
+      return ReadGlpsol(path, in);
+    case SolutionFormat::kGlpkRaw:
+      return ReadGlpkRaw(path, in);
+  }
+  throw ScenarioError(path + ": unknown solution format");
 }
 
 }  // namespace
@@ -200,15 +228,13 @@ SolutionFormat ParseSolutionFormat(std::string_view name) {
 ImportedSolution ReadSolutionFile(const std::string& path, SolutionFormat format) {
   std::ifstream in(path);
   if (!in) throw ScenarioError(path + ": cannot open the solution file");
-  switch (format) {
-    case SolutionFormat::kCbc:
-      return ReadCbc(path, in);
-    case SolutionFormat::kGlpsol:
-      return ReadGlpsol(path, in);
-    case SolutionFormat::kGlpkRaw:
-      return ReadGlpkRaw(path, in);
-  }
-  throw ScenarioError(path + ": unknown solution format");
+  return ReadSolution(path, in, format);
+}
+
+ImportedSolution ParseSolutionText(std::string_view text, SolutionFormat format,
+                                   const std::string& source) {
+  std::istringstream in{std::string(text)};
+  return ReadSolution(source, in, format);
 }
 
 Eigen::VectorXd ToColumnVector(const ImportedSolution& sol,

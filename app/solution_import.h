@@ -40,8 +40,18 @@ struct ImportedSolution {
   std::vector<double> values_by_index;  // kGlpkRaw: value of column j at [j - 1]
 };
 
-/// @throws ScenarioError naming the file and line on unreadable content.
+/// Largest column index or count a solution file may give: above the
+/// columns of any model thrustsched exports (kMaxIntervals intervals), so
+/// that a corrupt count fails instead of allocating gigabytes.
+inline constexpr long kMaxSolutionColumns = 10'000'000;
+
+/// @throws ScenarioError naming the file and line on unreadable content
+/// (also a column index or count that is not an integer in
+/// [0, kMaxSolutionColumns]).
 ImportedSolution ReadSolutionFile(const std::string& path, SolutionFormat format);
+/// ReadSolutionFile of text already read; `source` names it in messages.
+ImportedSolution ParseSolutionText(std::string_view text, SolutionFormat format,
+                                   const std::string& source);
 
 /// Values in the order of `column_names`; columns absent from the file are 0
 /// (CBC omits zero columns). @throws ScenarioError if the file names a

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "milp/internal/mps_structure.h"
+
 #include "CoinMessageHandler.hpp"
 #include "CoinMpsIO.hpp"
 #include "CoinPackedMatrix.hpp"
@@ -26,6 +28,7 @@ LpData ReadMpsFile(const std::string& path) {
   {
     std::ifstream probe(path);
     if (!probe) throw std::runtime_error("ReadMpsFile: cannot open '" + path + "'");
+    internal::CheckMpsStructure(path, probe);
   }
   SilentHandler silent;
   CoinMpsIO mps;

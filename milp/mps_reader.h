@@ -16,8 +16,10 @@ namespace thrustsched::milp {
 /// [0, 1] come back as kBinary. CoinMpsIO's own number parser is not
 /// correctly rounded: most values written with %.17g come back exactly, but
 /// e.g. 1e-20 reads as 9.9999999999999995e-21 and 1e-300 as 0.
-/// @throws std::runtime_error naming the file if it cannot be opened, has
-///         read errors (with their count) or gives an invalid model.
+/// @throws std::runtime_error naming the file if it cannot be opened, breaks
+///         the section structure (naming the line and the keyword:
+///         milp/internal/mps_structure.h), has read errors (with their count)
+///         or gives an invalid model.
 LpData ReadMpsFile(const std::string& path);
 
 }  // namespace thrustsched::milp

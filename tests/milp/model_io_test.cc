@@ -511,6 +511,34 @@ TEST(ModelIoErrorsTest, IoFailuresNameThePath) {
   std::remove(path.c_str());
 }
 
+// The layouts CoinMpsIO crashed on (tests/fuzz/corpus/mps/crash_*) are
+// rejected before it reads them, naming the file, the line and the keyword.
+TEST(ModelIoErrorsTest, BrokenSectionStructureIsRejectedByLineAndKeyword) {
+  const std::string path = TempPath("structure.mps");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"NAME a\nROWS\n N OBJ\nROWS\n N OBJ\nCOLUMNS\nENDATA\n",
+       "line 4: ROWS: section appears a second time"},
+      {"NAME a\nRHS\n RHS r 1\nROWS\n N OBJ\nCOLUMNS\nENDATA\n",
+       "line 2: RHS: section before ROWS and COLUMNS"},
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n x OBJ 1\nEN 1.0\nENDATA\n",
+       "line 6: EN: not a section header"},
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n x OBJ \x99\nENDATA\n",
+       "line 5: \" x OBJ ?\": byte 153 is not printable ASCII"},
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n x OBJ 1\n", "line 5: ENDATA: missing"},
+      {"* no NAME\nROWS\n N OBJ\nCOLUMNS\n x OBJ 1\nENDATA\n",
+       "line 2: ROWS: the first section must be NAME"},
+      {"NAME " + std::string(170, 'n') + "\nROWS\n N OBJ\nCOLUMNS\nENDATA\n",
+       "line 1: \"nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn...\": field longer than 159 characters"},
+  };
+  for (const auto& [text, message] : cases) {
+    std::ofstream(path, std::ios::binary) << text;
+    EXPECT_THAT([&] { ReadMpsFile(path); },
+                ThrowsMessage<std::runtime_error>(HasSubstr("'" + path + "' " + message)))
+        << text;
+  }
+  std::remove(path.c_str());
+}
+
 TEST(ModelIoErrorsTest, InvalidProblemIsRejected) {
   LpData lp = Find("lp_min_duals").build();
   lp.col_lower[0] = 3;

@@ -1,0 +1,29 @@
+NAME          FIXED
+ROWS
+ N  COST
+ L  LIM1
+ G  LIM2
+ E  MYEQN
+ N  FREE
+COLUMNS
+    MARKER                 'MARKER'                 'INTORG'
+    X1        COST         1.0   LIM1         1.0
+    X1        LIM299æææ9
+EN         1.0
+    MARKER                 'MARKER'                 'INTEND'
+    X2        COST         2.0   LIM1         1.0
+    X2        MYEQN       -1.0
+    X3        COST        -1.0   MYEQN        1.0
+RHS
+    RHS       COST        -3.5
+    RHS       LIM1         4.)   LIM2         1.0
+    RHS       MYEQN        7.0
+RANGES
+    RNG       LIM1         2.5   MYEQN       -3.0
+BOUNDS
+ UP BND       X1           4.5
+ LO BND       X2          -1.0
+ UP BND       X2           1.0
+ MI BND`      X3
+ BV BND       X4
+ENDATA

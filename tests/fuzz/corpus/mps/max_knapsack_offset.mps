@@ -1,0 +1,39 @@
+* thrustsched free MPS export of 'max_knapsack_offset'
+* The model MAXIMISES; written as the minimisation of the negated objective
+* (negate the optimal value read from this file).
+* Objective offset carried by column OBJ_CONST fixed to 1.
+NAME          max_knapsack_offset  FREE
+ROWS
+ N  OBJ
+ L  w1
+ L  w2
+ L  w3
+COLUMNS
+    MARKER00  'MARKER'  'INTORG'
+    a  OBJ  -5
+    a  w1  2
+    a  w2  4
+    a  w3  3
+    b  OBJ  -4
+    b  w1  3
+    b  w2  1
+    b  w3  4
+    c  OBJ  -3
+    c  w1  1
+    c  w2  2
+    c  w3  2
+    MARKER00  'MARKER'  'INTEND'
+    OBJ_CONST  OBJ  2.5
+RHS
+    RHS  w1  5
+    RHS  w2  11
+    RHS  w3  8
+BOUNDS
+ LO BND  a  0
+ UP BND  a  1
+ LO BND  b  0
+ UP BND  b  1
+ LO BND  c  0
+ UP BND  c  1
+ FX BND  OBJ_CONST  1
+ENDATA

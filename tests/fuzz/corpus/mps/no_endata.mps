@@ -1,0 +1,8 @@
+NAME
+ROWS
+ N OBJ
+ E r
+COLUMNS
+ x OBJ 1 r 1
+RHS
+ RHS r 1e-320

@@ -1,0 +1,15 @@
+NAME frac FREE
+ROWS
+ N obj
+ L r
+COLUMNS
+ MARKER 'MARKER' 'INTORG'
+ y obj 1 r 1
+ MARKER 'MARKER' 'INTEND'
+ z obj 1e-20 r 1e-300
+RHS
+ RHS r 1
+BOUNDS
+ LO BND y 0.2
+ UP BND y 1.7
+ENDATA
