@@ -69,6 +69,8 @@ std::string DescribeJson(const nlohmann::json& value) {
   return s;
 }
 
+constexpr size_t kMaxJsonDepth = 64;
+
 nlohmann::json ParseJsonText(std::string_view text, const std::string& what) {
   std::vector<Frame> frames;
   std::string duplicate;
@@ -77,17 +79,26 @@ nlohmann::json ParseJsonText(std::string_view text, const std::string& what) {
   auto on_value_in_array = [&frames]() {
     if (!frames.empty() && !frames.back().is_object) ++frames.back().index;
   };
+  auto open_level = [&](bool is_object) {
+    on_value_in_array();
+    // No scenario nests deeper than a few levels; a deeper document is
+    // refused here, before printing or copying it would recurse that deep
+    // (a stack overflow under the sanitizers at some thousands of levels).
+    if (frames.size() >= kMaxJsonDepth) {
+      throw ScenarioError(what + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+                          " levels at " + PathOf(root, frames, frames.size()));
+    }
+    frames.push_back(Frame{is_object, {}, "", -1});
+  };
   nlohmann::json::parser_callback_t cb = [&](int /*depth*/, nlohmann::json::parse_event_t event,
                                              nlohmann::json& parsed) -> bool {
     using E = nlohmann::json::parse_event_t;
     switch (event) {
       case E::object_start:
-        on_value_in_array();
-        frames.push_back(Frame{true, {}, "", -1});
+        open_level(true);
         break;
       case E::array_start:
-        on_value_in_array();
-        frames.push_back(Frame{false, {}, "", -1});
+        open_level(false);
         break;
       case E::object_end:
       case E::array_end:

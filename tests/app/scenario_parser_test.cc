@@ -3,6 +3,7 @@
 // fields, bad durations, non-finite numbers, ...) produces a ScenarioError whose
 // message names the field (full path) and the value.
 #include "app/scenario.h"
+#include "app/json_reader.h"
 
 #include <cmath>
 #include <filesystem>
@@ -747,6 +748,31 @@ TEST(ScenarioOptionsIsValid, ConjunctionSolveAndVerificationValuesNameTheirField
     EXPECT_NE(std::string(ex.what()).find("1.5"), std::string::npos) << ex.what();
   }
   EXPECT_NO_THROW(ParseScenario(base));
+}
+
+}  // namespace
+}  // namespace thrustsched::app
+
+namespace thrustsched::app {
+namespace {
+
+// A document nested deeper than any scenario is refused as bad input naming
+// where, before anything could recurse that deep (the fuzzer's stack
+// overflow at 5000 levels); 64 levels are still read.
+TEST(ScenarioJson, NestingDeeperThan64LevelsIsBadInput) {
+  const auto nested = [](int levels) {
+    return std::string(static_cast<size_t>(levels), '[') + "1" +
+           std::string(static_cast<size_t>(levels), ']');
+  };
+  EXPECT_NO_THROW(ParseJsonText(nested(64), "doc.json"));
+  try {
+    ParseJsonText(nested(5000), "doc.json");
+    FAIL() << "no error";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("doc.json: nested deeper than 64 levels at scenario[0]"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
