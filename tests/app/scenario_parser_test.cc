@@ -2,8 +2,8 @@
 // names, and every rejection class (unknown fields, wrong types, missing
 // fields, bad durations, non-finite numbers, ...) produces a ScenarioError whose
 // message names the field (full path) and the value.
-#include "app/scenario.h"
 #include "app/json_reader.h"
+#include "app/scenario.h"
 
 #include <cmath>
 #include <filesystem>
