@@ -6,6 +6,7 @@
 #include "common/constants.h"
 #include "common/error.h"
 #include "common/format.h"
+#include "transfer/internal/elements_mass.h"
 #include "transfer/internal/integrator.h"
 #include "transfer/min_time_shooting.h"
 
@@ -100,31 +101,21 @@ std::vector<GaussSample> PropagateGauss(const MinTimeProblem& p, double duration
   u.mu_si = p.mu;
   const double thrust = u.Thrust(p.thrust_n);
   const double flow = thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s);  // kg/h
-  using State = std::array<double, 7>;                                            // x, mass
-  auto elements = [&](const State& y) {
-    Vector6 x;
-    for (int i = 0; i < 6; ++i) x(i) = y[i];
-    return x;
+  using internal::ElementsMassState;
+  auto rhs = [&](const ElementsMassState& y, ElementsMassState& dy, double t) {
+    const Eigen::Vector3d c = command(t * u.time_s, u.FromScaled(internal::ElementsOf(y)), y[6]);
+    internal::ElementsMassRates(y, c, thrust, flow, p.force_model, u, dy);
   };
-  auto rhs = [&](const State& y, State& dy, double t) {
-    const Vector6 x = elements(y);
-    const Eigen::Vector3d c = command(t * u.time_s, u.FromScaled(x), y[6]);
-    const Vector6 dx = GaussRates(x, thrust / y[6] * c, p.force_model, u);
-    for (int i = 0; i < 6; ++i) dy[i] = dx(i);
-    dy[6] = -flow * c.norm();
-  };
-  State y{};
-  const Vector6 x0 = u.ToScaled(p.initial);
-  for (int i = 0; i < 6; ++i) y[i] = x0(i);
-  y[6] = p.mass_kg;
+  ElementsMassState y = internal::ElementsMassStateOf(u.ToScaled(p.initial), p.mass_kg);
   std::vector<GaussSample> out;
   const double tf = duration_s / u.time_s, step = sample_step_s / u.time_s;
   const int n = static_cast<int>(std::ceil(tf / step - 1e-9));
   out.push_back({0.0, p.initial, p.mass_kg});
   for (int k = 1; k <= n; ++k) {
     const double t0 = (k - 1) * step, t1 = k == n ? tf : k * step;
-    internal::Integrate(rhs, y, t0, t1, tolerance, 0.25, [](double, const State&) { return true; });
-    out.push_back({t1 * u.time_s, u.FromScaled(elements(y)), y[6]});
+    internal::Integrate(rhs, y, t0, t1, tolerance, 0.25,
+                        [](double, const ElementsMassState&) { return true; });
+    out.push_back({t1 * u.time_s, u.FromScaled(internal::ElementsOf(y)), y[6]});
   }
   return out;
 }

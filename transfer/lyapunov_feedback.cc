@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "common/format.h"
 #include "transfer/force_model.h"
+#include "transfer/internal/elements_mass.h"
 #include "transfer/internal/integrator.h"
 
 namespace thrustsched::transfer {
@@ -116,7 +117,7 @@ Eigen::Vector3d FeedbackControl(const Vector6& x, const TargetElements& target,
 
 namespace {
 
-using FeedbackState = std::array<double, 7>;  // scaled elements, mass (kg)
+using FeedbackState = internal::ElementsMassState;
 
 // The on-off rule's state: the current revolution's threshold and the
 // extremes of the efficiency over the revolutions before.
@@ -165,26 +166,18 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
     return c;
   };
   auto rhs = [&](const FeedbackState& y, FeedbackState& dy, double) {
-    Vector6 x;
-    for (int i = 0; i < 6; ++i) x(i) = y[i];
+    const Vector6 x = internal::ElementsOf(y);
     if (!(x(0) > 0) || !(x(1) * x(1) + x(2) * x(2) < 1)) {
       throw std::runtime_error("feedback left the ellipses (P <= 0 or e >= 1)");
     }
     double eff = 0;
-    const Eigen::Vector3d c = control(x, &eff);
-    const Vector6 dx = GaussRates(x, thrust / y[6] * c, p.force_model, u);
-    for (int i = 0; i < 6; ++i) dy[i] = dx(i);
-    dy[6] = -flow * c.norm();
+    internal::ElementsMassRates(y, control(x, &eff), thrust, flow, p.force_model, u, dy);
   };
-  FeedbackState y{};
-  const Vector6 x0 = u.ToScaled(p.initial);
-  for (int i = 0; i < 6; ++i) y[i] = x0(i);
-  y[6] = p.mass_kg;
+  FeedbackState y = internal::ElementsMassStateOf(u.ToScaled(p.initial), p.mass_kg);
   FeedbackResult r;
   double last_v = HUGE_VAL, next_sample_h = 0;
   auto observe = [&](double t, const FeedbackState& s) {
-    Vector6 x;
-    for (int i = 0; i < 6; ++i) x(i) = s[i];
+    const Vector6 x = internal::ElementsOf(s);
     const double v = LyapunovValue(x, p.target, o.weights, u);
     if (std::isfinite(last_v))
       r.max_lyapunov_increase = std::max(r.max_lyapunov_increase, v - last_v);
@@ -235,8 +228,7 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
     r.reached = false;
     r.stop_reason = e.what();
   }
-  Vector6 xf;
-  for (int i = 0; i < 6; ++i) xf(i) = y[i];
+  const Vector6 xf = internal::ElementsOf(y);
   r.duration_s = t_end * u.time_s;
   r.final_elements = u.FromScaled(xf);
   r.final_mass_kg = y[6];
