@@ -24,6 +24,7 @@
 #include "app/cli.h"
 #include "app/run_hooks.h"
 #include "tests/app/cli_runner.h"
+#include "transcription/search/search_options.h"
 
 namespace thrustsched::testing {
 namespace {
@@ -98,8 +99,7 @@ double SignalTime(const std::string& err) {
 std::string LastPhase(const std::string& detail) {
   std::string last;
   size_t last_at = 0;
-  for (const char* phase : {"relaxation", "nets", "tree", "windows", "leaf_milps", "exact",
-                            "improvement", "exchange", "whole_milp"}) {
+  for (const std::string& phase : transcription::SearchPhaseNames()) {
     for (const std::string& head : {std::string("search: "), std::string("; ")}) {
       const size_t at = detail.rfind(head + phase + ": ");
       if (at != std::string::npos && (last.empty() || at > last_at)) {
