@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -41,12 +42,45 @@ std::string Shown(const std::string& line) {
   return "\"" + s + (line.size() > 40 ? "...\"" : "\"");
 }
 
+// CoinMpsIO's fixed-format reader takes the fields that start in columns 15
+// and 40 as 8-character names; a longer one that is the last on its line
+// (a line cut short: a value must follow it, or a long column name in a
+// BOUNDS line without a value) makes it read through a null pointer
+// (CoinMpsCardReader::nextField). Free-format files ("FREE" on the NAME
+// line after the name) take another path.
+void CheckFixedNameFields(const std::string& path, int number, const std::string& line) {
+  // CoinMpsIO drops trailing blanks before it looks.
+  const std::string card = line.substr(0, line.find_last_not_of(" \t") + 1);
+  auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  for (const size_t column : {size_t{14}, size_t{39}}) {
+    const bool starts_here =
+        card.size() > column && !blank(card[column]) && blank(card[column - 1]);
+    if (starts_here && card.size() > column + 8 &&
+        card.find_first_of(" \t", column) == std::string::npos) {
+      Fail(path, number, Shown(card.substr(column)),
+           "a name of more than 8 characters in column " + std::to_string(column + 1) +
+               " ends the line (fixed-format MPS; a value must follow, or mark the file FREE)");
+    }
+  }
+}
+
+bool NameLineSaysFree(const std::string& line) {
+  std::istringstream words(line);
+  std::string word;
+  words >> word >> word;  // "NAME", then the problem's name
+  while (words >> word) {
+    if (word.find("FREE") != std::string::npos) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void CheckMpsStructure(const std::string& path, std::istream& in) {
   std::set<std::string> seen;
   int rank = 0;
   bool ended = false;
+  bool free_format = false;
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
@@ -78,6 +112,7 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
       if (seen.empty()) {
         Fail(path, number, Shown(line), "data line before any section");
       }
+      if (!free_format) CheckFixedNameFields(path, number, line);
       continue;
     }
     const std::string word = line.substr(0, line.find_first_of(" \t"));
@@ -94,6 +129,7 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
       Fail(path, number, word, "section before ROWS and COLUMNS");
     }
     if (s->rank == 2 && seen.count("ROWS") == 0) Fail(path, number, word, "COLUMNS before ROWS");
+    if (word == "NAME") free_format = NameLineSaysFree(line);
     rank = s->rank;
     ended = s->rank == 7;
   }

@@ -5,6 +5,10 @@
 // within 2 s, and the best schedule found is checked and written with its gap
 // (or, before the first one, the run ends with no schedule and exit 4).
 //
+// A time limit that falls inside each of those phases keeps the incumbent
+// the same way: the hook holds the solving thread at the phase's report
+// until the limit has passed, so the limit falls in that phase.
+//
 // The signal is sent by the CLI's own progress hook (app/run_hooks.h) at the
 // first progress report from inside the named phase, so it always lands in
 // that phase whatever the machine's load: the real signal path in a child
@@ -63,6 +67,23 @@ std::string PatchedWeek(const std::string& dir, const PhaseCase& c) {
   return path;
 }
 
+// The first progress report from inside the case's phase.
+bool IsTrigger(const PhaseCase& c, const milp::SolveProgress& p) {
+  if (p.stage() != c.phase) return false;
+  if (p.stage_begins != (c.trigger == Trigger::kAnnouncement)) return false;
+  return c.trigger != Trigger::kLpIterations || p.lp_iterations >= 0;
+}
+
+// Runs `solve` on the scenario in a child with the given hooks and extra
+// arguments.
+RunResult SolveInChild(const std::string& scenario, const std::string& out,
+                       const app::RunHooks& hooks, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args = {"thrustsched", "solve",      scenario,      "--out",
+                                   out,           "--no-plots", "--no-report", "--no-diagnose"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return RunInChild([&] { return app::RunCli(args, hooks); }, 600.0);
+}
+
 // Runs the CLI in a child; its progress hook sends the case's signal at the
 // first report from inside the phase and writes the search clock's time of
 // it to stderr ("test hook: signal at S s").
@@ -71,21 +92,13 @@ RunResult SolveAndSignalInPhase(const PhaseCase& c, const std::string& scenario,
   app::RunHooks hooks;
   bool sent = false;
   hooks.on_progress = [&](const milp::SolveProgress& p) {
-    if (sent || p.stage() != c.phase) return;
-    if (p.stage_begins != (c.trigger == Trigger::kAnnouncement)) return;
-    if (c.trigger == Trigger::kLpIterations && p.lp_iterations < 0) return;
+    if (sent || !IsTrigger(c, p)) return;
     sent = true;
     std::fprintf(stderr, "test hook: signal at %.3f s\n", p.wall_seconds);
     std::fflush(stderr);
     kill(getpid(), c.signal);
   };
-  return RunInChild(
-      [&] {
-        return app::RunCli({"thrustsched", "solve", scenario, "--out", out, "--no-plots",
-                            "--no-report", "--no-diagnose"},
-                           hooks);
-      },
-      600.0);
+  return SolveInChild(scenario, out, hooks);
 }
 
 double SignalTime(const std::string& err) {
@@ -145,16 +158,81 @@ TEST_P(SearchSignals, StopWithinTwoSecondsAndKeepTheBestSchedule) {
   fs::remove_all(dir);
 }
 
+// The time limit of the time-limit cases: long enough for every case's
+// phase to begin under a heavy load (a phase that begins later is skipped,
+// not failed); the hook then holds the solve there until it has passed.
+constexpr double kTimeLimitS = 30.0;
+
+// Runs the CLI with --time-limit kTimeLimitS in a child; at the first report
+// from inside the phase its hook sleeps until the limit has passed and writes
+// "test hook: held at S s", or "test hook: late" if the phase began after it.
+RunResult SolveWithLimitFallingInPhase(const PhaseCase& c, const std::string& scenario,
+                                       const std::string& out) {
+  app::RunHooks hooks;
+  bool held = false;
+  hooks.on_progress = [&](const milp::SolveProgress& p) {
+    if (held || !IsTrigger(c, p)) return;
+    held = true;
+    const double wait_s = kTimeLimitS + 0.3 - p.wall_seconds;
+    std::fprintf(stderr, wait_s > 0 ? "test hook: held at %.3f s\n" : "test hook: late\n",
+                 p.wall_seconds);
+    std::fflush(stderr);
+    if (wait_s > 0) usleep(static_cast<useconds_t>(wait_s * 1e6));
+  };
+  return SolveInChild(scenario, out, hooks, {"--time-limit", std::to_string(kTimeLimitS)});
+}
+
+class SearchTimeLimits : public ::testing::TestWithParam<PhaseCase> {};
+
+TEST_P(SearchTimeLimits, ALimitInsideThePhaseStopsThereAndKeepsTheBestSchedule) {
+  const PhaseCase& c = GetParam();
+  const std::string dir = TempDir("search_limit_" + c.phase);
+  const RunResult r = SolveWithLimitFallingInPhase(c, PatchedWeek(dir, c), dir + "/o");
+  ASSERT_TRUE(r.exited) << r.Describe();
+  if (r.err.find("test hook: late") != std::string::npos) {
+    GTEST_SKIP() << "the phase began after the " << kTimeLimitS << " s limit (a loaded machine)";
+  }
+  ASSERT_NE(r.err.find("test hook: held at "), std::string::npos)
+      << "the phase never reported: " << r.Describe();
+  const json summary = ReadJson(dir + "/o/summary.json");
+  const std::string detail = summary["solver_detail"].get<std::string>();
+  EXPECT_EQ(LastPhase(detail), c.phase) << detail;
+  EXPECT_FALSE(summary["interrupted"].get<bool>()) << summary.dump();
+  // The whole limit went to the solve (no diagnosis), and the solve ended
+  // within 2 s of it.
+  EXPECT_DOUBLE_EQ(summary["solve_time_limit_s"].get<double>(), kTimeLimitS);
+  EXPECT_GE(summary["solve_seconds"].get<double>(), kTimeLimitS);
+  EXPECT_LE(summary["solve_seconds"].get<double>(), kTimeLimitS + 2.0) << r.Describe();
+  if (summary["status"] == "no_solution") {
+    EXPECT_EQ(r.exit_code, 4) << r.Describe();
+    EXPECT_TRUE(summary["incumbents"].empty()) << summary.dump();
+  } else {
+    EXPECT_EQ(r.exit_code, 0) << r.Describe();
+    EXPECT_EQ(summary["status"], "feasible") << summary.dump();
+    ASSERT_FALSE(summary["incumbents"].empty()) << summary.dump();
+    EXPECT_DOUBLE_EQ(summary["objective"].get<double>(),
+                     summary["incumbents"].back()["objective"].get<double>());
+    EXPECT_GT(summary["gap"].get<double>(), 0.0);
+    EXPECT_TRUE(summary["check"]["operational_ok"].get<bool>()) << summary.dump();
+    EXPECT_TRUE(fs::exists(dir + "/o/schedule.csv"));
+  }
+  fs::remove_all(dir);
+}
+
 const std::vector<std::string> kAllButWholeMilp = {"nets", "exact",   "improvement",
                                                    "tree", "windows", "exchange"};
 
-INSTANTIATE_TEST_SUITE_P(
-    EachPhase, SearchSignals,
-    ::testing::Values(PhaseCase{"relaxation", SIGINT, Trigger::kLpIterations, {}},
-                      PhaseCase{"nets", SIGTERM, Trigger::kFirstReport, {}},
-                      PhaseCase{"tree", SIGINT, Trigger::kAnnouncement, {"exact", "improvement"}},
-                      PhaseCase{"whole_milp", SIGTERM, Trigger::kFirstReport, kAllButWholeMilp}),
-    [](const ::testing::TestParamInfo<PhaseCase>& info) { return info.param.phase; });
+const PhaseCase kRelaxation{"relaxation", SIGINT, Trigger::kLpIterations, {}};
+const PhaseCase kNets{"nets", SIGTERM, Trigger::kFirstReport, {}};
+const PhaseCase kTree{"tree", SIGINT, Trigger::kAnnouncement, {"exact", "improvement"}};
+const PhaseCase kWholeMilp{"whole_milp", SIGTERM, Trigger::kFirstReport, kAllButWholeMilp};
+
+std::string CaseName(const ::testing::TestParamInfo<PhaseCase>& info) { return info.param.phase; }
+
+INSTANTIATE_TEST_SUITE_P(EachPhase, SearchSignals,
+                         ::testing::Values(kRelaxation, kNets, kTree, kWholeMilp), CaseName);
+INSTANTIATE_TEST_SUITE_P(EachPhase, SearchTimeLimits,
+                         ::testing::Values(kRelaxation, kNets, kTree, kWholeMilp), CaseName);
 
 }  // namespace
 }  // namespace thrustsched::testing

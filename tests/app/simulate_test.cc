@@ -264,6 +264,29 @@ std::vector<std::vector<std::string>> DeterministicCells(const std::string& path
   return rows;
 }
 
+// The files of a resumed run equal those of the uninterrupted one: cycles.csv
+// without its timing columns, the year's figures, the final true state and
+// the last burn bit for bit, the trajectory and every cycle's schedule.
+void ExpectTheSameYear(const std::string& full, const std::string& resumed) {
+  EXPECT_EQ(DeterministicCells(resumed + "/cycles.csv"), DeterministicCells(full + "/cycles.csv"));
+  const nlohmann::json ya = ReadJson(full + "/year.json");
+  const nlohmann::json yb = ReadJson(resumed + "/year.json");
+  for (const char* k : {"consumption_l1_m_s", "delta_v_m_s", "propellant_kg", "normal_delta_v_m_s",
+                        "thrust_days", "time_outside_window_s", "max_abs_lat_deg",
+                        "max_abs_lon_deg", "burns", "cycles", "complete"}) {
+    EXPECT_EQ(ya[k], yb[k]) << k << " of " << resumed;
+  }
+  const nlohmann::json ca = ReadJson(full + "/checkpoint.json");
+  const nlohmann::json cb = ReadJson(resumed + "/checkpoint.json");
+  EXPECT_EQ(ca["eci"], cb["eci"]) << resumed;  // the final true state, bit for bit
+  EXPECT_EQ(ca["last_burn_end_s"], cb["last_burn_end_s"]) << resumed;
+  EXPECT_EQ(ReadFile(full + "/trajectory.csv"), ReadFile(resumed + "/trajectory.csv")) << resumed;
+  for (int k = 1; k <= 4; ++k) {
+    const std::string f = "/cycles/cycle_00" + std::to_string(k) + ".csv";
+    EXPECT_EQ(ReadFile(full + f), ReadFile(resumed + f)) << resumed << f;
+  }
+}
+
 TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   // Uninterrupted run.
   const std::string full = TempDir("sim_full");
@@ -364,23 +387,28 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   const auto r3 = RunCli({"simulate", kScenario, "--out", split, "--no-plots", "--resume"}, 300);
   ASSERT_EQ(r3.exit_code, 0) << r3.Describe();
   EXPECT_NE(r3.err.find("resuming"), std::string::npos) << r3.err;
-  EXPECT_EQ(DeterministicCells(split + "/cycles.csv"), DeterministicCells(full + "/cycles.csv"));
-  const nlohmann::json ya = ReadJson(full + "/year.json");
-  const nlohmann::json yb = ReadJson(split + "/year.json");
-  for (const char* k : {"consumption_l1_m_s", "delta_v_m_s", "propellant_kg", "normal_delta_v_m_s",
-                        "thrust_days", "time_outside_window_s", "max_abs_lat_deg",
-                        "max_abs_lon_deg", "burns", "cycles", "complete"}) {
-    EXPECT_EQ(ya[k], yb[k]) << k;
-  }
-  const nlohmann::json ca = ReadJson(full + "/checkpoint.json");
-  const nlohmann::json cb = ReadJson(split + "/checkpoint.json");
-  EXPECT_EQ(ca["eci"], cb["eci"]);  // the final true state, bit for bit
-  EXPECT_EQ(ca["last_burn_end_s"], cb["last_burn_end_s"]);
-  EXPECT_EQ(ReadFile(full + "/trajectory.csv"), ReadFile(split + "/trajectory.csv"));
-  for (int k = 1; k <= 4; ++k) {
-    const std::string f = "/cycles/cycle_00" + std::to_string(k) + ".csv";
-    EXPECT_EQ(ReadFile(full + f), ReadFile(split + f)) << f;
-  }
+  ExpectTheSameYear(full, split);
+
+  // Ctrl-C inside cycle 3's solve (at its first incumbent), then resumed:
+  // the cycle is solved again from its start and the year is the same.
+  const std::string cut = TempDir("sim_cut");
+  RunHooks hooks;
+  int cycle_running = 0;
+  hooks.in_cycle = [&](int cycle) { cycle_running = cycle; };
+  hooks.on_progress = [&](const milp::SolveProgress& p) {
+    if (cycle_running == 3) InterruptSelfAtFirstIncumbent(p);
+  };
+  const auto r5 = thrustsched::testing::RunInChild([&] {
+    return thrustsched::app::RunCli(
+        {"thrustsched", "simulate", kScenario, "--out", cut, "--no-plots"}, hooks);
+  });
+  ASSERT_TRUE(r5.exited) << r5.Describe();
+  ASSERT_EQ(r5.exit_code, 4) << r5.Describe();
+  EXPECT_EQ(ReadJson(cut + "/checkpoint.json")["next_cycle"], 2);
+  EXPECT_EQ(ReadCsvRows(cut + "/cycles.csv").size(), 3u);
+  const auto r6 = RunCli({"simulate", kScenario, "--out", cut, "--no-plots", "--resume"}, 300);
+  ASSERT_EQ(r6.exit_code, 0) << r6.Describe();
+  ExpectTheSameYear(full, cut);
 
   // A checkpoint of another scenario is refused (exit 2), naming it.
   const std::string other = TempDir("sim_other");
@@ -396,6 +424,7 @@ TEST(SimulateCli, FourCyclesResumeEqualsUninterrupted) {
   EXPECT_NE(r4.err.find("checkpoint"), std::string::npos) << r4.err;
   fs::remove_all(full);
   fs::remove_all(split);
+  fs::remove_all(cut);
   fs::remove_all(other);
 }
 

@@ -529,6 +529,16 @@ TEST(ModelIoErrorsTest, BrokenSectionStructureIsRejectedByLineAndKeyword) {
        "line 2: ROWS: the first section must be NAME"},
       {"NAME " + std::string(170, 'n') + "\nROWS\n N OBJ\nCOLUMNS\nENDATA\n",
        "line 1: \"nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn...\": field longer than 159 characters"},
+      // Fixed format: a name longer than 8 characters that ends the line, in
+      // column 15 (a COLUMNS line cut short, a BOUNDS line) or 40.
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n    X3        COSINTORG'\nENDATA\n",
+       "line 5: \"COSINTORG'\": a name of more than 8 characters in column 15 ends the line"},
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n    X1        OBJ       1.0            \n"
+       "BOUNDS\n FR BND       X123456789  \nENDATA\n",
+       "line 7: \"X123456789\": a name of more than 8 characters in column 15"},
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n    X1        OBJ       1.0            R23456789\n"
+       "ENDATA\n",
+       "line 5: \"R23456789\": a name of more than 8 characters in column 40"},
   };
   for (const auto& [text, message] : cases) {
     std::ofstream(path, std::ios::binary) << text;
@@ -536,6 +546,21 @@ TEST(ModelIoErrorsTest, BrokenSectionStructureIsRejectedByLineAndKeyword) {
                 ThrowsMessage<std::runtime_error>(HasSubstr("'" + path + "' " + message)))
         << text;
   }
+  std::remove(path.c_str());
+}
+
+// The fixed-format check leaves free-format files alone: long names that end
+// a line are ordinary there.
+TEST(ModelIoErrorsTest, LongNamesEndingALineAreReadInFreeFormat) {
+  const std::string path = TempPath("free_long_names.mps");
+  std::ofstream(path, std::ios::binary)
+      << "NAME a  FREE\nROWS\n N OBJ\n L R123456789\nCOLUMNS\n"
+      << "    X123456789    OBJ       1.0   R123456789 2.0\nRHS\n    RHS  R123456789 4\n"
+      << "BOUNDS\n UP BND       X123456789 3\nENDATA\n";
+  const LpData lp = ReadMpsFile(path);
+  ASSERT_EQ(lp.num_cols(), 1);
+  EXPECT_DOUBLE_EQ(lp.col_upper[0], 3.0);
+  EXPECT_DOUBLE_EQ(lp.row_upper[0], 4.0);
   std::remove(path.c_str());
 }
 

@@ -1,0 +1,8 @@
+NAME          CUT
+ROWS
+ N  COST
+ L  LIM1
+COLUMNS
+    MARKER                 'MARKER'                 'INTORG'
+    X3        COSINTORG'
+ENDATA
