@@ -5,12 +5,19 @@
 # harness SECONDS with -timeout=1 -rss_limit_mb=2048 on the work corpus out/fuzz/corpus/NAME
 # (seeded from data/ and tests/fuzz/corpus/NAME), appends one line per run to
 # out/fuzz/totals.csv and prints the totals per harness. Crash inputs go to out/fuzz/crashes/NAME/.
+# FUZZ_TIMEOUT_S (default 1) replaces the 1-s wall-clock budget per input on a loaded machine;
+# replay a timeout input on a quiet one (build-fuzz/tests/fuzz/fuzz_NAME FILE) to judge it.
 set -euo pipefail
-usage() { sed -n "2,7p" "$0" | sed "s/^# \{0,1\}//"; }
+usage() { sed -n "2,9p" "$0" | sed "s/^# \{0,1\}//"; }
 case "${1:-}" in -h|--help) usage; exit 0 ;; "") usage >&2; exit 2 ;; esac
 cd "$(dirname "$0")/.."
 seconds=$1
 shift
+timeout_s=${FUZZ_TIMEOUT_S:-1}
+if ! [[ "$timeout_s" =~ ^[0-9]+$ ]] || [ "$timeout_s" -lt 1 ]; then
+  echo "fuzz.sh: FUZZ_TIMEOUT_S must be a positive integer, got '$timeout_s'" >&2
+  exit 2
+fi
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: SECONDS must be a positive integer, got '$seconds'" >&2
   exit 2
@@ -65,7 +72,7 @@ for h in "${harnesses[@]}"; do
   # One process; a finding ends the run (its input is in $crashes).
   started=$SECONDS
   set +e
-  nice -n 10 "$build/tests/fuzz/fuzz_$h" "$corpus" -max_total_time="$seconds" -timeout=1 \
+  nice -n 10 "$build/tests/fuzz/fuzz_$h" "$corpus" -max_total_time="$seconds" -timeout="$timeout_s" \
     -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$crashes/" > "$log" 2>&1
   status=$?

@@ -64,6 +64,15 @@ void CheckFixedNameFields(const std::string& path, int number, const std::string
   }
 }
 
+// CoinMpsIO expands the tabs of a fixed-format BOUNDS line to its columns
+// and asserts (aborts) that the line is under 81 characters.
+void CheckFixedBoundsTabs(const std::string& path, int number, const std::string& line) {
+  const size_t end = line.find_last_not_of(" \t");
+  if (line.find('\t') == std::string::npos || end == std::string::npos || end + 1 <= 80) return;
+  Fail(path, number, Shown(line),
+       "a BOUNDS line with tabs longer than 80 characters (fixed-format MPS; mark the file FREE)");
+}
+
 bool NameLineSaysFree(const std::string& line) {
   std::istringstream words(line);
   std::string word;
@@ -81,6 +90,7 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
   int rank = 0;
   bool ended = false;
   bool free_format = false;
+  std::string section;
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
@@ -113,6 +123,7 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
         Fail(path, number, Shown(line), "data line before any section");
       }
       if (!free_format) CheckFixedNameFields(path, number, line);
+      if (!free_format && section == "BOUNDS") CheckFixedBoundsTabs(path, number, line);
       continue;
     }
     const std::string word = line.substr(0, line.find_first_of(" \t"));
@@ -130,6 +141,7 @@ void CheckMpsStructure(const std::string& path, std::istream& in) {
     }
     if (s->rank == 2 && seen.count("ROWS") == 0) Fail(path, number, word, "COLUMNS before ROWS");
     if (word == "NAME") free_format = NameLineSaysFree(line);
+    section = word;
     rank = s->rank;
     ended = s->rank == 7;
   }

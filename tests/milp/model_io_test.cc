@@ -539,6 +539,10 @@ TEST(ModelIoErrorsTest, BrokenSectionStructureIsRejectedByLineAndKeyword) {
       {"NAME a\nROWS\n N OBJ\nCOLUMNS\n    X1        OBJ       1.0            R23456789\n"
        "ENDATA\n",
        "line 5: \"R23456789\": a name of more than 8 characters in column 40"},
+      // CoinMpsIO aborts on a fixed-format BOUNDS line with tabs of 81+ characters.
+      {"NAME a\nROWS\n N OBJ\nCOLUMNS\n    X1        OBJ       1.0\nBOUNDS\n UP BND\tX1\t" +
+           std::string(80, ' ') + "3\nENDATA\n",
+       "line 7: \" UP BND?X1?"},
   };
   for (const auto& [text, message] : cases) {
     std::ofstream(path, std::ios::binary) << text;
