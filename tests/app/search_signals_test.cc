@@ -124,6 +124,24 @@ std::string LastPhase(const std::string& detail) {
   return last;
 }
 
+// A stopped solve: no schedule yet (exit 4, no incumbent), or the best
+// incumbent reported written with its open gap and checked (exit 0).
+void ExpectTheBestScheduleKept(const RunResult& r, const json& summary, const std::string& out) {
+  if (summary["status"] == "no_solution") {
+    EXPECT_EQ(r.exit_code, 4) << r.Describe();
+    EXPECT_TRUE(summary["incumbents"].empty()) << summary.dump();
+    return;
+  }
+  EXPECT_EQ(r.exit_code, 0) << r.Describe();
+  EXPECT_EQ(summary["status"], "feasible") << summary.dump();
+  ASSERT_FALSE(summary["incumbents"].empty()) << summary.dump();
+  EXPECT_DOUBLE_EQ(summary["objective"].get<double>(),
+                   summary["incumbents"].back()["objective"].get<double>());
+  EXPECT_GT(summary["gap"].get<double>(), 0.0);
+  EXPECT_TRUE(summary["check"]["operational_ok"].get<bool>()) << summary.dump();
+  EXPECT_TRUE(fs::exists(out + "/schedule.csv"));
+}
+
 class SearchSignals : public ::testing::TestWithParam<PhaseCase> {};
 
 TEST_P(SearchSignals, StopWithinTwoSecondsAndKeepTheBestSchedule) {
@@ -141,20 +159,7 @@ TEST_P(SearchSignals, StopWithinTwoSecondsAndKeepTheBestSchedule) {
   // The search's clock and the solve's start within milliseconds of each
   // other: the solve's wall time less the signal's time is the stop's latency.
   EXPECT_LE(summary["solve_seconds"].get<double>() - signalled_at, 2.0) << r.Describe();
-  if (summary["status"] == "no_solution") {
-    EXPECT_EQ(r.exit_code, 4) << r.Describe();
-    EXPECT_TRUE(summary["incumbents"].empty()) << summary.dump();
-  } else {
-    EXPECT_EQ(r.exit_code, 0) << r.Describe();
-    EXPECT_EQ(summary["status"], "feasible") << summary.dump();
-    ASSERT_FALSE(summary["incumbents"].empty()) << summary.dump();
-    // The schedule written is the best incumbent reported, with its open gap.
-    EXPECT_DOUBLE_EQ(summary["objective"].get<double>(),
-                     summary["incumbents"].back()["objective"].get<double>());
-    EXPECT_GT(summary["gap"].get<double>(), 0.0);
-    EXPECT_TRUE(summary["check"]["operational_ok"].get<bool>()) << summary.dump();
-    EXPECT_TRUE(fs::exists(dir + "/o/schedule.csv"));
-  }
+  ExpectTheBestScheduleKept(r, summary, dir + "/o");
   fs::remove_all(dir);
 }
 
@@ -203,19 +208,7 @@ TEST_P(SearchTimeLimits, ALimitInsideThePhaseStopsThereAndKeepsTheBestSchedule) 
   EXPECT_DOUBLE_EQ(summary["solve_time_limit_s"].get<double>(), kTimeLimitS);
   EXPECT_GE(summary["solve_seconds"].get<double>(), kTimeLimitS);
   EXPECT_LE(summary["solve_seconds"].get<double>(), kTimeLimitS + 2.0) << r.Describe();
-  if (summary["status"] == "no_solution") {
-    EXPECT_EQ(r.exit_code, 4) << r.Describe();
-    EXPECT_TRUE(summary["incumbents"].empty()) << summary.dump();
-  } else {
-    EXPECT_EQ(r.exit_code, 0) << r.Describe();
-    EXPECT_EQ(summary["status"], "feasible") << summary.dump();
-    ASSERT_FALSE(summary["incumbents"].empty()) << summary.dump();
-    EXPECT_DOUBLE_EQ(summary["objective"].get<double>(),
-                     summary["incumbents"].back()["objective"].get<double>());
-    EXPECT_GT(summary["gap"].get<double>(), 0.0);
-    EXPECT_TRUE(summary["check"]["operational_ok"].get<bool>()) << summary.dump();
-    EXPECT_TRUE(fs::exists(dir + "/o/schedule.csv"));
-  }
+  ExpectTheBestScheduleKept(r, summary, dir + "/o");
   fs::remove_all(dir);
 }
 
