@@ -166,7 +166,7 @@ TEST_P(SearchSignals, StopWithinTwoSecondsAndKeepTheBestSchedule) {
 // The time limit of the time-limit cases: long enough for every case's
 // phase to begin under a heavy load (a phase that begins later is skipped,
 // not failed); the hook then holds the solve there until it has passed.
-constexpr double kTimeLimitS = 30.0;
+constexpr double kTimeLimitS = 45.0;
 
 // Runs the CLI with --time-limit kTimeLimitS in a child; at the first report
 // from inside the phase its hook sleeps until the limit has passed and writes
@@ -197,9 +197,13 @@ TEST_P(SearchTimeLimits, ALimitInsideThePhaseStopsThereAndKeepsTheBestSchedule) 
   if (r.err.find("test hook: late") != std::string::npos) {
     GTEST_SKIP() << "the phase began after the " << kTimeLimitS << " s limit (a loaded machine)";
   }
+  const json summary = ReadJson(dir + "/o/summary.json");
+  if (r.err.find("test hook: held at ") == std::string::npos &&
+      summary["solve_seconds"].get<double>() >= kTimeLimitS) {
+    GTEST_SKIP() << "the limit fell before the phase began (a loaded machine)";
+  }
   ASSERT_NE(r.err.find("test hook: held at "), std::string::npos)
       << "the phase never reported: " << r.Describe();
-  const json summary = ReadJson(dir + "/o/summary.json");
   const std::string detail = summary["solver_detail"].get<std::string>();
   EXPECT_EQ(LastPhase(detail), c.phase) << detail;
   EXPECT_FALSE(summary["interrupted"].get<bool>()) << summary.dump();
