@@ -1,0 +1,231 @@
+// FleetMilp: several spacecraft planned in one MILP (formation deployment and
+// reconfiguration, Epenoy 2006; co-located satellites sharing one box, Soop,
+// Handbook of Geostationary Orbits, ch. 7).
+//
+//   transcription::FleetProblem fleet;
+//   fleet.members = {{"chief", chief_problem}, {"deputy", deputy_problem}};
+//   transcription::TerminalCoupling c;                    // x_d(t_N) - x_c(t_N) = b
+//   c.member = 1; c.reference = 0;
+//   c.map = Eigen::MatrixXd::Identity(6, 6); c.offset = Eigen::VectorXd::Zero(6);
+//   c.offset[1] = 200;                                     // 200 m along-track
+//   fleet.couplings.push_back(c);
+//   fleet.keep_out = transcription::FleetKeepOut{50.0, check_times};  // 50 m cube
+//   fleet.balance.kind = transcription::FuelBalanceKind::kMinMax;
+//   transcription::FleetResult r = transcription::SolveFleet(fleet, *milp::MakeCbcSolver());
+//   for (size_t k = 0; k < r.schedules.size(); ++k)
+//     std::cout << fleet.members[k].name << ": " << r.consumption[k] << "\n";
+//
+// The model is one milp::Model with one block per member (the member's own
+// ScheduleMilp, columns and rows named "<member>.<name>") plus the coupling
+// rows, solved by any milp::Solver:
+//   - terminal couplings  A x_k(t_N) - A x_l(t_N) = b (l = -1: A x_k(t_N) = b),
+//     the formation geometry (Epenoy's coupled terminal conditions phi = 0);
+//   - fuel balance, the linear analogue of Epenoy's mass-balancing function:
+//     kMaxExcessOverMean  J_k <= (1 + f) (1/K) sum_l J_l for every member, or
+//     kMinMax             minimise  max_k J_k + w sum_k J_k  (epigraph column);
+//     J_k is member k's own objective (its ObjectiveKind, burn-start penalty
+//     included);
+//   - pairwise keep-out on a check grid: at each check time t and pair (k, l),
+//     the relative position r_k(t) - r_l(t) lies outside the cube of half-size R,
+//     the disjunction of Serra 2015 (Problem 10) over the six faces
+//     a^T (r_k - r_l) + M w_a >= R,  sum_a w_a <= 5, with M derived from the
+//     reachable sets of both members (every on-off binary in [0, 1]: the exact
+//     range of a^T r over the box of binaries, as transcription/keep_out.h),
+//     faces no plan can satisfy dropped, checks every plan clears left out;
+//   - slot assignment (Richards, Schouwenaars, How & Feron 2002): binaries
+//     z_is, each listed member takes one slot and each slot one member, and
+//     |A x_i(t_N) - A x_ref(t_N) - slot_s| <= M_is (1 - z_is) with M from the
+//     same reachable ranges.
+// Members must share the grid, use the on-off input mode and the sparse
+// formulation (the couplings are written on the state columns).
+// Positions: `position_map` (3 x n, metres) maps a member's state to its
+// position; empty means the first three state components (HCW, YA, the
+// double integrators).
+#ifndef THRUSTSCHED_TRANSCRIPTION_FLEET_H_
+#define THRUSTSCHED_TRANSCRIPTION_FLEET_H_
+
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "milp/model.h"
+#include "milp/solver.h"
+#include "transcription/checker.h"
+#include "transcription/problem.h"
+#include "transcription/schedule_milp.h"
+
+namespace thrustsched::transcription {
+
+struct FleetMember {
+  std::string name;  // unique, non-empty: the prefix of the member's columns and rows
+  ScheduleProblem problem;
+};
+
+/// map * x_member(t_N) - map * x_reference(t_N) = offset, within +-tolerance
+/// per row (empty tolerance: equality). reference = -1: no reference term.
+struct TerminalCoupling {
+  int member = 0;
+  int reference = -1;
+  Eigen::MatrixXd map;        // rows x n (state units)
+  Eigen::VectorXd offset;     // rows
+  Eigen::VectorXd tolerance;  // rows, >= 0, or empty
+};
+
+enum class FuelBalanceKind { kNone, kMaxExcessOverMean, kMinMax };
+std::string_view ToString(FuelBalanceKind kind);
+/// "none" | "max_excess_over_mean" | "min_max". @throws std::invalid_argument.
+FuelBalanceKind ParseFuelBalanceKind(std::string_view name);
+
+struct FuelBalance {
+  FuelBalanceKind kind = FuelBalanceKind::kNone;
+  double max_excess_fraction = 0.1;  // f >= 0 (kMaxExcessOverMean)
+  double sum_weight = 1e-3;          // w >= 0 (kMinMax): ties broken by the total
+};
+
+struct FleetKeepOut {
+  double half_size_m = 0.0;           // R > 0: |r_k - r_l|_inf >= R at every check
+  std::vector<double> check_times_s;  // sorted, inside the grid (a node or between)
+};
+
+/// Members `members[i]` take the slots: map x_i(t_N) - map x_ref(t_N) = slots[s]
+/// for the slot s assigned to i (a permutation: as many slots as members).
+struct SlotAssignment {
+  std::vector<int> members;
+  int reference = -1;                  // the chief (not among `members`), or -1
+  Eigen::MatrixXd map;                 // rows x n
+  std::vector<Eigen::VectorXd> slots;  // rows each
+};
+
+struct FleetProblem {
+  std::vector<FleetMember> members;
+  std::vector<TerminalCoupling> couplings;
+  FuelBalance balance;
+  std::optional<FleetKeepOut> keep_out;
+  std::optional<SlotAssignment> assignment;
+  Eigen::MatrixXd position_map;  // 3 x n or empty (first three state components)
+
+  /// Index of the member named `name`, -1 if none.
+  int MemberIndex(std::string_view name) const;
+  /// Every member valid (ScheduleProblem::IsValid, message prefixed by
+  /// "members[k]."), the same grid and state size, on-off mode, names unique,
+  /// couplings, balance, keep-out and assignment of consistent sizes and
+  /// finite values. On failure fills *error naming the field and the value.
+  bool IsValid(std::string* error) const;
+};
+
+struct FleetBuildStats {
+  int num_columns = 0, num_rows = 0, num_binaries = 0;
+  long long num_nonzeros = 0;
+  int keep_out_checks = 0;            // (pair, time) checks
+  int keep_out_checks_clear = 0;      // every reachable pair of plans clears: no row
+  int keep_out_single_face = 0;       // one face possible: one row, no binary
+  int keep_out_faces_impossible = 0;  // dropped
+  int keep_out_binaries = 0;
+  int assignment_binaries = 0;
+  double big_m_min_m = std::numeric_limits<double>::quiet_NaN();  // keep-out big-M
+  double big_m_max_m = std::numeric_limits<double>::quiet_NaN();
+  double assignment_big_m_max = std::numeric_limits<double>::quiet_NaN();  // map units
+  std::vector<std::string> infeasibility_reasons;                          // found while building
+};
+
+class FleetMilp {
+ public:
+  /// Builds every member's ScheduleMilp with `options` (sparse formulation
+  /// required), then the fleet model.
+  /// @throws std::invalid_argument if !fleet.IsValid() (message names the
+  ///         field) or options.formulation is not kSparse.
+  FleetMilp(const FleetProblem& fleet, const BuildOptions& options);
+
+  const FleetProblem& fleet() const { return fleet_; }
+  const milp::Model& model() const { return model_; }
+  const milp::LpData& lp() const { return lp_; }
+  const FleetBuildStats& stats() const { return stats_; }
+  int num_members() const { return static_cast<int>(members_.size()); }
+  const ScheduleMilp& member(int k) const { return *members_.at(k); }
+  /// First fleet column of member k's block (its columns are contiguous).
+  int column_offset(int k) const { return offsets_.at(k); }
+
+  /// Member k's columns of a fleet solution. @throws std::invalid_argument on size.
+  Eigen::VectorXd MemberColumns(const Eigen::VectorXd& x, int k) const;
+  /// One schedule per member. @throws std::invalid_argument on size.
+  std::vector<Schedule> Decode(const Eigen::VectorXd& x) const;
+  /// Member objectives J_k of a fleet solution (model units).
+  std::vector<double> Consumptions(const Eigen::VectorXd& x) const;
+  /// Slot of each assigned member (order of assignment.members); empty without one.
+  std::vector<int> Slots(const Eigen::VectorXd& x) const;
+
+ private:
+  void Compose();
+  void AddObjectiveAndBalance();
+  void AddCouplings();
+  void AddKeepOut();
+  void AddAssignment();
+  milp::LinearExpr ConsumptionOf(int k) const;
+  milp::Variable StateColumn(int k, int node, int component) const;
+
+  FleetProblem fleet_;
+  BuildOptions options_;
+  std::vector<std::unique_ptr<ScheduleMilp>> members_;
+  std::vector<int> offsets_;
+  milp::Model model_;
+  milp::LpData lp_;
+  FleetBuildStats stats_;
+  std::vector<std::vector<milp::Variable>> slot_binaries_;  // [member i][slot s]
+};
+
+/// Minimum distance of one pair over a set of times.
+struct PairDistance {
+  int a = 0, b = 1;                                                     // member indices, a < b
+  double min_distance_m = std::numeric_limits<double>::infinity();      // Euclidean
+  double min_box_distance_m = std::numeric_limits<double>::infinity();  // max-norm (the cube's)
+  double time_s = std::numeric_limits<double>::quiet_NaN();             // of the Euclidean minimum
+};
+
+struct FleetSolveOptions {
+  BuildOptions build;
+  milp::SolveOptions milp;
+  bool check = true;  // CheckSchedule per member and the fleet re-checks below
+  CheckOptions checker;
+};
+
+struct FleetResult {
+  milp::SolveStatus status = milp::SolveStatus::kError;
+  std::string detail;
+  double objective = std::numeric_limits<double>::quiet_NaN();
+  double best_bound = std::numeric_limits<double>::quiet_NaN();
+  double gap = std::numeric_limits<double>::quiet_NaN();
+  double solve_seconds = 0.0;
+  FleetBuildStats stats;
+  std::vector<Schedule> schedules;  // per member
+  std::vector<double> consumption;  // J_k per member
+  std::vector<CheckReport> checks;  // per member (if options.check)
+  std::vector<int> slots;           // assignment: slot per assigned member
+  /// On the MILP's check grid, from the decoded (discrete) states.
+  std::vector<PairDistance> planned_pairs;
+  /// On the checker's fine sample grid (linear re-propagation of each member).
+  std::vector<PairDistance> checked_pairs;
+  /// Largest |residual| per coupling (couplings, then the assignment if any),
+  /// from the checker's re-propagated final states (or the decoded ones
+  /// without the check), in the map's units (beyond the tolerance: > 0).
+  std::vector<double> coupling_residuals;
+  bool has_schedule() const {
+    return status == milp::SolveStatus::kOptimal || status == milp::SolveStatus::kFeasible;
+  }
+};
+
+/// Builds, solves, decodes and (by default) checks the fleet.
+/// @throws as FleetMilp's constructor.
+FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
+                       const FleetSolveOptions& options = {});
+
+/// Position (metres) of a member's state under fleet.position_map.
+Eigen::Vector3d FleetPosition(const FleetProblem& fleet, const Eigen::VectorXd& state);
+
+}  // namespace thrustsched::transcription
+
+#endif  // THRUSTSCHED_TRANSCRIPTION_FLEET_H_

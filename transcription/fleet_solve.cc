@@ -1,0 +1,152 @@
+// SolveFleet: build, solve, decode, and re-check a fleet (transcription/fleet.h).
+#include <algorithm>
+#include <cmath>
+
+#include "transcription/fleet.h"
+#include "transcription/internal/fleet_reach.h"
+
+namespace thrustsched::transcription {
+namespace {
+
+// Positions (metres) of every member at `times`, as the MILP writes them:
+// the affine map of its columns (internal::MemberReach), evaluated at x.
+std::vector<std::vector<Eigen::Vector3d>> PlannedPositions(const FleetMilp& fleet,
+                                                           const std::vector<double>& times,
+                                                           const BuildOptions& options,
+                                                           const Eigen::VectorXd& x) {
+  std::vector<std::vector<Eigen::Vector3d>> out;
+  for (int k = 0; k < fleet.num_members(); ++k) {
+    const internal::MemberReach reach(fleet.member(k), fleet.fleet().position_map, times, options);
+    out.emplace_back();
+    for (size_t q = 0; q < times.size(); ++q) {
+      Eigen::Vector3d r;
+      for (int i = 0; i < 3; ++i) {
+        double terms = 0.0;
+        const double drift = reach.AddPositionTerms(static_cast<int>(q), Eigen::Vector3d::Unit(i),
+                                                    1.0, fleet.column_offset(k),
+                                                    [&](int c, double v) { terms += v * x[c]; });
+        r[i] = terms + drift;
+      }
+      out.back().push_back(r);
+    }
+  }
+  return out;
+}
+
+void Closest(const Eigen::Vector3d& ra, const Eigen::Vector3d& rb, double t, PairDistance* d) {
+  const Eigen::Vector3d rel = ra - rb;
+  d->min_box_distance_m = std::min(d->min_box_distance_m, rel.cwiseAbs().maxCoeff());
+  if (rel.norm() < d->min_distance_m) d->min_distance_m = rel.norm(), d->time_s = t;
+}
+
+std::vector<PairDistance> PairsOf(const std::vector<std::vector<Eigen::Vector3d>>& r,
+                                  const std::vector<double>& times) {
+  std::vector<PairDistance> out;
+  for (size_t a = 0; a < r.size(); ++a) {
+    for (size_t b = a + 1; b < r.size(); ++b) {
+      PairDistance d;
+      d.a = static_cast<int>(a), d.b = static_cast<int>(b);
+      for (size_t q = 0; q < times.size(); ++q) Closest(r[a][q], r[b][q], times[q], &d);
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+// Pairs on the checker's sample times: the members share the grid, so the
+// samples coincide; times one member lacks (a burn edge) are skipped.
+std::vector<PairDistance> CheckedPairs(const FleetProblem& fleet,
+                                       const std::vector<CheckReport>& checks) {
+  std::vector<PairDistance> out;
+  for (size_t a = 0; a < checks.size(); ++a) {
+    for (size_t b = a + 1; b < checks.size(); ++b) {
+      PairDistance d;
+      d.a = static_cast<int>(a), d.b = static_cast<int>(b);
+      const auto& ta = checks[a].sample_times;
+      const auto& tb = checks[b].sample_times;
+      size_t i = 0, j = 0;
+      while (i < ta.size() && j < tb.size()) {
+        if (std::abs(ta[i] - tb[j]) <= 1e-6) {
+          Closest(FleetPosition(fleet, checks[a].sample_states[i]),
+                  FleetPosition(fleet, checks[b].sample_states[j]), ta[i], &d);
+          ++i, ++j;
+        } else if (ta[i] < tb[j]) {
+          ++i;
+        } else {
+          ++j;
+        }
+      }
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+double Residual(const Eigen::MatrixXd& map, const Eigen::VectorXd& x, const Eigen::VectorXd* ref,
+                const Eigen::VectorXd& target, const Eigen::VectorXd& tolerance) {
+  Eigen::VectorXd v = map * x - target;
+  if (ref != nullptr) v -= map * *ref;
+  double worst = 0.0;
+  for (int r = 0; r < v.size(); ++r) {
+    const double tol = tolerance.size() == 0 ? 0.0 : tolerance[r];
+    worst = std::max(worst, std::abs(v[r]) - tol);
+  }
+  return std::max(worst, 0.0);
+}
+
+std::vector<double> CouplingResiduals(const FleetProblem& fleet, const std::vector<int>& slots,
+                                      const std::vector<Eigen::VectorXd>& final_states) {
+  std::vector<double> out;
+  for (const TerminalCoupling& c : fleet.couplings) {
+    const Eigen::VectorXd* ref = c.reference >= 0 ? &final_states[c.reference] : nullptr;
+    out.push_back(Residual(c.map, final_states[c.member], ref, c.offset, c.tolerance));
+  }
+  if (fleet.assignment) {
+    const SlotAssignment& a = *fleet.assignment;
+    const Eigen::VectorXd* ref = a.reference >= 0 ? &final_states[a.reference] : nullptr;
+    double worst = 0.0;
+    for (size_t i = 0; i < a.members.size(); ++i) {
+      worst = std::max(worst, Residual(a.map, final_states[a.members[i]], ref, a.slots[slots[i]],
+                                       Eigen::VectorXd()));
+    }
+    out.push_back(worst);
+  }
+  return out;
+}
+
+}  // namespace
+
+FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
+                       const FleetSolveOptions& options) {
+  const FleetMilp milp(fleet, options.build);
+  FleetResult r;
+  r.stats = milp.stats();
+  const milp::SolveResult s = solver.Solve(milp.lp(), options.milp);
+  r.status = s.status;
+  r.detail = s.detail;
+  r.objective = s.objective;
+  r.best_bound = s.best_bound;
+  r.gap = s.gap;
+  r.solve_seconds = s.wall_seconds;
+  if (!s.has_solution()) return r;
+  r.schedules = milp.Decode(s.x);
+  r.consumption = milp.Consumptions(s.x);
+  r.slots = milp.Slots(s.x);
+  std::vector<double> times =
+      fleet.keep_out ? fleet.keep_out->check_times_s : fleet.members[0].problem.grid;
+  r.planned_pairs = PairsOf(PlannedPositions(milp, times, options.build, s.x), times);
+  std::vector<Eigen::VectorXd> final_states;
+  for (const Schedule& sc : r.schedules) final_states.push_back(sc.states.back());
+  if (options.check) {
+    for (int k = 0; k < milp.num_members(); ++k) {
+      r.checks.push_back(
+          CheckSchedule(fleet.members[k].problem, r.schedules[k].burns, options.checker));
+      final_states[k] = r.checks.back().final_state;
+    }
+    r.checked_pairs = CheckedPairs(fleet, r.checks);
+  }
+  r.coupling_residuals = CouplingResiduals(fleet, r.slots, final_states);
+  return r;
+}
+
+}  // namespace thrustsched::transcription
