@@ -146,6 +146,77 @@ struct OnOffWindows {
   }
 };
 
+// Watches the feedback's integration step by step: the Lyapunov function's
+// largest increase, the on-off windows, the stop rules (target, saturation,
+// interrupt, propellant) and the trajectory samples. operator() returns
+// false to stop.
+class FeedbackObserver {
+ public:
+  FeedbackObserver(const MinTimeProblem& p, const FeedbackOptions& o, const ScaledUnits& u,
+                   OnOffWindows* windows, FeedbackResult* r)
+      : p_(p), o_(o), u_(u), windows_(windows), r_(r) {}
+
+  bool operator()(double t, const FeedbackState& s) {
+    const Vector6 x = internal::ElementsOf(s);
+    const double v = LyapunovValue(x, p_.target, o_.weights, u_);
+    if (std::isfinite(last_v_)) {
+      r_->max_lyapunov_increase = std::max(r_->max_lyapunov_increase, v - last_v_);
+    }
+    last_v_ = v;
+    double eff = 0;
+    const Eigen::Vector3d c = FeedbackControl(x, p_.target, o_, u_, &eff);
+    windows_->Observe(eff,
+                      static_cast<long>(std::floor((x(5) - p_.initial.l_rad) / (2 * common::kPi))));
+    const bool at_target = v <= o_.v_stop;
+    const bool done = at_target || (o_.stop_at_saturation && eff <= o_.delta);
+    if (done) r_->stop_reason = at_target ? "target" : "saturation";
+    if (o_.interrupt != nullptr && o_.interrupt->load()) {
+      r_->reached = false;
+      r_->stop_reason = "interrupted";
+      return false;
+    }
+    if (s[6] <= 1e-3 * p_.mass_kg) {  // out of propellant: stop, not reached
+      r_->reached = false;
+      r_->stop_reason = "propellant";
+      return false;
+    }
+    if (t >= next_sample_h_ || done) {
+      const bool off = o_.on_off && eff < windows_->threshold;
+      r_->trajectory.push_back({t * u_.time_s, u_.FromScaled(x), s[6], v, off ? 0.0 : c.norm(), eff,
+                                off ? Eigen::Vector3d::Zero() : c});
+      next_sample_h_ = t + o_.sample_step_s / u_.time_s;
+    }
+    r_->reached = at_target;
+    return !done;
+  }
+
+ private:
+  const MinTimeProblem& p_;
+  const FeedbackOptions& o_;
+  const ScaledUnits& u_;
+  OnOffWindows* windows_;
+  FeedbackResult* r_;
+  double last_v_ = HUGE_VAL;
+  double next_sample_h_ = 0;
+};
+
+// The result's final figures from the state y at scaled time t_end, and the
+// trajectory's last sample there.
+void FinishFeedbackResult(const MinTimeProblem& p, const FeedbackOptions& o, const ScaledUnits& u,
+                          const FeedbackState& y, double t_end, FeedbackResult* r) {
+  const Vector6 xf = internal::ElementsOf(y);
+  r->duration_s = t_end * u.time_s;
+  r->final_elements = u.FromScaled(xf);
+  r->final_mass_kg = y[6];
+  r->propellant_kg = p.mass_kg - y[6];
+  r->final_lyapunov = LyapunovValue(xf, p.target, o.weights, u);
+  r->revolutions = (xf(5) - p.initial.l_rad) / (2 * common::kPi);
+  if (r->trajectory.empty() || r->trajectory.back().t_s != r->duration_s) {
+    r->trajectory.push_back({r->duration_s, r->final_elements, y[6], r->final_lyapunov, 0.0, 0.0,
+                             Eigen::Vector3d::Zero()});
+  }
+}
+
 }  // namespace
 
 FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
@@ -157,7 +228,6 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
   const double thrust = u.Thrust(p.thrust_n);
   const double flow =
       thrust / u.Speed(common::kStandardGravity_m_s2 * p.isp_s);  // kg/h at full thrust
-  const double l0 = p.initial.l_rad;
   OnOffWindows windows;
   windows.p = o.on_off_p;
   auto control = [&](const Vector6& x, double* eff) {
@@ -175,44 +245,7 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
   };
   FeedbackState y = internal::ElementsMassStateOf(u.ToScaled(p.initial), p.mass_kg);
   FeedbackResult r;
-  double last_v = HUGE_VAL, next_sample_h = 0;
-  auto observe = [&](double t, const FeedbackState& s) {
-    const Vector6 x = internal::ElementsOf(s);
-    const double v = LyapunovValue(x, p.target, o.weights, u);
-    if (std::isfinite(last_v))
-      r.max_lyapunov_increase = std::max(r.max_lyapunov_increase, v - last_v);
-    last_v = v;
-    double eff = 0;
-    const Eigen::Vector3d c = FeedbackControl(x, p.target, o, u, &eff);
-    windows.Observe(eff, static_cast<long>(std::floor((x(5) - l0) / (2 * common::kPi))));
-    const bool at_target = v <= o.v_stop;
-    const bool done = at_target || (o.stop_at_saturation && eff <= o.delta);
-    if (done) r.stop_reason = at_target ? "target" : "saturation";
-    if (o.interrupt != nullptr && o.interrupt->load()) {
-      r.reached = false;
-      r.stop_reason = "interrupted";
-      return false;
-    }
-    if (s[6] <= 1e-3 * p.mass_kg) {  // out of propellant: stop, not reached
-      r.reached = false;
-      r.stop_reason = "propellant";
-      return false;
-    }
-    if (t >= next_sample_h || done) {
-      const bool off = o.on_off && eff < windows.threshold;
-      FeedbackSample fs{t * u.time_s,
-                        u.FromScaled(x),
-                        s[6],
-                        v,
-                        off ? 0.0 : c.norm(),
-                        eff,
-                        off ? Eigen::Vector3d::Zero() : c};
-      r.trajectory.push_back(fs);
-      next_sample_h = t + o.sample_step_s / u.time_s;
-    }
-    r.reached = at_target;
-    return !done;
-  };
+  FeedbackObserver observe(p, o, u, &windows, &r);
   double t_end = 0;
   FeedbackState last = y;
   double last_t = 0;
@@ -228,17 +261,7 @@ FeedbackResult RunFeedback(const MinTimeProblem& p, const FeedbackOptions& o) {
     r.reached = false;
     r.stop_reason = e.what();
   }
-  const Vector6 xf = internal::ElementsOf(y);
-  r.duration_s = t_end * u.time_s;
-  r.final_elements = u.FromScaled(xf);
-  r.final_mass_kg = y[6];
-  r.propellant_kg = p.mass_kg - y[6];
-  r.final_lyapunov = LyapunovValue(xf, p.target, o.weights, u);
-  r.revolutions = (xf(5) - l0) / (2 * common::kPi);
-  if (r.trajectory.empty() || r.trajectory.back().t_s != r.duration_s) {
-    r.trajectory.push_back({r.duration_s, r.final_elements, y[6], r.final_lyapunov, 0.0, 0.0,
-                            Eigen::Vector3d::Zero()});
-  }
+  FinishFeedbackResult(p, o, u, y, t_end, &r);
   return r;
 }
 
