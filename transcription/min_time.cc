@@ -335,7 +335,7 @@ MinTimeResult SolveMinTime(const ScheduleProblem& problem, const MinTimeSpec& sp
   }
   // The fuel MILP may arrive earlier than a first MILP stopped by a limit.
   r.arrival_node = ArrivalNode(found.arrival, x);
-  r.arrival_time_s = problem.grid[found.node] - problem.grid.front();
+  r.arrival_time_s = problem.grid[r.arrival_node] - problem.grid.front();
   r.schedule = milp.Decode(x);
   r.check = CheckSchedule(problem, r.schedule.burns, options.check);
   r.arrival_error = ArrivalError(problem, spec, r.check, r.arrival_node);

@@ -89,7 +89,7 @@ struct MinTimeResult {
   int candidate_nodes = 0;
   int indicator_rows = 0;
   double big_m_max = 0.0;
-  BuildStats stats;
+  BuildStats stats;  // of the schedule MILP, before the arrival columns and rows
   std::vector<std::string> infeasibility_reasons;
 
   bool has_schedule() const { return arrival_node >= 0; }
