@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "app/conjunction_report.h"
+#include "app/min_time_report.h"
 #include "app/format_units.h"
 #include "app/html_report.h"
 #include "app/interrupt.h"
@@ -242,9 +243,17 @@ struct SolveRun {
   transcription::ScheduleResult result;
   std::optional<transcription::ConjunctionSolve> rounds;  // budget rounds of a conjunction
   std::optional<transcription::ConjunctionCheckReport> conjunction;  // the plan's verification
+  std::optional<transcription::MinTimeResult> min_time;  // "objective": "min_time"
   std::string nonlinear_error;  // the nonlinear replay failed (the linear check kept)
   bool interrupted = false;
 };
+
+// The model `export-mps` and `--export-*` write: the schedule MILP, or the
+// first MILP of a minimum-time scenario (arrival time as its objective).
+milp::LpData ScenarioExportLp(const Scenario& s, const transcription::ScheduleMilp& milp) {
+  if (s.min_time) return transcription::MinTimeArrivalLp(s.problem, *s.min_time, s.build);
+  return transcription::ExportLp(milp);
+}
 
 // The built model's size and notes on stderr, and the --export-* files.
 void ReportBuild(const SolveArgs& a, const Scenario& s, const transcription::ScheduleMilp& milp,
@@ -258,7 +267,7 @@ void ReportBuild(const SolveArgs& a, const Scenario& s, const transcription::Sch
     err << "note: infeasible by construction: " << reason << "\n";
   }
   if (!a.export_mps.empty() || !a.export_lp.empty()) {
-    const milp::LpData exported = transcription::ExportLp(milp);
+    const milp::LpData exported = ScenarioExportLp(s, milp);
     if (!a.export_mps.empty()) WriteScenarioModelFile(a.export_mps, exported, s.name, false);
     if (!a.export_lp.empty()) WriteScenarioModelFile(a.export_lp, exported, s.name, false);
   }
@@ -306,7 +315,12 @@ void SolveUnderWatcher(const SolveArgs& a, const Scenario& s,
   const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
   {
     InterruptWatcher watcher;
-    if (s.problem.conjunction) {
+    if (s.min_time) {
+      transcription::SolveScheduleOptions o = opt;
+      o.check = s.check;
+      run->min_time = transcription::SolveMinTime(s.problem, *s.min_time, *solver, o);
+      run->result = MinTimeScheduleResult(*run->min_time, *s.min_time);
+    } else if (s.problem.conjunction) {
       run->rounds = transcription::SolveConjunction(milp, *solver, opt, s.conjunction_solve);
       run->result = run->rounds->result;
     } else {
@@ -398,6 +412,7 @@ void PrintOutcome(std::ostream& out, const Scenario& s, const SolveRun& run) {
   }
   out << "\n";
   if (run.rounds) PrintConjunctionSolve(out, *run.rounds);
+  if (run.min_time) PrintMinTime(out, *run.min_time);
   if (!sr.detail.empty() && !sr.has_solution()) out << "solver says   " << sr.detail << "\n";
   for (const std::string& reason : r.infeasibility_reasons)
     out << "reason        " << reason << "\n";
@@ -484,6 +499,7 @@ int RunSolve(const SolveArgs& a) {
   facts.nonlinear_error = run.nonlinear_error;
   facts.conjunction_solve = run.rounds ? &*run.rounds : nullptr;
   facts.conjunction_check = run.conjunction ? &*run.conjunction : nullptr;
+  facts.min_time = run.min_time ? &*run.min_time : nullptr;
   WriteSummaryAndReport(a, s, folder.path(), SummaryJson(s, milp, run.result, facts), &files, err);
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) err << "note: " << replaced << "\n";
@@ -503,8 +519,20 @@ int RunSolve(const SolveArgs& a) {
 int RunExport(const ExportArgs& a) {
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   const transcription::ScheduleMilp milp(s.problem, s.build);
-  WriteScenarioModelFile(a.file, transcription::ExportLp(milp), s.name, a.obfuscate_names);
-  std::cout << "wrote " << a.file << ": " << MilpLine(milp, s) << "\n"
+  const milp::LpData exported = ScenarioExportLp(s, milp);
+  WriteScenarioModelFile(a.file, exported, s.name, a.obfuscate_names);
+  std::cout << "wrote " << a.file << ": ";
+  if (s.min_time) {
+    std::cout << exported.num_cols() << " columns, " << exported.num_rows()
+              << " rows (the schedule MILP with the arrival indicators arrive_at_<node>)\n"
+              << "objective: arrival time (s from the horizon start), minimisation; the fuel ("
+              << ToString(s.problem.objective.kind)
+              << ") at that arrival is a second MILP, not exported; binaries named "
+                 "on_<thruster index>_<interval> (thrusters: "
+              << JoinNames(s.thruster_names()) << ")\n";
+    return kExitOk;
+  }
+  std::cout << MilpLine(milp, s) << "\n"
             << "objective: " << ToString(s.problem.objective.kind)
             << (s.problem.objective.kind == transcription::ObjectiveKind::kPropellant ? " (kg)"
                                                                                       : " (m/s)")

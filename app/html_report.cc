@@ -434,6 +434,18 @@ void WriteSolveReport(const std::string& dir, const Scenario& s, const nlohmann:
     os << Row("best bound", HtmlEscape(Sig(NumberOr(summary, "best_bound"), 8) + unit));
     os << Row("gap", HtmlEscape(FormatPercent(NumberOr(summary, "gap"))));
   }
+  if (summary.contains("min_time") && summary.at("min_time").is_object()) {
+    const nlohmann::json& m = summary.at("min_time");
+    const std::string arrival =
+        m.contains("arrival_time_s") && m.at("arrival_time_s").is_number()
+            ? Sig(NumberOr(m, "arrival_time_s"), 8) + " s after the start" +
+                  (StringOr(m, "time_status") == "optimal"
+                       ? std::string(", proven earliest")
+                       : ", not before " + Sig(NumberOr(m, "arrival_bound_s"), 8) + " s") +
+                  (m.value("verified", false) ? "; verified" : "; NOT verified")
+            : "none found";
+    os << Row("arrival (minimum time)", HtmlEscape(arrival));
+  }
   if (summary.contains("consumption_l1_m_s") && summary.at("consumption_l1_m_s").is_number()) {
     os << Row("consumption", HtmlEscape(Sig(NumberOr(summary, "consumption_l1_m_s")) +
                                         " m/s (L1, thesis metric)"));

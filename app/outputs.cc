@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "app/conjunction_report.h"
+#include "app/min_time_report.h"
 #include "common/constants.h"
 #include "common/format.h"
 #include "dynamics/geo_simulator.h"
@@ -521,6 +522,7 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
     j["conjunction"] =
         ConjunctionJson(milp.keep_out(), facts.conjunction_solve, facts.conjunction_check);
   }
+  if (s.min_time && facts.min_time != nullptr) j["min_time"] = MinTimeJson(*facts.min_time, *s.min_time);
   return j;
 }
 

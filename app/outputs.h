@@ -23,6 +23,7 @@
 #include "transcription/checker.h"
 #include "transcription/conjunction_check.h"
 #include "transcription/conjunction_solve.h"
+#include "transcription/min_time.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/solve.h"
 
@@ -74,6 +75,9 @@ struct RunFacts {
   /// them) and the plan's verification (null: no schedule).
   const transcription::ConjunctionSolve* conjunction_solve = nullptr;
   const transcription::ConjunctionCheckReport* conjunction_check = nullptr;
+  /// Scenarios with "objective": "min_time": the minimum-time solve (null:
+  /// none ran, e.g. a schedule read back by import-solution).
+  const transcription::MinTimeResult* min_time = nullptr;
 };
 
 /// summary.json content (field list in the README), the one writer of the

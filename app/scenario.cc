@@ -409,24 +409,83 @@ void ParseOperations(JsonObject o, Scenario* s) {
   if (!r.IsValid(&err)) throw ScenarioError(o.path() + ": " + err);
 }
 
+// "min_time" (a string or an object's kind): the earliest arrival in the
+// terminal section's set; the fuel of the second MILP is objective.fuel.
+void ParseMinTimeObjective(JsonObject* o, Scenario* s) {
+  transcription::MinTimeSpec spec;
+  if (o != nullptr) {
+    if (o->Has("fuel")) {
+      s->problem.objective.kind =
+          transcription::ParseObjectiveKind(o->Choice("fuel", {"l1", "delta_v", "propellant"}));
+    }
+    spec.hold = o->OptionalBool("hold").value_or(true);
+    spec.fuel_budget = o->OptionalNumber("fuel_budget", Bound::kPositive).value_or(kInf);
+    spec.minimise_fuel_after = o->OptionalBool("minimise_fuel_after").value_or(true);
+  }
+  s->min_time = spec;
+}
+
 void ParseObjective(JsonObject& top, Scenario* s) {
   if (!top.Has("objective")) return;  // default l1
   const nlohmann::json& v = top.Raw("objective");
-  const std::vector<std::string> kinds = {"l1", "delta_v", "propellant"};
+  const std::vector<std::string> kinds = {"l1", "delta_v", "propellant", "min_time"};
   if (v.is_string()) {
     const std::string k = top.Choice("objective", kinds);
-    s->problem.objective.kind = transcription::ParseObjectiveKind(k);
+    if (k == "min_time") {
+      ParseMinTimeObjective(nullptr, s);
+    } else {
+      s->problem.objective.kind = transcription::ParseObjectiveKind(k);
+    }
     return;
   }
   if (!v.is_object()) {
-    top.Fail("objective",
-             "expected \"l1\", \"delta_v\", \"propellant\" or an object, got " + DescribeJson(v));
+    top.Fail("objective", "expected \"l1\", \"delta_v\", \"propellant\", \"min_time\" or an object, got " +
+                              DescribeJson(v));
   }
   JsonObject o = top.Object("objective");
-  s->problem.objective.kind = transcription::ParseObjectiveKind(o.Choice("kind", kinds));
+  const std::string k = o.Choice("kind", kinds);
+  if (k == "min_time") {
+    ParseMinTimeObjective(&o, s);
+  } else {
+    s->problem.objective.kind = transcription::ParseObjectiveKind(k);
+  }
   s->problem.objective.burn_start_penalty =
       o.OptionalNumber("burn_start_penalty", Bound::kNonNegative).value_or(0.0);
   o.Finish();
+}
+
+// The target of "min_time" is the terminal section's set, which is then
+// not imposed at t_N (with hold, the arrival rows keep it to the end).
+void ResolveMinTimeTarget(JsonObject& top, Scenario* s) {
+  if (!s->min_time) return;
+  if (s->impulsive()) {
+    top.Fail("objective",
+             "\"min_time\" needs \"input_mode\": \"on_off\" (impulses have no duration to "
+             "minimise)");
+  }
+  if (s->problem.conjunction) {
+    top.Fail("objective", "\"min_time\" cannot be combined with a conjunction section");
+  }
+  if (s->build.formulation != transcription::Formulation::kSparse) {
+    top.Fail("objective", "\"min_time\" needs transcription.formulation \"sparse\" (the "
+                          "arrival rows bound the state columns), got \"" +
+                              std::string(transcription::ToString(s->build.formulation)) + "\"");
+  }
+  transcription::TerminalSpec& t = s->problem.terminal;
+  if (t.kind != transcription::TerminalKind::kStateBox &&
+      t.kind != transcription::TerminalKind::kFixedState) {
+    top.Fail("objective", "\"min_time\" needs the target set in a terminal section of type "
+                          "\"state_box\" or \"fixed_state\"" +
+                              std::string(top.Has("terminal") ? ", got another type"
+                                                              : ": there is none"));
+  }
+  s->min_time->target = t.target;
+  s->min_time->tolerance = t.kind == transcription::TerminalKind::kStateBox
+                               ? t.tolerance
+                               : Eigen::VectorXd::Zero(t.target.size());
+  t = transcription::TerminalSpec{};
+  std::string err;
+  if (!s->min_time->IsValid(s->problem, &err)) throw ScenarioError("scenario.objective: " + err);
 }
 
 std::vector<std::string> SchemeNames() {
@@ -696,6 +755,7 @@ Scenario ParseScenario(const nlohmann::json& json, const ScenarioParseOptions& o
   if (top.Has("solver")) ParseSolver(top.Object("solver"), &s);
   if (top.Has("terminal")) ParseTerminal(top.Object("terminal"), &s);
   if (top.Has("conjunction")) ParseConjunction(top.Object("conjunction"), &s);
+  ResolveMinTimeTarget(top, &s);
 
   // Checker: GEO schedules are also replayed through the nonlinear model by default.
   if (s.model_type == ModelType::kGeo) {
@@ -763,6 +823,10 @@ void ApplyOverrides(const ScenarioOverrides& ov, Scenario* s) {
   if (ov.formulation) {
     s->build.formulation =
         Wrap("--formulation", [&] { return transcription::ParseFormulation(*ov.formulation); });
+    if (s->min_time && s->build.formulation != transcription::Formulation::kSparse) {
+      throw ScenarioError("--formulation: \"min_time\" needs \"sparse\" (the arrival rows "
+                          "bound the state columns), got \"" + *ov.formulation + "\"");
+    }
   }
   if (ov.encoding) {
     s->build.encoding =

@@ -35,6 +35,7 @@
 #include "transcription/checker.h"
 #include "transcription/conjunction_check.h"
 #include "transcription/conjunction_solve.h"
+#include "transcription/min_time.h"
 #include "transcription/problem.h"
 #include "transcription/schedule_milp.h"
 #include "transcription/search/search_options.h"
@@ -108,6 +109,11 @@ struct Scenario {
   /// Solve strategy of the "conjunction" section (budget rounds).
   transcription::ConjunctionSolveOptions conjunction_solve;
 
+  /// objective "min_time" (set iff it is the objective): the earliest grid
+  /// node from which the terminal section's set holds (its target and
+  /// tolerance; the terminal constraint at t_N is then free), with
+  /// problem.objective (objective.fuel) as the second MILP's fuel.
+  std::optional<transcription::MinTimeSpec> min_time;
   /// GEO model options (set iff model_type == kGeo).
   std::optional<dynamics::GeoModelOptions> geo;
   /// GEO: the initial state when it was given as an orbit (OPM file, ECI

@@ -249,17 +249,51 @@ struct ArrivalFound {
   Arrival arrival;  // its indicator columns
 };
 
-// The indicator MILP, minimising the arrival time.
-ArrivalFound IndicatorArrival(const MinTimeSpec& spec, const Ranges& ranges,
-                              const milp::Solver& solver, const milp::SolveOptions& options,
-                              common::SolveClock* clock, ScheduleMilp* milp, MinTimeResult* r) {
-  const Arrival arrival = AddArrival(spec, ranges, milp);
+// The schedule MILP with the fuel budget, the arrival indicators and the
+// arrival time as its objective: the first MILP.
+struct ArrivalMilp {
+  ScheduleMilp milp;
+  milp::LinearExpr fuel;  // problem.objective's expression
+  double fuel_offset = 0.0;
+  double fuel_step = 0.0;
+  Ranges ranges;
+  Arrival arrival;
+  int candidate_nodes = 0;
+
+  ArrivalMilp(const ScheduleProblem& problem, const MinTimeSpec& spec, const BuildOptions& options)
+      : milp(problem, SparseOf(options)) {
+    fuel = FuelOf(milp.lp(), milp.model());
+    fuel_offset = milp.lp().objective_offset;
+    fuel_step = milp.objective_step();
+    if (std::isfinite(spec.fuel_budget)) {
+      milp.Modify([&](milp::Model& m) {
+        m.AddConstraint(fuel, -kInf, spec.fuel_budget - fuel_offset, "fuel_budget");
+      });
+    }
+    ranges = ReachableRanges(milp.discrete(), problem.initial_state, MayFire(milp));
+    arrival = AddArrival(spec, ranges, &milp);
+    for (int j = 1; j <= problem.num_intervals(); ++j) {
+      candidate_nodes += Reachable(spec, ranges, j) ? 1 : 0;
+    }
+    milp.Modify([&](milp::Model& model) { model.Minimize(arrival.time_s); });
+  }
+
+  // The box needs the state columns.
+  static BuildOptions SparseOf(BuildOptions options) {
+    options.formulation = Formulation::kSparse;
+    return options;
+  }
+};
+
+// The first MILP's solve: the earliest arrival found, with the arrival
+// columns from that node on fixed to 0 for the fuel MILP.
+ArrivalFound IndicatorArrival(const milp::Solver& solver, const milp::SolveOptions& options,
+                              common::SolveClock* clock, ArrivalMilp* am, MinTimeResult* r) {
+  ScheduleMilp* milp = &am->milp;
+  const Arrival& arrival = am->arrival;
   r->indicator_rows = arrival.indicator_rows;
   r->big_m_max = arrival.big_m_max;
-  for (int j = 1; j <= milp->problem().num_intervals(); ++j) {
-    r->candidate_nodes += Reachable(spec, ranges, j) ? 1 : 0;
-  }
-  milp->Modify([&](milp::Model& model) { model.Minimize(arrival.time_s); });
+  r->candidate_nodes = am->candidate_nodes;
   milp::SolveOptions o = options;
   o.objective_step = ArrivalStep(milp->problem().grid);
   o.time_limit_s = std::max(0.0, clock->Remaining());
@@ -287,32 +321,35 @@ ArrivalFound IndicatorArrival(const MinTimeSpec& spec, const Ranges& ranges,
   return found;
 }
 
+void CheckArguments(const ScheduleProblem& problem, const MinTimeSpec& spec,
+                    const BuildOptions& build, const char* who) {
+  std::string err;
+  if (!problem.IsValid(&err)) throw std::invalid_argument(std::string(who) + ": " + err);
+  if (!spec.IsValid(problem, &err)) throw std::invalid_argument(std::string(who) + ": " + err);
+  if (!build.IsValid(&err)) throw std::invalid_argument(std::string(who) + ": build." + err);
+}
+
 }  // namespace
+
+milp::LpData MinTimeArrivalLp(const ScheduleProblem& problem, const MinTimeSpec& spec,
+                              const BuildOptions& options) {
+  CheckArguments(problem, spec, options, "MinTimeArrivalLp");
+  return ArrivalMilp(problem, spec, options).milp.lp();
+}
 
 MinTimeResult SolveMinTime(const ScheduleProblem& problem, const MinTimeSpec& spec,
                            const milp::Solver& solver, const SolveScheduleOptions& options) {
+  CheckArguments(problem, spec, options.build, "SolveMinTime");
   std::string err;
-  if (!problem.IsValid(&err)) throw std::invalid_argument("SolveMinTime: " + err);
-  if (!spec.IsValid(problem, &err)) throw std::invalid_argument("SolveMinTime: " + err);
-  if (!options.build.IsValid(&err)) throw std::invalid_argument("SolveMinTime: build." + err);
   if (!options.milp.IsValid(&err)) throw std::invalid_argument("SolveMinTime: milp: " + err);
   if (!options.check.IsValid(&err)) throw std::invalid_argument("SolveMinTime: check." + err);
   common::SolveClock clock(options.milp.time_limit_s, options.milp.interrupt);
 
-  BuildOptions build = options.build;
-  build.formulation = Formulation::kSparse;  // the box needs the state columns
-  ScheduleMilp milp(problem, build);
-  const milp::LinearExpr fuel = FuelOf(milp.lp(), milp.model());
-  const double fuel_step = milp.objective_step();
-  if (std::isfinite(spec.fuel_budget)) {
-    milp.Modify(
-        [&](milp::Model& m) { m.AddConstraint(fuel, -kInf, spec.fuel_budget, "fuel_budget"); });
-  }
-  const Ranges ranges = ReachableRanges(milp.discrete(), problem.initial_state, MayFire(milp));
+  ArrivalMilp am(problem, spec, options.build);
+  ScheduleMilp& milp = am.milp;
   MinTimeResult r;
   r.infeasibility_reasons = milp.infeasibility_reasons();
-  const ArrivalFound found =
-      IndicatorArrival(spec, ranges, solver, options.milp, &clock, &milp, &r);
+  const ArrivalFound found = IndicatorArrival(solver, options.milp, &clock, &am, &r);
   r.stats = milp.stats();
   r.time_status = found.status;
   if (r.candidate_nodes == 0) {
@@ -325,10 +362,10 @@ MinTimeResult SolveMinTime(const ScheduleProblem& problem, const MinTimeSpec& sp
   if (found.node < 0) return r;
   Eigen::VectorXd x = found.x;
   if (spec.minimise_fuel_after && !clock.ShouldStop()) {
-    milp.Modify([&](milp::Model& model) { model.Minimize(fuel); });
+    milp.Modify([&](milp::Model& model) { model.Minimize(am.fuel + am.fuel_offset); });
     milp::SolveOptions fuel_options = options.milp;
     fuel_options.time_limit_s = std::max(0.0, clock.Remaining());
-    fuel_options.objective_step = fuel_step;
+    fuel_options.objective_step = am.fuel_step;
     fuel_options.initial_solution = x;
     r.fuel_solve = solver.Solve(milp.lp(), fuel_options);
     if (r.fuel_solve->has_solution()) x = r.fuel_solve->x;
@@ -336,6 +373,7 @@ MinTimeResult SolveMinTime(const ScheduleProblem& problem, const MinTimeSpec& sp
   // The fuel MILP may arrive earlier than a first MILP stopped by a limit.
   r.arrival_node = ArrivalNode(found.arrival, x);
   r.arrival_time_s = problem.grid[r.arrival_node] - problem.grid.front();
+  r.fuel = am.fuel.Evaluate(x) + am.fuel_offset;
   r.schedule = milp.Decode(x);
   r.check = CheckSchedule(problem, r.schedule.burns, options.check);
   r.arrival_error = ArrivalError(problem, spec, r.check, r.arrival_node);

@@ -79,6 +79,9 @@ struct MinTimeResult {
   /// Proven lower bound on the arrival (s since grid.front()): equal to
   /// arrival_time_s when stage 1 was proven optimal.
   double arrival_bound_s = std::numeric_limits<double>::quiet_NaN();
+  /// problem.objective's value (its units: m/s or kg) at the schedule
+  /// returned, whichever MILP found it (NaN without a schedule).
+  double fuel = std::numeric_limits<double>::quiet_NaN();
   Schedule schedule;  // of stage 2 if it found one, else stage 1's
   CheckReport check;
   /// Re-propagated state's largest scaled excess over the tolerance at the
@@ -105,6 +108,14 @@ struct MinTimeResult {
 ///         the options are invalid (messages name the field).
 MinTimeResult SolveMinTime(const ScheduleProblem& problem, const MinTimeSpec& spec,
                            const milp::Solver& solver, const SolveScheduleOptions& options = {});
+
+/// The first MILP (arrival time in seconds as its objective), as
+/// SolveMinTime builds it, for export (MPS, LP): the schedule MILP of
+/// `problem` in the sparse formulation, the fuel budget row, the arrival
+/// columns a_j (`arrive_at_<j>`), g_j (`arrived_by_<j>`) and their rows.
+/// @throws std::invalid_argument as SolveMinTime.
+milp::LpData MinTimeArrivalLp(const ScheduleProblem& problem, const MinTimeSpec& spec,
+                              const BuildOptions& options = {});
 
 }  // namespace thrustsched::transcription
 

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/conjunction_report.h"
+#include "app/min_time_report.h"
 #include "app/outputs.h"
 #include "common/format.h"
 #include "common/timing.h"
@@ -229,8 +230,14 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
     };
     const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
     std::optional<transcription::ConjunctionSolve> rounds;
+    std::optional<transcription::MinTimeResult> min_time;
     transcription::ScheduleResult& r = out->result;
-    if (request.conjunction && ctx.problem->conjunction) {
+    if (ctx.scenario && ctx.scenario->min_time) {
+      transcription::SolveScheduleOptions o = opt;
+      o.check = ctx.scenario->check;
+      min_time = transcription::SolveMinTime(*ctx.problem, *ctx.scenario->min_time, *solver, o);
+      r = app::MinTimeScheduleResult(*min_time, *ctx.scenario->min_time);
+    } else if (request.conjunction && ctx.problem->conjunction) {
       rounds = transcription::SolveConjunction(*milp, *solver, opt, *request.conjunction);
       r = rounds->result;
     } else {
@@ -260,6 +267,7 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
       facts.nonlinear_error = out->checked->nonlinear_error;
       facts.conjunction_solve = rounds ? &*rounds : nullptr;
       facts.conjunction_check = out->checked->conjunction ? &*out->checked->conjunction : nullptr;
+      facts.min_time = min_time ? &*min_time : nullptr;
       summary = app::SummaryJson(*ctx.scenario, *milp, r, facts);
       if (summary["check"].is_object()) summary["check"]["kind"] = "continuous";
     } else {

@@ -113,7 +113,9 @@ class SolveResult(_ScheduleView):
     ``check`` (the checker's verdict, a :class:`Report`, None when there is no
     schedule), ``schedule`` and ``trajectory`` (DataFrames), ``summary``
     (summary.json's content), ``interrupted`` (Ctrl-C stopped the solve: the
-    best schedule found is kept, status "feasible").
+    best schedule found is kept, status "feasible"), ``min_time`` (scenarios
+    with ``"objective": "min_time"``: summary.json's "min_time" object, with
+    ``arrival_time_s`` and ``arrival_bound_s``; None otherwise).
     """
 
     def __init__(self, outcome: "_core.SolveOutcome", info=None, problem=None):
@@ -139,6 +141,11 @@ class SolveResult(_ScheduleView):
     def check(self) -> Optional[Report]:
         c = self.summary.get("check")
         return Report(c) if isinstance(c, dict) else None
+
+    @property
+    def min_time(self) -> Optional[Dict[str, Any]]:
+        m = self.summary.get("min_time")
+        return m if isinstance(m, dict) else None
 
     @property
     def consumption_l1_m_s(self) -> float:

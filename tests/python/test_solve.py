@@ -131,3 +131,22 @@ def test_plot_returns_the_three_figures():
     assert np.allclose(bars[0].get_paths()[0].vertices[:, 0].min(), res.schedule["start_s"].iloc[0] / 3600)
     for f in figs.values():
         plt.close(f)
+
+
+def test_min_time_objective_matches_the_closed_form_and_the_cli(tmp_path):
+    # Rest to rest over 1 m with |u| = 4 m/s^2: T* = 2 sqrt(1 / 4) = 1 s, fuel U T* = 4 m/s.
+    path = SCENARIOS / "min_time_double_integrator.json"
+    res = ts.solve(ts.Scenario.load(path))
+    assert res.status == "optimal"
+    m = res.min_time
+    assert m is not None
+    assert m["arrival_time_s"] == pytest.approx(1.0, abs=1e-9)
+    assert m["arrival_bound_s"] == pytest.approx(1.0, abs=1e-9)
+    assert m["verified"] is True
+    assert res.objective == pytest.approx(4.0, abs=1e-6)
+    cli = run_cli("solve", path, "--out", tmp_path / "cli", "--no-plots", "--no-report")
+    assert cli.returncode == 0, cli.stderr
+    summary = read_json(tmp_path / "cli" / "summary.json")
+    assert summary["min_time"]["arrival_time_s"] == m["arrival_time_s"]
+    assert summary["objective"] == res.objective
+    assert ts.solve(ts.Scenario.load(SCENARIOS / "hcw_table41_1d.json")).min_time is None

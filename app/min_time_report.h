@@ -1,0 +1,42 @@
+// Scenarios with `"objective": "min_time"`: the minimum-time solve's result
+// as the schedule result every output writer takes, its "min_time" object of
+// summary.json and its human line; shared by `solve` and the Python package.
+//
+//   transcription::MinTimeResult mt =
+//       transcription::SolveMinTime(s.problem, *s.min_time, *solver, options);
+//   transcription::ScheduleResult r = app::MinTimeScheduleResult(mt, *s.min_time);
+//   app::PrintMinTime(std::cout, mt);                      // "arrival ..." line
+//   summary["min_time"] = app::MinTimeJson(mt, *s.min_time);
+//
+// The schedule result's status is the weaker of the two MILPs' claims: the
+// first MILP's (arrival time) unless it proved the earliest arrival, then the
+// fuel MILP's (optimal only if it proved the least fuel at that arrival;
+// feasible if a limit stopped it or it did not run, optimal when the
+// scenario asked for no fuel MILP). Its objective is the fuel
+// (MinTimeResult::fuel) and its bound and gap the fuel MILP's; `checked` is
+// false (the caller checks with its own fallback and timing).
+#ifndef THRUSTSCHED_APP_MIN_TIME_REPORT_H_
+#define THRUSTSCHED_APP_MIN_TIME_REPORT_H_
+
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "transcription/min_time.h"
+#include "transcription/solve.h"
+
+namespace thrustsched::app {
+
+transcription::ScheduleResult MinTimeScheduleResult(const transcription::MinTimeResult& result,
+                                                    const transcription::MinTimeSpec& spec);
+
+/// summary.json's "min_time" (fields in data/scenarios/README.md, section 5).
+nlohmann::json MinTimeJson(const transcription::MinTimeResult& result,
+                           const transcription::MinTimeSpec& spec);
+
+/// "arrival       t = ... s (node j), proven earliest | bound ... s; ..." on one line.
+void PrintMinTime(std::ostream& os, const transcription::MinTimeResult& result);
+
+}  // namespace thrustsched::app
+
+#endif  // THRUSTSCHED_APP_MIN_TIME_REPORT_H_
