@@ -108,7 +108,8 @@ void AddSolveCommand(CLI::App* cli, Subcommands* c) {
   c->c_solve = cli->add_subcommand(
       "solve",
       "Build, solve, check and write results (summary.json, schedule.csv, trajectory.csv, SVG "
-      "plots). Command-line options override the scenario.");
+      "plots). Command-line options override the scenario. A file with a \"fleet\" section "
+      "plans its members in one MILP (fleet.csv, schedule_<member>.csv).");
   c->c_solve->add_option("scenario", c->solve.scenario, "scenario file (JSON)")->required();
   c->c_solve->add_option("--out", c->solve.out_dir,
                          "output directory (default out/<scenario file stem>)");

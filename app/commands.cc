@@ -16,10 +16,12 @@
 #include <sstream>
 
 #include "app/conjunction_report.h"
-#include "app/min_time_report.h"
+#include "app/fleet_command.h"
+#include "app/fleet_scenario.h"
 #include "app/format_units.h"
 #include "app/html_report.h"
 #include "app/interrupt.h"
+#include "app/min_time_report.h"
 #include "app/outputs.h"
 #include "app/plots.h"
 #include "app/run_folder.h"
@@ -243,7 +245,7 @@ struct SolveRun {
   transcription::ScheduleResult result;
   std::optional<transcription::ConjunctionSolve> rounds;  // budget rounds of a conjunction
   std::optional<transcription::ConjunctionCheckReport> conjunction;  // the plan's verification
-  std::optional<transcription::MinTimeResult> min_time;  // "objective": "min_time"
+  std::optional<transcription::MinTimeResult> min_time;              // "objective": "min_time"
   std::string nonlinear_error;  // the nonlinear replay failed (the linear check kept)
   bool interrupted = false;
 };
@@ -453,7 +455,8 @@ void PrintTimesAndCheck(std::ostream& out, const Scenario& s, const SolveRun& ru
   if (run.conjunction) PrintConjunctionCheck(out, *run.conjunction);
 }
 
-// The exit code of a solve that ended with `status` (commands.h).
+}  // namespace
+
 int SolveExitCode(milp::SolveStatus status) {
   switch (status) {
     case milp::SolveStatus::kOptimal:
@@ -470,9 +473,8 @@ int SolveExitCode(milp::SolveStatus status) {
   return kExitInternal;
 }
 
-}  // namespace
-
 int RunSolve(const SolveArgs& a) {
+  if (IsFleetFile(a.scenario)) return RunFleetSolve(a);
   const Clock::time_point t_start = Clock::now();
   Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   if (!a.export_mps.empty()) ModelFileExtension(a.export_mps, "--export-mps");
@@ -517,6 +519,7 @@ int RunSolve(const SolveArgs& a) {
 }
 
 int RunExport(const ExportArgs& a) {
+  if (IsFleetFile(a.scenario)) return RunFleetExport(a);
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   const transcription::ScheduleMilp milp(s.problem, s.build);
   const milp::LpData exported = ScenarioExportLp(s, milp);
@@ -667,6 +670,17 @@ int RunImportSolution(const ImportArgs& a) {
 }
 
 int RunValidate(const ValidateArgs& a) {
+  if (IsFleetFile(a.scenario)) {
+    FleetScenario f = LoadFleetScenario(a.scenario);
+    ApplyFleetOverrides(a.overrides, &f);
+    std::cout << "fleet         " << f.name << ": valid, " << f.members.size() << " members\n";
+    if (a.build) {
+      const transcription::FleetMilp milp(f.problem, f.options.build);
+      std::cout << "MILP          " << milp.stats().num_binaries << " binaries, "
+                << milp.stats().num_columns << " columns, " << milp.stats().num_rows << " rows\n";
+    }
+    return kExitOk;
+  }
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   std::cout << "scenario      " << s.name << ": valid\n"
             << "model         " << ModelLine(s) << "\n";

@@ -41,7 +41,11 @@ struct SolveArgs {
   FlightDynamicsFiles ccsds;  // --oem, --opm-maneuvers (GEO)
   RunHooks hooks;             // observers (tests, embedding programs): app/run_hooks.h
 };
+/// A file with a "fleet" section is solved as a fleet (app/fleet_command.h).
 int RunSolve(const SolveArgs& args);
+/// The exit code of a solve that ended with `status`: 0 optimal or
+/// feasible, 3 infeasible, 4 no solution found, 1 unbounded or error.
+int SolveExitCode(milp::SolveStatus status);
 
 struct ExportArgs {
   std::string scenario;

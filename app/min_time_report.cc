@@ -61,8 +61,8 @@ nlohmann::json MinTimeJson(const transcription::MinTimeResult& r,
   j["arrival_node"] = r.has_schedule() ? nlohmann::json(r.arrival_node) : nlohmann::json(nullptr);
   j["arrival_bound_s"] = FiniteOrNull(r.arrival_bound_s);
   j["time_status"] = StatusName(r.time_status);
-  j["fuel_status"] = r.fuel_solve ? nlohmann::json(StatusName(r.fuel_solve->status))
-                                  : nlohmann::json(nullptr);
+  j["fuel_status"] =
+      r.fuel_solve ? nlohmann::json(StatusName(r.fuel_solve->status)) : nlohmann::json(nullptr);
   j["fuel"] = FiniteOrNull(r.fuel);
   j["arrival_error"] = FiniteOrNull(r.arrival_error);
   j["verified"] = r.verified();

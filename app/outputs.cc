@@ -359,6 +359,18 @@ nlohmann::json ImpulsiveCheckJson(const Scenario& s, const transcription::Impuls
   return j;
 }
 
+nlohmann::json BurnsJson(const std::vector<transcription::Burn>& burns,
+                         const std::vector<std::string>& thruster_names) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const transcription::Burn& b : burns) {
+    out.push_back({{"thruster", thruster_names.at(b.thruster)},
+                   {"start_s", b.start_s},
+                   {"duration_s", b.duration_s()},
+                   {"end_s", b.end_s}});
+  }
+  return out;
+}
+
 nlohmann::json SolveResultJson(const transcription::ScheduleResult& r,
                                const std::vector<std::string>& names,
                                transcription::ObjectiveKind objective_kind, bool interrupted,
@@ -379,15 +391,8 @@ nlohmann::json SolveResultJson(const transcription::ScheduleResult& r,
   j["consumption_l1_m_s"] = has ? FiniteOrNull(sch.consumption_l1_m_s) : nullptr;
   j["delta_v_m_s"] = has ? FiniteOrNull(sch.delta_v_m_s) : nullptr;
   j["propellant_kg"] = has ? FiniteOrNull(sch.propellant_kg) : nullptr;
-  nlohmann::json burns = nlohmann::json::array();
-  for (const transcription::Burn& b : sch.burns) {
-    burns.push_back({{"thruster", names[b.thruster]},
-                     {"start_s", b.start_s},
-                     {"duration_s", b.duration_s()},
-                     {"end_s", b.end_s}});
-  }
   j["n_burns"] = sch.burns.size();
-  j["burns"] = burns;
+  j["burns"] = BurnsJson(sch.burns, names);
   j["n_binaries"] = r.stats.num_binaries;
   j["n_columns"] = r.stats.num_columns;
   j["n_rows"] = r.stats.num_rows;
@@ -522,7 +527,8 @@ nlohmann::json SummaryJson(const Scenario& s, const transcription::ScheduleMilp&
     j["conjunction"] =
         ConjunctionJson(milp.keep_out(), facts.conjunction_solve, facts.conjunction_check);
   }
-  if (s.min_time && facts.min_time != nullptr) j["min_time"] = MinTimeJson(*facts.min_time, *s.min_time);
+  if (s.min_time && facts.min_time != nullptr)
+    j["min_time"] = MinTimeJson(*facts.min_time, *s.min_time);
   return j;
 }
 

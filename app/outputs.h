@@ -87,6 +87,10 @@ struct RunFacts {
 nlohmann::json SummaryJson(const Scenario& scenario, const transcription::ScheduleMilp& milp,
                            const transcription::ScheduleResult& result, const RunFacts& facts);
 
+/// summary.json's "burns": {thruster (name), start_s, duration_s, end_s} per burn.
+nlohmann::json BurnsJson(const std::vector<transcription::Burn>& burns,
+                         const std::vector<std::string>& thruster_names);
+
 /// The fields of summary.json that need no scenario (status, objective,
 /// bound, gap, nodes, consumption, burns, model size, times, incumbents,
 /// infeasibility reasons): SummaryJson's start, and the whole summary of

@@ -439,8 +439,9 @@ void ParseObjective(JsonObject& top, Scenario* s) {
     return;
   }
   if (!v.is_object()) {
-    top.Fail("objective", "expected \"l1\", \"delta_v\", \"propellant\", \"min_time\" or an object, got " +
-                              DescribeJson(v));
+    top.Fail("objective",
+             "expected \"l1\", \"delta_v\", \"propellant\", \"min_time\" or an object, got " +
+                 DescribeJson(v));
   }
   JsonObject o = top.Object("objective");
   const std::string k = o.Choice("kind", kinds);
@@ -467,17 +468,18 @@ void ResolveMinTimeTarget(JsonObject& top, Scenario* s) {
     top.Fail("objective", "\"min_time\" cannot be combined with a conjunction section");
   }
   if (s->build.formulation != transcription::Formulation::kSparse) {
-    top.Fail("objective", "\"min_time\" needs transcription.formulation \"sparse\" (the "
-                          "arrival rows bound the state columns), got \"" +
-                              std::string(transcription::ToString(s->build.formulation)) + "\"");
+    top.Fail("objective",
+             "\"min_time\" needs transcription.formulation \"sparse\" (the "
+             "arrival rows bound the state columns), got \"" +
+                 std::string(transcription::ToString(s->build.formulation)) + "\"");
   }
   transcription::TerminalSpec& t = s->problem.terminal;
   if (t.kind != transcription::TerminalKind::kStateBox &&
       t.kind != transcription::TerminalKind::kFixedState) {
-    top.Fail("objective", "\"min_time\" needs the target set in a terminal section of type "
-                          "\"state_box\" or \"fixed_state\"" +
-                              std::string(top.Has("terminal") ? ", got another type"
-                                                              : ": there is none"));
+    top.Fail("objective",
+             "\"min_time\" needs the target set in a terminal section of type "
+             "\"state_box\" or \"fixed_state\"" +
+                 std::string(top.Has("terminal") ? ", got another type" : ": there is none"));
   }
   s->min_time->target = t.target;
   s->min_time->tolerance = t.kind == transcription::TerminalKind::kStateBox
@@ -824,8 +826,10 @@ void ApplyOverrides(const ScenarioOverrides& ov, Scenario* s) {
     s->build.formulation =
         Wrap("--formulation", [&] { return transcription::ParseFormulation(*ov.formulation); });
     if (s->min_time && s->build.formulation != transcription::Formulation::kSparse) {
-      throw ScenarioError("--formulation: \"min_time\" needs \"sparse\" (the arrival rows "
-                          "bound the state columns), got \"" + *ov.formulation + "\"");
+      throw ScenarioError(
+          "--formulation: \"min_time\" needs \"sparse\" (the arrival rows "
+          "bound the state columns), got \"" +
+          *ov.formulation + "\"");
     }
   }
   if (ov.encoding) {

@@ -1,0 +1,250 @@
+#include "app/fleet_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/fleet_scenario.h"
+#include "app/format_units.h"
+#include "app/interrupt.h"
+#include "app/outputs.h"
+#include "app/run_folder.h"
+#include "common/format.h"
+#include "milp/cbc_solver.h"
+
+namespace thrustsched::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using common::FormatG;
+
+double Since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+nlohmann::json PairJson(const FleetScenario& f, const transcription::PairDistance& p,
+                        const transcription::PairDistance* planned) {
+  nlohmann::json j;
+  j["member_a"] = f.problem.members[p.a].name;
+  j["member_b"] = f.problem.members[p.b].name;
+  j["min_distance_m"] = FiniteOrNull(p.min_distance_m);
+  j["min_box_distance_m"] = FiniteOrNull(p.min_box_distance_m);
+  j["time_s"] = FiniteOrNull(p.time_s);
+  j["planned_min_distance_m"] = planned ? FiniteOrNull(planned->min_distance_m) : nullptr;
+  j["planned_min_box_distance_m"] = planned ? FiniteOrNull(planned->min_box_distance_m) : nullptr;
+  return j;
+}
+
+// The planned distance of the same pair (the MILP's check grid), if any.
+const transcription::PairDistance* PlannedPair(const transcription::FleetResult& r,
+                                               const transcription::PairDistance& p) {
+  for (const transcription::PairDistance& q : r.planned_pairs) {
+    if (q.a == p.a && q.b == p.b) return &q;
+  }
+  return nullptr;
+}
+
+nlohmann::json MemberJson(const FleetScenario& f, const transcription::FleetResult& r, int k) {
+  const Scenario& s = f.members[k];
+  nlohmann::json j;
+  j["name"] = f.problem.members[k].name;
+  j["scenario"] = s.name;
+  j["objective_kind"] = std::string(transcription::ToString(s.problem.objective.kind));
+  if (!r.has_schedule()) return j;
+  const transcription::Schedule& sch = r.schedules[k];
+  j["consumption"] = FiniteOrNull(r.consumption[k]);
+  j["consumption_l1_m_s"] = FiniteOrNull(sch.consumption_l1_m_s);
+  j["delta_v_m_s"] = FiniteOrNull(sch.delta_v_m_s);
+  j["propellant_kg"] = FiniteOrNull(sch.propellant_kg);
+  j["n_burns"] = sch.burns.size();
+  j["burns"] = BurnsJson(sch.burns, s.thruster_names());
+  if (f.problem.assignment) {
+    const auto& m = f.problem.assignment->members;
+    for (size_t i = 0; i < m.size(); ++i) {
+      if (m[i] == k && i < r.slots.size()) j["slot"] = r.slots[i];
+    }
+  }
+  j["check"] = k < static_cast<int>(r.checks.size())
+                   ? CheckJson(s, r.checks[k], Judge(s, r.checks[k]), 0.0)
+                   : nlohmann::json(nullptr);
+  return j;
+}
+
+nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::FleetResult& r,
+                                const SolveArgs& a, double total_seconds, bool interrupted) {
+  nlohmann::json j;
+  j["name"] = f.name;
+  j["scenario_file"] = f.path;
+  j["command_line"] = a.command_line;
+  j["status"] = StatusName(r.status);
+  j["interrupted"] = interrupted;
+  j["objective"] = r.has_schedule() ? FiniteOrNull(r.objective) : nullptr;
+  j["best_bound"] = FiniteOrNull(r.best_bound);
+  j["gap"] = FiniteOrNull(r.gap);
+  j["solver_detail"] = r.detail;
+  j["solve_seconds"] = r.solve_seconds;
+  j["total_seconds"] = total_seconds;
+  j["time_limit_s"] = FiniteOrNull(f.options.milp.time_limit_s);
+  j["relative_gap"] = f.options.milp.relative_gap;
+  j["balance"] = std::string(transcription::ToString(f.problem.balance.kind));
+  const transcription::FleetBuildStats& st = r.stats;
+  j["n_columns"] = st.num_columns;
+  j["n_rows"] = st.num_rows;
+  j["n_binaries"] = st.num_binaries;
+  j["n_nonzeros"] = st.num_nonzeros;
+  j["keep_out"] = f.problem.keep_out
+                      ? nlohmann::json{{"half_size_m", f.problem.keep_out->half_size_m},
+                                       {"checks", st.keep_out_checks},
+                                       {"checks_clear", st.keep_out_checks_clear},
+                                       {"single_face", st.keep_out_single_face},
+                                       {"faces_impossible", st.keep_out_faces_impossible},
+                                       {"binaries", st.keep_out_binaries},
+                                       {"big_m_min_m", FiniteOrNull(st.big_m_min_m)},
+                                       {"big_m_max_m", FiniteOrNull(st.big_m_max_m)}}
+                      : nlohmann::json(nullptr);
+  j["assignment_binaries"] = st.assignment_binaries;
+  j["infeasibility_reasons"] = st.infeasibility_reasons;
+  j["members"] = nlohmann::json::array();
+  for (int k = 0; k < static_cast<int>(f.members.size()); ++k)
+    j["members"].push_back(MemberJson(f, r, k));
+  j["pairs"] = nlohmann::json::array();
+  for (const transcription::PairDistance& p : r.checked_pairs)
+    j["pairs"].push_back(PairJson(f, p, PlannedPair(r, p)));
+  j["coupling_residuals"] = r.coupling_residuals;
+  return j;
+}
+
+std::string FleetCsv(const FleetScenario& f, const transcription::FleetResult& r) {
+  std::ostringstream os;
+  os << "member_a,member_b,min_distance_m,min_box_distance_m,time_s,planned_min_distance_m,"
+        "planned_min_box_distance_m,keep_out_half_size_m\n";
+  const auto num = [](double v) { return std::isfinite(v) ? FormatG(v, 17) : std::string(); };
+  for (const transcription::PairDistance& p : r.checked_pairs) {
+    const transcription::PairDistance* q = PlannedPair(r, p);
+    os << f.problem.members[p.a].name << "," << f.problem.members[p.b].name << ","
+       << num(p.min_distance_m) << "," << num(p.min_box_distance_m) << "," << num(p.time_s) << ","
+       << (q ? num(q->min_distance_m) : "") << "," << (q ? num(q->min_box_distance_m) : "") << ","
+       << (f.problem.keep_out ? num(f.problem.keep_out->half_size_m) : "") << "\n";
+  }
+  return os.str();
+}
+
+void WriteMemberFiles(const FleetScenario& f, const transcription::FleetResult& r,
+                      const std::string& dir, std::vector<std::string>* files) {
+  if (!r.has_schedule()) return;
+  for (size_t k = 0; k < f.members.size(); ++k) {
+    const std::string& name = f.problem.members[k].name;
+    WriteScheduleCsv(dir + "/schedule_" + name + ".csv", f.members[k], r.schedules[k].burns);
+    files->push_back("schedule_" + name + ".csv");
+    if (k < r.checks.size()) {
+      WriteTrajectoryCsv(dir + "/trajectory_" + name + ".csv", f.members[k], r.checks[k],
+                         r.schedules[k].burns);
+      files->push_back("trajectory_" + name + ".csv");
+    }
+  }
+}
+
+void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::FleetResult& r,
+                bool interrupted) {
+  out << "fleet         " << f.name << " (" << f.members.size() << " members, balance "
+      << transcription::ToString(f.problem.balance.kind) << ")\n";
+  out << "MILP          " << r.stats.num_binaries << " binaries, " << r.stats.num_columns
+      << " columns, " << r.stats.num_rows << " rows";
+  if (f.problem.keep_out) {
+    out << "; keep-out " << r.stats.keep_out_checks << " checks (" << r.stats.keep_out_checks_clear
+        << " clear), " << r.stats.keep_out_binaries << " binaries";
+  }
+  out << "\nstatus        " << StatusName(r.status) << (interrupted ? " (interrupted)" : "");
+  if (r.has_schedule()) {
+    out << ", objective " << FormatG(r.objective, 8) << ", best bound " << FormatG(r.best_bound, 8)
+        << ", gap " << FormatPercent(r.gap);
+  }
+  out << "\n";
+  for (const std::string& reason : r.stats.infeasibility_reasons)
+    out << "reason        " << reason << "\n";
+  if (!r.has_schedule()) return;
+  for (size_t k = 0; k < f.members.size(); ++k) {
+    const bool passed = k < r.checks.size() && Judge(f.members[k], r.checks[k]).passed;
+    out << "member        " << f.problem.members[k].name << ": " << FormatG(r.consumption[k], 8)
+        << " (" << transcription::ToString(f.members[k].problem.objective.kind) << "), "
+        << r.schedules[k].burns.size() << " burns, check " << (passed ? "PASSED" : "FAILED")
+        << "\n";
+  }
+  for (const transcription::PairDistance& p : r.checked_pairs) {
+    out << "pair          " << f.problem.members[p.a].name << "-" << f.problem.members[p.b].name
+        << ": min distance " << FormatG(p.min_distance_m, 6) << " m (box "
+        << FormatG(p.min_box_distance_m, 6) << " m) at t = " << FormatG(p.time_s, 8) << " s\n";
+  }
+}
+
+}  // namespace
+
+int RunFleetSolve(const SolveArgs& a) {
+  const Clock::time_point t_start = Clock::now();
+  FleetScenario f = LoadFleetScenario(a.scenario);
+  ApplyFleetOverrides(a.overrides, &f);
+  if (!a.export_mps.empty() || !a.export_lp.empty() || a.ccsds.any()) {
+    throw ScenarioError(
+        "--export-mps, --export-lp and the CCSDS options are not available for a "
+        "fleet yet (use `thrustsched export` for its MILP)");
+  }
+  const std::string target =
+      a.out_dir.empty() ? "out/" + fs::path(a.scenario).stem().string() : a.out_dir;
+  RunFolder folder(target, a.force, a.command_line);
+  std::ostream& err = std::cerr;
+  if (!a.quiet) {
+    err << "solving the fleet " << f.name << " (" << f.members.size() << " members) with "
+        << milp::CbcVersion() << "; Ctrl-C stops and keeps the best schedules found\n";
+  }
+  transcription::FleetSolveOptions opt = f.options;
+  opt.milp.interrupt = InterruptWatcher::flag();
+  const bool quiet = a.quiet;
+  opt.milp.progress = [quiet, &err](const milp::SolveProgress& p) {
+    if (quiet || p.wall_seconds < 3.0) return;
+    err << "  [" << FormatG(p.wall_seconds, 3) << " s] incumbent " << FormatG(p.objective, 8)
+        << ", bound " << FormatG(p.best_bound, 8) << ", " << p.nodes << " nodes\n";
+  };
+  const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
+  transcription::FleetResult r;
+  {
+    InterruptWatcher watcher;
+    r = transcription::SolveFleet(f.problem, *solver, opt);
+  }
+  const bool interrupted = InterruptWatcher::interrupted();
+
+  std::vector<std::string> files = {"summary.json", "fleet.csv"};
+  WriteMemberFiles(f, r, folder.path(), &files);
+  WriteTextFile(folder.path() + "/fleet.csv", FleetCsv(f, r));
+  WriteJsonFile(folder.path() + "/summary.json",
+                FleetSummaryJson(f, r, a, Since(t_start), interrupted));
+  const std::string replaced = folder.Commit();
+  if (!replaced.empty()) err << "note: " << replaced << "\n";
+
+  std::ostream& out = std::cout;
+  out << "scenario      " << f.name << " (" << a.scenario << ")\n";
+  PrintFleet(out, f, r, interrupted);
+  std::string listed;
+  for (const std::string& file : files) listed += (listed.empty() ? "" : ", ") + file;
+  out << "output        " << target << " (" << listed << ")\n";
+  out.flush();
+  return SolveExitCode(r.status);
+}
+
+int RunFleetExport(const ExportArgs& a) {
+  FleetScenario f = LoadFleetScenario(a.scenario);
+  ApplyFleetOverrides(a.overrides, &f);
+  const transcription::FleetMilp milp(f.problem, f.options.build);
+  WriteModelFile(a.file, milp.lp(), a.obfuscate_names);
+  std::cout << "wrote " << a.file << ": the fleet MILP of " << f.members.size() << " members, "
+            << milp.stats().num_binaries << " binaries, " << milp.stats().num_columns
+            << " columns, " << milp.stats().num_rows
+            << " rows; columns and rows named <member>.<name>\n";
+  return kExitOk;
+}
+
+}  // namespace thrustsched::app
