@@ -13,6 +13,7 @@
 #include "app/scenario.h"
 #include "app/solution_import.h"
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::app {
 namespace {
@@ -42,9 +43,6 @@ std::string ErrorOf(const std::function<void()>& f) {
   ADD_FAILURE() << "no ScenarioError";
   return "";
 }
-
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "message: " << (haystack)
 
 TEST(ScheduleCsv, RoundTrip) {
   const Scenario s = Hcw();

@@ -15,6 +15,7 @@
 #include "app/cli.h"
 #include "app/interrupt.h"
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::testing {
 namespace {
@@ -24,9 +25,6 @@ using nlohmann::json;
 
 const std::string kScenarios = THRUSTSCHED_DATA_DIR "/scenarios/";
 const std::string kTestData = THRUSTSCHED_APP_TEST_DATA "/";
-
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
 
 TEST(Cli, HelpAndVersion) {
   RunResult r = RunCli({"--help"});

@@ -10,6 +10,7 @@
 
 #include "app/scenario.h"
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::testing {
 namespace {
@@ -18,16 +19,8 @@ using nlohmann::json;
 
 const std::string kSmall = THRUSTSCHED_APP_TEST_DATA "/conjunction_small.json";
 
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
-
 std::string ErrorOf(const json& j) {
-  try {
-    app::ParseScenario(j);
-  } catch (const app::ScenarioError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return ScenarioErrorOf([&] { app::ParseScenario(j); });
 }
 
 TEST(ConjunctionSection, ErrorsNameTheField) {

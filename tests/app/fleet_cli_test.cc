@@ -18,6 +18,7 @@
 
 #include "app/fleet_scenario.h"
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::testing {
 namespace {
@@ -28,16 +29,8 @@ const std::string kFleetDir = std::string(THRUSTSCHED_DATA_DIR) + "/scenarios/fl
 const std::string kSpread = kFleetDir + "/di_spread.json";
 const std::string kSwap = kFleetDir + "/di_swap.json";
 
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
-
 std::string ErrorOf(const json& j) {
-  try {
-    app::ParseFleetScenario(j, kFleetDir);
-  } catch (const app::ScenarioError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return ScenarioErrorOf([&] { app::ParseFleetScenario(j, kFleetDir); });
 }
 
 TEST(FleetScenario, ErrorsNameTheField) {

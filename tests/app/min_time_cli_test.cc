@@ -12,6 +12,7 @@
 
 #include "app/scenario.h"
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::testing {
 namespace {
@@ -22,16 +23,8 @@ const std::string kScenarios = std::string(THRUSTSCHED_DATA_DIR) + "/scenarios";
 const std::string kBase = kScenarios + "/min_time_double_integrator.json";
 const std::string kBudget = kScenarios + "/min_time_double_integrator_budget.json";
 
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
-
 std::string ErrorOf(const json& j) {
-  try {
-    app::ParseScenario(j);
-  } catch (const app::ScenarioError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return ScenarioErrorOf([&] { app::ParseScenario(j); });
 }
 
 TEST(MinTimeObjective, ErrorsNameTheField) {

@@ -19,15 +19,13 @@
 #include "app/plots.h"
 #include "app/scenario.h"
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::app {
 namespace {
 
 using testing::ReadFile;
 using testing::TempDir;
-
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
 
 struct Rect {
   double left, top, right, bottom;  // SVG pixels, y downwards

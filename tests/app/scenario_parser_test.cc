@@ -16,6 +16,7 @@
 
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::app {
 namespace {
@@ -84,9 +85,6 @@ std::string TextErrorOf(const std::string& text) {
   ADD_FAILURE() << "parsed without error: " << text;
   return "";
 }
-
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "message: " << (haystack)
 
 TEST(ScenarioParser, HcwContractFieldsReachTheProblem) {
   const Scenario s = Parse(HcwBase());

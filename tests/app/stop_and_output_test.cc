@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/app/cli_runner.h"
+#include "tests/app/test_messages.h"
 
 namespace thrustsched::testing {
 namespace {
@@ -28,9 +29,6 @@ const std::string kScenarios = THRUSTSCHED_DATA_DIR "/scenarios/";
 const std::string kTestData = THRUSTSCHED_APP_TEST_DATA "/";
 // Proven optimal in tens of seconds: the relaxation alone takes seconds.
 const std::string kHardWeek = kScenarios + "hard/year_ideal6_fixed_w10.json";
-
-#define EXPECT_HAS(haystack, needle) \
-  EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << "in: " << (haystack)
 
 double Seconds(Clock::time_point since) {
   return std::chrono::duration<double>(Clock::now() - since).count();
