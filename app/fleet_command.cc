@@ -76,11 +76,12 @@ nlohmann::json MemberJson(const FleetScenario& f, const transcription::FleetResu
 }
 
 nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::FleetResult& r,
-                                const SolveArgs& a, double total_seconds, bool interrupted) {
+                                const std::string& command_line, double total_seconds,
+                                bool interrupted) {
   nlohmann::json j;
   j["name"] = f.name;
   j["scenario_file"] = f.path;
-  j["command_line"] = a.command_line;
+  j["command_line"] = command_line;
   j["status"] = StatusName(r.status);
   j["interrupted"] = interrupted;
   j["objective"] = r.has_schedule() ? FiniteOrNull(r.objective) : nullptr;
@@ -134,21 +135,6 @@ std::string FleetCsv(const FleetScenario& f, const transcription::FleetResult& r
   return os.str();
 }
 
-void WriteMemberFiles(const FleetScenario& f, const transcription::FleetResult& r,
-                      const std::string& dir, std::vector<std::string>* files) {
-  if (!r.has_schedule()) return;
-  for (size_t k = 0; k < f.members.size(); ++k) {
-    const std::string& name = f.problem.members[k].name;
-    WriteScheduleCsv(dir + "/schedule_" + name + ".csv", f.members[k], r.schedules[k].burns);
-    files->push_back("schedule_" + name + ".csv");
-    if (k < r.checks.size()) {
-      WriteTrajectoryCsv(dir + "/trajectory_" + name + ".csv", f.members[k], r.checks[k],
-                         r.schedules[k].burns);
-      files->push_back("trajectory_" + name + ".csv");
-    }
-  }
-}
-
 void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::FleetResult& r,
                 bool interrupted) {
   out << "fleet         " << f.name << " (" << f.members.size() << " members, balance "
@@ -184,8 +170,30 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
 
 }  // namespace
 
-int RunFleetSolve(const SolveArgs& a) {
+FleetRun RunFleetScenario(const FleetScenario& f, const FleetRunHooks& hooks) {
   const Clock::time_point t_start = Clock::now();
+  transcription::FleetSolveOptions opt = f.options;
+  opt.milp.interrupt = hooks.interrupt;
+  opt.milp.progress = hooks.progress;
+  const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
+  FleetRun run;
+  run.result = transcription::SolveFleet(f.problem, *solver, opt);
+  run.interrupted = hooks.interrupt != nullptr && hooks.interrupt->load();
+  const transcription::FleetResult& r = run.result;
+  if (r.has_schedule()) {
+    for (size_t k = 0; k < f.members.size(); ++k) {
+      run.schedule_csv.push_back(ScheduleCsvText(f.members[k], r.schedules[k].burns));
+      run.trajectory_csv.push_back(
+          k < r.checks.size() ? TrajectoryCsvText(f.members[k], r.checks[k], r.schedules[k].burns)
+                              : std::string());
+    }
+  }
+  run.fleet_csv = FleetCsv(f, r);
+  run.summary = FleetSummaryJson(f, r, hooks.command_line, Since(t_start), run.interrupted);
+  return run;
+}
+
+int RunFleetSolve(const SolveArgs& a) {
   FleetScenario f = LoadFleetScenario(a.scenario);
   ApplyFleetOverrides(a.overrides, &f);
   if (!a.export_mps.empty() || !a.export_lp.empty() || a.ccsds.any()) {
@@ -201,38 +209,41 @@ int RunFleetSolve(const SolveArgs& a) {
     err << "solving the fleet " << f.name << " (" << f.members.size() << " members) with "
         << milp::CbcVersion() << "; Ctrl-C stops and keeps the best schedules found\n";
   }
-  transcription::FleetSolveOptions opt = f.options;
-  opt.milp.interrupt = InterruptWatcher::flag();
+  FleetRunHooks hooks;
+  hooks.interrupt = InterruptWatcher::flag();
+  hooks.command_line = a.command_line;
   const bool quiet = a.quiet;
-  opt.milp.progress = [quiet, &err](const milp::SolveProgress& p) {
+  hooks.progress = [quiet, &err](const milp::SolveProgress& p) {
     if (quiet || p.wall_seconds < 3.0) return;
     err << "  [" << FormatG(p.wall_seconds, 3) << " s] incumbent " << FormatG(p.objective, 8)
         << ", bound " << FormatG(p.best_bound, 8) << ", " << p.nodes << " nodes\n";
   };
-  const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
-  transcription::FleetResult r;
+  FleetRun run;
   {
     InterruptWatcher watcher;
-    r = transcription::SolveFleet(f.problem, *solver, opt);
+    run = RunFleetScenario(f, hooks);
   }
-  const bool interrupted = InterruptWatcher::interrupted();
-
   std::vector<std::string> files = {"summary.json", "fleet.csv"};
-  WriteMemberFiles(f, r, folder.path(), &files);
-  WriteTextFile(folder.path() + "/fleet.csv", FleetCsv(f, r));
-  WriteJsonFile(folder.path() + "/summary.json",
-                FleetSummaryJson(f, r, a, Since(t_start), interrupted));
+  const std::string& dir = folder.path();
+  for (size_t k = 0; k < run.schedule_csv.size(); ++k) {
+    const std::string& name = f.problem.members[k].name;
+    WriteTextFile(dir + "/schedule_" + name + ".csv", run.schedule_csv[k]);
+    WriteTextFile(dir + "/trajectory_" + name + ".csv", run.trajectory_csv[k]);
+    files.insert(files.end(), {"schedule_" + name + ".csv", "trajectory_" + name + ".csv"});
+  }
+  WriteTextFile(dir + "/fleet.csv", run.fleet_csv);
+  WriteJsonFile(dir + "/summary.json", run.summary);
   const std::string replaced = folder.Commit();
   if (!replaced.empty()) err << "note: " << replaced << "\n";
 
   std::ostream& out = std::cout;
   out << "scenario      " << f.name << " (" << a.scenario << ")\n";
-  PrintFleet(out, f, r, interrupted);
+  PrintFleet(out, f, run.result, run.interrupted);
   std::string listed;
   for (const std::string& file : files) listed += (listed.empty() ? "" : ", ") + file;
   out << "output        " << target << " (" << listed << ")\n";
   out.flush();
-  return SolveExitCode(r.status);
+  return SolveExitCode(run.result.status);
 }
 
 int RunFleetExport(const ExportArgs& a) {

@@ -15,9 +15,38 @@
 #ifndef THRUSTSCHED_APP_FLEET_COMMAND_H_
 #define THRUSTSCHED_APP_FLEET_COMMAND_H_
 
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
 #include "app/commands.h"
+#include "app/fleet_scenario.h"
+#include "transcription/fleet.h"
 
 namespace thrustsched::app {
+
+/// What a fleet solve produced, as the files' contents (no folder): what
+/// `solve` writes and the Python package returns.
+struct FleetRun {
+  transcription::FleetResult result;
+  bool interrupted = false;
+  nlohmann::json summary;                   // summary.json
+  std::string fleet_csv;                    // fleet.csv
+  std::vector<std::string> schedule_csv;    // per member (empty without schedules)
+  std::vector<std::string> trajectory_csv;  // per member (empty without schedules)
+};
+
+struct FleetRunHooks {
+  const std::atomic<bool>* interrupt = nullptr;  // stops the solve, keeps the best schedules
+  std::function<void(const milp::SolveProgress&)> progress;
+  std::string command_line;  // summary.json's
+};
+
+/// Solves, checks and formats (the fleet's own solver options).
+FleetRun RunFleetScenario(const FleetScenario& fleet, const FleetRunHooks& hooks);
 
 int RunFleetSolve(const SolveArgs& args);
 /// The fleet MILP as MPS or LP (columns and rows named "<member>.<name>").

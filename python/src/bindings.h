@@ -29,6 +29,7 @@ void BindProblem(py::module_& m);   // problem_bindings.cc
 void BindSimulate(py::module_& m);  // simulate_bindings.cc
 void BindCli(py::module_& m);       // cli_bindings.cc
 void BindTransfer(py::module_& m);  // transfer_bindings.cc
+void BindFleet(py::module_& m);     // fleet_bindings.cc
 
 /// Solve settings given by keyword in Python; unset ones keep the problem's
 /// (scenario file) values.

@@ -41,4 +41,5 @@ PYBIND11_MODULE(_core, m) {
   thrustsched::python::BindSimulate(m);
   thrustsched::python::BindCli(m);
   thrustsched::python::BindTransfer(m);
+  thrustsched::python::BindFleet(m);
 }

@@ -13,7 +13,8 @@ Also: ts.ScheduleProblem (your own Phi, Gamma, drift as numpy arrays),
 ts.dynamics (the shipped models and their discretisation), ts.milp (build,
 solve and write MILPs; extend a schedule MILP from ts.build), ts.simulate
 (the year loop), ts.transfer (orbit raising: minimum time, Lyapunov
-feedback, two impulses; data/scenarios/transfer/README.md), ts.sweep (campaigns: sweeps and Monte Carlo runs on
+feedback, two impulses; data/scenarios/transfer/README.md), ts.fleet (several
+spacecraft in one MILP: a file with a "fleet" section), ts.sweep (campaigns: sweeps and Monte Carlo runs on
 Dask; data/campaigns/README.md), ts.data_path (the shipped scenarios and
 campaigns, found from the package, whatever the working directory). Every
 object is the C++ library's (thrustsched._core); the CLI's documentation
@@ -24,6 +25,7 @@ from . import _core
 from . import dynamics, milp, sweep
 from ._api import build, check, export, solve
 from ._data import data_path
+from ._fleet import FleetResult, fleet
 from ._problem import BuiltSchedule, ScheduleProblem
 from ._results import CheckResult, Report, SolveResult
 from ._scenario import Scenario, ScenarioError
@@ -35,7 +37,8 @@ __version__ = _core.__version__
 solver_version = _core.solver_version
 
 __all__ = [
-    "Scenario", "ScenarioError", "solve", "check", "export", "build", "simulate", "transfer",
+    "Scenario", "ScenarioError", "solve", "check", "export", "build", "simulate", "transfer", "fleet",
+    "FleetResult",
     "SolveResult", "CheckResult", "Report", "SimulationResult", "TransferResult", "ScheduleProblem",
     "BuiltSchedule",
     "ThrusterSet", "dynamics", "milp", "sweep", "data_path", "solver_version", "__version__",

@@ -150,3 +150,28 @@ def test_min_time_objective_matches_the_closed_form_and_the_cli(tmp_path):
     assert summary["min_time"]["arrival_time_s"] == m["arrival_time_s"]
     assert summary["objective"] == res.objective
     assert ts.solve(ts.Scenario.load(SCENARIOS / "hcw_table41_1d.json")).min_time is None
+
+
+def test_fleet_swap_matches_the_derived_optimum_and_the_cli(tmp_path):
+    # Swap with a keep-out: 2 m/s for the swap + 1 m/s for b's step aside (tests/app/fleet_cli_test.cc).
+    path = SCENARIOS / "fleet" / "di_swap.json"
+    res = ts.fleet(path)
+    assert res.status == "optimal"
+    assert res.objective == pytest.approx(3.0, abs=1e-9)
+    assert list(res.pairs.columns) == ["member_a", "member_b", "min_distance_m", "min_box_distance_m", "time_s",
+                                       "planned_min_distance_m", "planned_min_box_distance_m",
+                                       "keep_out_half_size_m"]
+    assert res.pairs["planned_min_box_distance_m"].iloc[0] >= 0.5 - 1e-9
+    assert set(res.schedules) == {"a", "b"}
+    assert list(res.schedules["b"].columns)[:4] == ["thruster", "start_s", "end_s", "duration_s"]
+    cli = run_cli("solve", path, "--out", tmp_path / "cli")
+    assert cli.returncode == 0, cli.stderr
+    summary = read_json(tmp_path / "cli" / "summary.json")
+    assert summary["objective"] == res.summary["objective"]
+    assert summary["members"] == res.summary["members"]
+    # A dict with a member by path needs its folder; bad fields name the field.
+    spread = read_json(SCENARIOS / "fleet" / "di_spread.json")
+    assert ts.fleet(spread, base_dir=SCENARIOS / "fleet").objective == pytest.approx(1.002, abs=1e-9)
+    spread["fleet"]["balance"] = "fair"
+    with pytest.raises(ts.ScenarioError, match="fleet.balance"):
+        ts.fleet(spread, base_dir=SCENARIOS / "fleet")
