@@ -155,6 +155,11 @@ TEST(MinTimeCli, ExportWritesTheArrivalMilpAndBadInputExitsTwo) {
   RunResult bad = RunCli({"solve", dir + "/bad.json", "--out", dir + "/bad"});
   EXPECT_EQ(bad.exit_code, 2) << bad.Describe();
   EXPECT_HAS(bad.err, "scenario.objective");
+  WriteFile(dir + "/x.sol", "Optimal - objective value 1\n");
+  RunResult imp = RunCli(
+      {"import-solution", kBase, dir + "/x.sol", "--format", "cbc", "--out", dir + "/s.csv"});
+  EXPECT_EQ(imp.exit_code, 2) << imp.Describe();
+  EXPECT_HAS(imp.err, "import-solution reads solutions of the schedule MILP");
   RunResult cond = RunCli({"solve", kBase, "--out", dir + "/cond", "--formulation", "condensed"});
   EXPECT_EQ(cond.exit_code, 2) << cond.Describe();
   EXPECT_HAS(cond.err, "--formulation");
