@@ -11,8 +11,7 @@ namespace {
 
 constexpr std::string_view kWhere = "SchweighartSedwickModel";
 
-[[noreturn]] void Throw(std::string_view where, const char* field, const char* rule,
-                        double value) {
+[[noreturn]] void Throw(std::string_view where, const char* field, const char* rule, double value) {
   std::ostringstream msg;
   msg << where << ": " << field << " must be " << rule << ", got " << value;
   throw std::invalid_argument(msg.str());
@@ -24,11 +23,13 @@ void RequirePositive(const char* field, double value) {
 
 }  // namespace
 
-SchweighartSedwickModel::SchweighartSedwickModel(double reference_radius_m,
-                                                 double inclination_rad, double length_scale_m,
-                                                 double mu_m3_s2, double j2,
-                                                 double earth_radius_m)
-    : r_ref_(reference_radius_m), inclination_(inclination_rad), length_scale_m_(length_scale_m) {
+SchweighartSedwickModel::SchweighartSedwickModel(double reference_radius_m, double inclination_rad,
+                                                 double length_scale_m, CrossTrack cross_track,
+                                                 double mu_m3_s2, double j2, double earth_radius_m)
+    : r_ref_(reference_radius_m),
+      inclination_(inclination_rad),
+      length_scale_m_(length_scale_m),
+      cross_track_(cross_track) {
   RequirePositive("reference_radius_m", reference_radius_m);
   RequirePositive("length_scale_m", length_scale_m);
   RequirePositive("mu_m3_s2", mu_m3_s2);
@@ -40,10 +41,20 @@ SchweighartSedwickModel::SchweighartSedwickModel(double reference_radius_m,
   n_ = std::sqrt(mu_m3_s2 / (r_ref_ * r_ref_ * r_ref_));
   const double re_over_r = earth_radius_m / r_ref_;
   s_ = 3.0 * j2 * re_over_r * re_over_r / 8.0 * (1.0 + 3.0 * std::cos(2.0 * inclination_rad));
-  // 1 - s is the squared radial frequency over n^2: s >= 1 would need r_ref
-  // far inside the Earth, where the model means nothing.
-  if (!(s_ < 1.0)) Throw(kWhere, "s (from reference_radius_m and j2)", "< 1", s_);
+  // n^2 (1 - s) is the squared radial frequency and n^2 (1 + 3 s) the simple
+  // form's cross-track one: |s| that large would need r_ref far inside the
+  // Earth (or a J2 hundreds of times the Earth's), where the model means nothing.
+  if (!(s_ > -1.0 / 3.0 && s_ < 1.0)) {
+    Throw(kWhere, "s (from reference_radius_m and j2)", "in (-1/3, 1)", s_);
+  }
   c_ = std::sqrt(1.0 + s_);
+  if (cross_track_ == CrossTrack::kSimple) {
+    q_ = n_ * std::sqrt(3.0 * c_ * c_ - 2.0);  // 3 c^2 - 2 = 1 + 3 s > 0 (checked)
+  } else {
+    // n c - Omega' cos i, Omega' = -3 n J2 (R_E / r)^2 cos i / 2 (nodal rate).
+    const double cos_i = std::cos(inclination_rad);
+    q_ = n_ * c_ + 1.5 * n_ * j2 * re_over_r * re_over_r * cos_i * cos_i;
+  }
 }
 
 ModelMatrices SchweighartSedwickModel::Evaluate(double t) const {
@@ -51,11 +62,11 @@ ModelMatrices SchweighartSedwickModel::Evaluate(double t) const {
   ModelMatrices m;
   m.a = Eigen::MatrixXd::Zero(6, 6);
   m.a.topRightCorner<3, 3>().setIdentity();
-  const double n2 = n_ * n_, c2 = c_ * c_;
-  m.a(3, 0) = (5.0 * c2 - 2.0) * n2;  // HCW: 3 n^2
-  m.a(3, 4) = 2.0 * n_ * c_;          // HCW: 2 n
+  const double n2 = n_ * n_, c2 = c_ * c_;  // n2, c2 used on the in-plane rows
+  m.a(3, 0) = (5.0 * c2 - 2.0) * n2;        // HCW: 3 n^2
+  m.a(3, 4) = 2.0 * n_ * c_;                // HCW: 2 n
   m.a(4, 3) = -2.0 * n_ * c_;
-  m.a(5, 2) = -(3.0 * c2 - 2.0) * n2;  // HCW: -n^2
+  m.a(5, 2) = -q_ * q_;  // HCW: -n^2
   m.b = Eigen::MatrixXd::Zero(6, 3);
   m.b.bottomRows<3>().setIdentity();
   m.d = Eigen::VectorXd::Zero(6);
