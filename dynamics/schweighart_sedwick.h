@@ -22,9 +22,9 @@
 // along-track, z orbit normal, velocities in the rotating frame, inputs the
 // RTN thrust acceleration (m/s^2), outputs the positions (m). The frame is
 // the reference orbit's: it turns about the orbit normal only, not with the
-// O(J2) roll of an osculating orbit plane about the radius vector. With J2 = 0 the
-// matrices are HCW's for the same n. The model is time-invariant, so the exact
-// zero-order-hold discretisation (matrix exponential) applies; d = 0.
+// O(J2) roll of an osculating orbit plane about the radius vector. With J2 = 0
+// the matrices are HCW's for the same n. The model is time-invariant, so the
+// exact zero-order-hold discretisation (matrix exponential) applies; d = 0.
 // The in-plane part is the paper's, as printed.
 //
 // Cross-track: the paper's full equation z'' + q^2 z = 2 l q cos(q t + phi)
@@ -32,16 +32,16 @@
 // precession). For a deputy of the chief's inclination (formations whose
 // cross-track motion comes from a node offset) the precession rates are equal,
 // so l = 0 and q = n c - Omega' cos i with Omega' = -3 n J2 R_E^2 / (2 r^2)
-// cos i, the mean argument-of-latitude rate of the reference: z = a cos(u) is
-// then exact for the tilt of two planes precessing together. This is the
+// cos i, the mean argument-of-latitude rate of the reference: the tilt of two
+// planes precessing together gives z = a cos(u) to first order. This is the
 // default (kEqualInclination), time-invariant. kSimple is the paper's first,
 // single-satellite form z'' = -(3 c^2 - 2) n^2 z; against the nonlinear J2
 // motion (tests/dynamics/schweighart_sedwick_test.cc), 300 m cross-track from
 // a node offset, its cross-track error after 15 orbits is 1.08 m at 98 deg
 // (HCW 0.11 m, kEqualInclination 0.0002 m) and 0.60 m at 45 deg (HCW 0.93 m,
-// kEqualInclination 0.001 m). Neither
-// represents a deputy of another inclination (l != 0, a forced, time-varying
-// term): that would need the deputy's elements in the model.
+// kEqualInclination 0.001 m). Neither represents a deputy of another
+// inclination (l != 0, a forced, time-varying term): that would need the
+// deputy's elements in the model, and was not derived and tested here.
 //
 // Drift-free in-plane motion: integrating y'' = -2 n c x' gives
 // y' = y'_0 - 2 n c (x - x_0), and the x equation becomes

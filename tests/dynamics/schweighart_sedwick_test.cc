@@ -3,7 +3,7 @@
 // with Boost.Odeint, the J2 acceleration written out by hand), HCW's matrices,
 // the closed-form drift of the linear model, and the adaptive integration of
 // the continuous model (dynamics/propagation.h) for the exact ZOH map.
-// `ctest -R schweighart_sedwick -V` prints the SS and HCW errors.
+// `ctest --test-dir build -R SchweighartSedwickTest -V` prints the SS and HCW errors.
 #include "dynamics/schweighart_sedwick.h"
 
 #include <algorithm>
@@ -71,6 +71,12 @@ void PairDerivative(const Pair& y, Pair& dy, double /*t*/) {
   }
 }
 
+namespace odeint = boost::numeric::odeint;
+using Stepper = odeint::runge_kutta_fehlberg78<Pair, double, Pair, double, odeint::array_algebra>;
+using Checker =
+    odeint::default_error_checker<double, odeint::array_algebra, odeint::default_operations>;
+using Controlled = odeint::controlled_runge_kutta<Stepper, Checker>;
+
 // Columns: radial, along-track, orbit normal of the chief (r, v), in inertial axes.
 Mat3 LvlhAxes(const Eigen::Vector3d& r, const Eigen::Vector3d& v) {
   const Eigen::Vector3d ex = r.normalized(), ez = r.cross(v).normalized();
@@ -104,7 +110,7 @@ Vec6 RelativeLvlh(const Pair& y) {
 }
 
 // The chief alone over one orbit from (r, v): the first-harmonic (cos u) part
-// of its radius (m), u the argument of latitude, by least squares on
+// of its radius (m), u the angle from the start position, by least squares on
 // [1, cos u, sin u, cos 2u, sin 2u] (J2 adds the 2u terms to a circular orbit).
 double FirstHarmonicOfRadius(const Eigen::Vector3d& r, const Eigen::Vector3d& v, double period_s) {
   Pair y = {r.x(), r.y(), r.z(), v.x(), v.y(), v.z(), r.x(), r.y(), r.z(), v.x(), v.y(), v.z()};
@@ -114,11 +120,7 @@ double FirstHarmonicOfRadius(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
   Eigen::VectorXd radius(kSamples);
   std::vector<double> times;
   for (int k = 0; k < kSamples; ++k) times.push_back(period_s * k / kSamples);
-  namespace odeint = boost::numeric::odeint;
-  using Stepper = odeint::runge_kutta_fehlberg78<Pair, double, Pair, double, odeint::array_algebra>;
-  using Checker =
-      odeint::default_error_checker<double, odeint::array_algebra, odeint::default_operations>;
-  odeint::controlled_runge_kutta<Stepper, Checker> stepper(Checker(1e-12, 1e-12));
+  Controlled stepper(Checker(1e-12, 1e-12));
   double t = 0.0;
   for (int k = 0; k < kSamples; ++k) {
     if (times[k] > t) odeint::integrate_adaptive(stepper, PairDerivative, y, t, times[k], 10.0);
@@ -192,11 +194,7 @@ Pair FormationPair(const SchweighartSedwickModel& m, const Formation& f) {
 
 // Relative LVLH states of the nonlinear pair at the sample times (s).
 std::vector<Vec6> NonlinearRelative(Pair y, const std::vector<double>& times) {
-  namespace odeint = boost::numeric::odeint;
-  using Stepper = odeint::runge_kutta_fehlberg78<Pair, double, Pair, double, odeint::array_algebra>;
-  using Checker =
-      odeint::default_error_checker<double, odeint::array_algebra, odeint::default_operations>;
-  odeint::controlled_runge_kutta<Stepper, Checker> stepper(Checker(1e-13, 1e-13));
+  Controlled stepper(Checker(1e-13, 1e-13));
   std::vector<Vec6> out;
   double t = 0.0;
   for (double t_next : times) {
@@ -360,7 +358,7 @@ TEST(SchweighartSedwickTest, RejectsBadParameters) {
 }
 
 // ---------------------------------------------------------------- nonlinear J2
-// Figures printed by `ctest -R schweighart_sedwick -V` (position error norms
+// Figures printed by `ctest -R SchweighartSedwickTest -V` (position error norms
 // after 1 / 5 / 15 orbits, 650 km; chief mean-circular at u0).
 
 // 250 m radial ellipse, u0 = 45 deg (where the osculating shift of the
