@@ -87,6 +87,8 @@ std::string ModelInWords(const Scenario& s) {
       return "double integrator";
     case ModelType::kYamanakaAnkersen:
       return "Yamanaka-Ankersen relative motion about an elliptic orbit";
+    case ModelType::kSchweighartSedwick:
+      return "Schweighart-Sedwick relative motion with J2 about a circular orbit";
   }
   return std::string(ToString(s.model_type));
 }

@@ -19,6 +19,7 @@
 #include "dynamics/discretisation.h"
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
+#include "dynamics/schweighart_sedwick.h"
 #include "dynamics/time.h"
 #include "transcription/encodings.h"
 
@@ -122,10 +123,36 @@ void ParseInitialState(JsonObject init, const ScenarioParseOptions& options, Sce
   init.Finish();
 }
 
+// "schweighart_sedwick": the circular reference orbit by its radius or its
+// altitude above the model's equatorial radius, and its inclination.
+void ParseSchweighartSedwick(JsonObject& m, Scenario* s) {
+  s->model_type = ModelType::kSchweighartSedwick;
+  m.ExactlyOneOf({"altitude_m", "radius_m"}, /*required=*/true);
+  const double radius_m =
+      m.Has("radius_m") ? m.Number("radius_m", Bound::kPositive)
+                        : dynamics::kSsEarthRadius_m + m.Number("altitude_m", Bound::kNonNegative);
+  const double inclination_deg = m.Number("inclination_deg", Bound::kNonNegative);
+  if (inclination_deg > 180.0) {
+    m.Fail("inclination_deg", "must be in [0, 180], got " + FormatNumber(inclination_deg));
+  }
+  const std::string cross = m.Has("cross_track")
+                                ? m.Choice("cross_track", {"equal_inclination", "simple"})
+                                : "equal_inclination";
+  const dynamics::CrossTrack cross_track =
+      cross == "simple" ? dynamics::CrossTrack::kSimple : dynamics::CrossTrack::kEqualInclination;
+  const double l = m.OptionalNumber("length_scale_m", Bound::kPositive).value_or(1000.0);
+  s->problem.model = Wrap(m.path(), [&] {
+    return std::make_shared<const dynamics::SchweighartSedwickModel>(
+        radius_m, inclination_deg * common::kDegToRad, l, cross_track);
+  });
+}
+
 void ParseModel(JsonObject m, Scenario* s) {
-  const std::string type =
-      m.Choice("type", {"hcw", "geo", "double_integrator", "yamanaka_ankersen"});
-  if (type == "hcw") {
+  const std::string type = m.Choice(
+      "type", {"hcw", "geo", "double_integrator", "yamanaka_ankersen", "schweighart_sedwick"});
+  if (type == "schweighart_sedwick") {
+    ParseSchweighartSedwick(m, s);
+  } else if (type == "hcw") {
     s->model_type = ModelType::kHcw;
     const double n = m.Number("mean_motion_rad_s", Bound::kPositive);
     const double l = m.OptionalNumber("length_scale_m", Bound::kPositive).value_or(1000.0);
@@ -682,6 +709,8 @@ std::string_view ToString(ModelType type) {
       return "double_integrator";
     case ModelType::kYamanakaAnkersen:
       return "yamanaka_ankersen";
+    case ModelType::kSchweighartSedwick:
+      return "schweighart_sedwick";
   }
   return "unknown";
 }

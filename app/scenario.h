@@ -42,8 +42,8 @@
 
 namespace thrustsched::app {
 
-enum class ModelType { kHcw, kGeo, kDoubleIntegrator, kYamanakaAnkersen };
-/// "hcw" | "geo" | "double_integrator" | "yamanaka_ankersen".
+enum class ModelType { kHcw, kGeo, kDoubleIntegrator, kYamanakaAnkersen, kSchweighartSedwick };
+/// "hcw" | "geo" | "double_integrator" | "yamanaka_ankersen" | "schweighart_sedwick".
 std::string_view ToString(ModelType type);
 
 /// Largest grid the CLI accepts (intervals), so that a typo in a duration

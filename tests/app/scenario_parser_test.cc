@@ -16,6 +16,7 @@
 
 #include "dynamics/geo_simulator.h"
 #include "dynamics/models.h"
+#include "dynamics/schweighart_sedwick.h"
 #include "tests/app/test_messages.h"
 
 namespace thrustsched::app {
@@ -218,6 +219,72 @@ TEST(ScenarioParser, YamanakaAnkersenHorizonByTrueAnomaly) {
   json h = HcwBase();
   h["horizon"] = {{"end_true_anomaly_rad", 5.2}, {"num_intervals", 10}};
   EXPECT_HAS(ErrorOf(h), "scenario.horizon");
+}
+
+TEST(ScenarioParser, SchweighartSedwickModel) {
+  json j = HcwBase();
+  j["model"] = {{"type", "schweighart_sedwick"}, {"altitude_m", 650e3}, {"inclination_deg", 98}};
+  Scenario s = Parse(j);
+  EXPECT_EQ(s.model_type, ModelType::kSchweighartSedwick);
+  EXPECT_EQ(ToString(s.model_type), "schweighart_sedwick");
+  const auto& ss = dynamic_cast<const dynamics::SchweighartSedwickModel&>(*s.problem.model);
+  EXPECT_DOUBLE_EQ(ss.reference_radius(), 6378137.0 + 650e3);
+  EXPECT_DOUBLE_EQ(ss.inclination(), 98.0 * kPi / 180.0);
+  EXPECT_NEAR(ss.s(), -6.2987e-4, 1e-8);  // tests/dynamics/schweighart_sedwick_test.cc
+  EXPECT_EQ(ss.cross_track(), dynamics::CrossTrack::kEqualInclination);
+  // The same orbit by its radius, the simple cross-track form, a length scale.
+  j["model"] = {{"type", "schweighart_sedwick"},
+                {"radius_m", 7028137.0},
+                {"inclination_deg", 45},
+                {"cross_track", "simple"},
+                {"length_scale_m", 500}};
+  s = Parse(j);
+  const auto& simple = dynamic_cast<const dynamics::SchweighartSedwickModel&>(*s.problem.model);
+  EXPECT_DOUBLE_EQ(simple.reference_radius(), 7028137.0);
+  EXPECT_EQ(simple.cross_track(), dynamics::CrossTrack::kSimple);
+  EXPECT_DOUBLE_EQ(simple.state_scale()[0], 500.0);
+  // Boundary values are accepted: a polar and a retrograde equatorial orbit.
+  j["model"] = {{"type", "schweighart_sedwick"}, {"altitude_m", 0}, {"inclination_deg", 180}};
+  EXPECT_NO_THROW(Parse(j));
+}
+
+TEST(ScenarioParser, SchweighartSedwickModelRejectsBadValues) {
+  const auto error_with = [](json model) {
+    json j = HcwBase();
+    j["model"] = std::move(model);
+    return ErrorOf(j);
+  };
+  const json base = {
+      {"type", "schweighart_sedwick"}, {"altitude_m", 650e3}, {"inclination_deg", 98}};
+  json m = base;
+  m["altitude_m"] = -1.0;
+  EXPECT_HAS(error_with(m), "scenario.model.altitude_m");
+  EXPECT_HAS(error_with(m), "-1");
+  m = base;
+  m["inclination_deg"] = 180.5;
+  EXPECT_HAS(error_with(m), "scenario.model.inclination_deg: must be in [0, 180], got 180.5");
+  m["inclination_deg"] = -3;
+  EXPECT_HAS(error_with(m), "scenario.model.inclination_deg");
+  EXPECT_HAS(error_with(m), "-3");
+  m = base;
+  m["radius_m"] = 7e6;  // both forms
+  EXPECT_HAS(error_with(m), "altitude_m");
+  EXPECT_HAS(error_with(m), "radius_m");
+  m = base;
+  m.erase("altitude_m");  // neither
+  EXPECT_HAS(error_with(m), "scenario.model");
+  m = {{"type", "schweighart_sedwick"}, {"radius_m", 0.0}, {"inclination_deg", 98}};
+  EXPECT_HAS(error_with(m), "scenario.model.radius_m");
+  m = base;
+  m.erase("inclination_deg");
+  EXPECT_HAS(error_with(m), "scenario.model.inclination_deg");
+  m = base;
+  m["cross_track"] = "full";
+  EXPECT_HAS(error_with(m), "scenario.model.cross_track");
+  EXPECT_HAS(error_with(m), "full");
+  m = base;
+  m["mean_motion_rad_s"] = 1e-3;  // an HCW field
+  EXPECT_HAS(error_with(m), "scenario.model.mean_motion_rad_s: unknown field");
 }
 
 TEST(ScenarioParser, ThrusterExtensions) {
