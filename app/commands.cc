@@ -630,9 +630,10 @@ int RunImportSolution(const ImportArgs& a) {
   const SolutionFormat format = ParseSolutionFormat(a.format);
   const Scenario s = LoadWithOverrides(a.scenario, a.overrides);
   if (s.min_time) {
-    throw ScenarioError("scenario.objective: import-solution reads solutions of the schedule "
-                        "MILP; a \"min_time\" scenario's exported MILP is its arrival MILP "
-                        "(solve the scenario with `thrustsched solve`)");
+    throw ScenarioError(
+        "scenario.objective: import-solution reads solutions of the schedule "
+        "MILP; a \"min_time\" scenario's exported MILP is its arrival MILP "
+        "(solve the scenario with `thrustsched solve`)");
   }
   const ImportedSolution sol = ReadSolutionFile(a.solution, format);
   std::ostream& out = std::cout;

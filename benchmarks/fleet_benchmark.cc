@@ -32,8 +32,8 @@ ts::transcription::ScheduleProblem MirrorMember(double x0) {
   ts::transcription::ScheduleProblem p;
   p.model = std::make_shared<ts::dynamics::DoubleIntegrator3d>();
   const Eigen::Vector3d ex(1, 0, 0), ey(0, 1, 0);
-  p.thrusters =
-      ts::dynamics::ThrusterSet({{"+X", ex}, {"-X", -ex}, {"+Y", ey}, {"-Y", -ey}}, 1.0, 1.0, 300.0);
+  p.thrusters = ts::dynamics::ThrusterSet({{"+X", ex}, {"-X", -ex}, {"+Y", ey}, {"-Y", -ey}}, 1.0,
+                                          1.0, 300.0);
   p.grid = ts::dynamics::UniformGrid(0.0, kSlots, kSlots);
   p.initial_state = Eigen::VectorXd::Zero(6);
   p.initial_state[0] = x0;
