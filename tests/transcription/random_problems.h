@@ -95,6 +95,12 @@ struct CaseOutcome {
   bool agree = true;         // false: see disagreement
   std::string disagreement;  // empty when agree
   bool undecided = false;    // the plain-CBC reference did not decide (not compared)
+  /// The plain-CBC reference claimed an optimum above the search's, and the
+  /// search's point keeps every row of the same MILP (largest violation at
+  /// most 1e-9) and passes the checker: CBC's claim is refuted, not counted
+  /// as a disagreement (`refutation` says by how much).
+  bool reference_refuted = false;
+  std::string refutation;
 };
 
 /// Solves the case with the search (gap 0) and compares: the status and the

@@ -64,6 +64,26 @@ TEST(RandomProblems, EnumerationAgreesWithPlainCbc) {
   }
 }
 
+// Seed 63483 of the soak: one -Y thruster of 0.7 N on 100 kg, 26 slots of
+// 30 s, a burn may cross the horizon's end. Unthrusted, y leaves the window
+// (32.5 m + 0.2531 m/s x 780 s = 229.9 m > 229.1 m) only at the last node,
+// and one last slot (braking 0.5 x 0.007 x 30^2 = 3.15 m) keeps it in: the
+// optimum is one slot, 0.007 m/s^2 x 30 s = 0.21 m/s. Plain CBC 2.10.8 with
+// its preprocessing off called 0.42 (two slots) optimal at its root; the
+// soak then checks the search's point in the same MILP and reports CBC's
+// claim as refuted, not as a disagreement.
+TEST(RandomProblems, APlainCbcOptimumAboveAFeasiblePointIsRefuted) {
+  const RandomCase c = GenerateCase(63483);
+  const CaseOutcome out = RunCase(c, *milp::MakeCbcSolver());
+  EXPECT_TRUE(out.agree) << out.disagreement;
+  EXPECT_EQ(out.status, milp::SolveStatus::kOptimal);
+  EXPECT_NEAR(out.objective, 0.7 / 100.0 * 30.0, 1e-4);  // the L1 metric of one slot
+  if (out.reference_refuted) {
+    EXPECT_GT(out.reference.objective, out.objective);
+    EXPECT_NE(out.refutation.find("keeps every row"), std::string::npos);
+  }
+}
+
 // Same seed, same case; different seeds, different cases.
 TEST(RandomProblems, GeneratorIsDeterministic) {
   EXPECT_EQ(GenerateCase(7).description, GenerateCase(7).description);

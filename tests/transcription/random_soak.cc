@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   const auto solver = thrustsched::milp::MakeCbcSolver();
   const auto t0 = std::chrono::steady_clock::now();
   std::map<std::string, long long> counts;
-  long long disagreements = 0, undecided = 0, run = 0;
+  long long disagreements = 0, undecided = 0, refuted = 0, run = 0;
   std::signal(SIGINT, OnStop);
   std::signal(SIGTERM, OnStop);
   for (long long k = 0; k < count && !g_stop; ++k, ++run) {
@@ -84,6 +84,10 @@ int main(int argc, char** argv) {
     }
     ++counts[soak::ToString(out.reference.kind)];
     if (out.undecided) ++undecided;
+    if (out.reference_refuted) {
+      ++refuted;
+      std::cout << "REFERENCE REFUTED " << c.description << "\n  " << out.refutation << std::endl;
+    }
     if (!out.reference.feasible && out.reference.decided) ++counts["infeasible"];
     if (!out.agree) {
       ++disagreements;
@@ -99,7 +103,8 @@ int main(int argc, char** argv) {
   std::cout << "soak: " << run << " cases (seeds " << first << ".." << first + run - 1
             << ", horizons up to " << max_slots << " slots): " << counts["enumeration"]
             << " against enumeration, " << counts["plain CBC"] << " against plain CBC ("
-            << undecided << " undecided, not compared), " << counts["infeasible"] << " infeasible; "
-            << disagreements << " disagreements; " << s << " s" << std::endl;
+            << undecided << " undecided, not compared; " << refuted
+            << " of its optima refuted by the search's feasible point), " << counts["infeasible"]
+            << " infeasible; " << disagreements << " disagreements; " << s << " s" << std::endl;
   return disagreements == 0 ? 0 : 1;
 }
