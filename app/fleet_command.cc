@@ -1,9 +1,11 @@
 #include "app/fleet_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -47,6 +49,21 @@ const transcription::PairDistance* PlannedPair(const transcription::FleetResult&
     if (q.a == p.a && q.b == p.b) return &q;
   }
   return nullptr;
+}
+
+// The smallest max-norm distance of any pair on the checker's samples.
+double ClosestOnSamples(const transcription::FleetResult& r) {
+  double closest = std::numeric_limits<double>::infinity();
+  for (const transcription::PairDistance& p : r.checked_pairs)
+    closest = std::min(closest, p.min_box_distance_m);
+  return closest;
+}
+
+// The keep-out holds between the checks too: no pair inside the cube on the
+// checker's fine samples (the MILP sees the check times only).
+bool HeldOnSamples(const FleetScenario& f, const transcription::FleetResult& r) {
+  return !f.problem.keep_out ||
+         ClosestOnSamples(r) >= f.problem.keep_out->half_size_m * (1.0 - 1e-9) - 1e-9;
 }
 
 nlohmann::json MemberJson(const FleetScenario& f, const transcription::FleetResult& r, int k) {
@@ -98,8 +115,11 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
   j["n_rows"] = st.num_rows;
   j["n_binaries"] = st.num_binaries;
   j["n_nonzeros"] = st.num_nonzeros;
+  const double closest = ClosestOnSamples(r);
   j["keep_out"] = f.problem.keep_out
                       ? nlohmann::json{{"half_size_m", f.problem.keep_out->half_size_m},
+                                       {"min_box_distance_on_samples_m", FiniteOrNull(closest)},
+                                       {"held_on_samples", r.has_schedule() && HeldOnSamples(f, r)},
                                        {"checks", st.keep_out_checks},
                                        {"checks_clear", st.keep_out_checks_clear},
                                        {"single_face", st.keep_out_single_face},
@@ -159,6 +179,14 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
     out << "member        " << f.problem.members[k].name << ": " << FormatG(r.consumption[k], 8)
         << " (" << transcription::ToString(f.members[k].problem.objective.kind) << "), "
         << r.schedules[k].burns.size() << " burns, check " << (passed ? "PASSED" : "FAILED")
+        << "\n";
+  }
+  if (f.problem.keep_out) {
+    const double closest = ClosestOnSamples(r);
+    out << "keep-out      " << (HeldOnSamples(f, r) ? "HELD" : "BROKEN")
+        << " on the checker's samples: closest pair " << FormatG(closest, 6) << " m (max norm) "
+        << (HeldOnSamples(f, r) ? ">=" : "<") << " " << FormatG(f.problem.keep_out->half_size_m, 6)
+        << " m" << (HeldOnSamples(f, r) ? "" : ": pairs cross between checks (a finer check grid)")
         << "\n";
   }
   for (const transcription::PairDistance& p : r.checked_pairs) {

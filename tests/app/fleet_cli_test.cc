@@ -166,6 +166,23 @@ TEST(FleetCli, SwapStepsAsideForOneMoreSlot) {
   ASSERT_EQ(s["pairs"].size(), 1u);
   EXPECT_GE(s["pairs"][0]["planned_min_box_distance_m"].get<double>(), 0.5 - 1e-9);
   for (const json& m : s["members"]) EXPECT_TRUE(m["check"]["passed"].get<bool>());
+  EXPECT_TRUE(s["keep_out"]["held_on_samples"].get<bool>());
+  EXPECT_HAS(r.run.out, "keep-out      HELD");
+
+  // Checked once a second, the swap of 2 m/s fits between the checks (at
+  // 1 m/s relative speed the 1-m cube is crossed in 1 s, centred between
+  // two whole seconds): the MILP keeps the plan without a step aside and the
+  // re-check on the checker's fine samples reports the pair inside the cube.
+  const std::string coarse = Edited(kSwap, dir, [](json* j) {
+    (*j)["fleet"]["keep_out"].erase("check_step_s");
+    (*j)["fleet"]["keep_out"]["check_times_s"] = {1, 2, 3, 4, 5, 6};
+  });
+  const FleetRun c = SolveFleetFile(coarse, dir + "/coarse");
+  ASSERT_EQ(c.run.exit_code, 0) << c.run.Describe();
+  EXPECT_NEAR(c.summary["objective"].get<double>(), 2.0, 1e-9);
+  EXPECT_FALSE(c.summary["keep_out"]["held_on_samples"].get<bool>());
+  EXPECT_LT(c.summary["keep_out"]["min_box_distance_on_samples_m"].get<double>(), 0.5);
+  EXPECT_HAS(c.run.out, "keep-out      BROKEN");
 
   // Without the keep-out the swap costs 2 m/s and the members meet.
   const std::string free = Edited(kSwap, dir, [](json* j) { (*j)["fleet"].erase("keep_out"); });
