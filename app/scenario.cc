@@ -130,7 +130,7 @@ void ParseSchweighartSedwick(JsonObject& m, Scenario* s) {
   m.ExactlyOneOf({"altitude_m", "radius_m"}, /*required=*/true);
   const double radius_m =
       m.Has("radius_m") ? m.Number("radius_m", Bound::kPositive)
-                        : dynamics::kSsEarthRadius_m + m.Number("altitude_m", Bound::kNonNegative);
+                        : common::kEarthRadius_m + m.Number("altitude_m", Bound::kNonNegative);
   const double inclination_deg = m.Number("inclination_deg", Bound::kNonNegative);
   if (inclination_deg > 180.0) {
     m.Fail("inclination_deg", "must be in [0, 180], got " + FormatNumber(inclination_deg));

@@ -15,6 +15,10 @@ inline constexpr double kRadToDeg = 180.0 / kPi;
 inline constexpr double kSecondsPerDay = 86400.0;
 /// Standard gravity g0 of the specific impulse (mass flow = thrust / (g0 Isp)).
 inline constexpr double kStandardGravity_m_s2 = 9.80665;
+/// Earth's gravitational parameter and equatorial (geopotential reference)
+/// radius, EGM2008 / IERS values.
+inline constexpr double kEarthMu_m3_s2 = 3.986004418e14;
+inline constexpr double kEarthRadius_m = 6378137.0;
 
 }  // namespace thrustsched::common
 

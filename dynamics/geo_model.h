@@ -50,14 +50,14 @@ namespace thrustsched::dynamics {
 /// standard values the thesis does not give: EGM2008 (mu_E, R_E), IERS (omega_E),
 /// JPL ephemerides (mu_S, mu_M), IAU 2012 (AU), Montenbruck & Gill 2000 sec. 3.4 (P).
 namespace geo {
-inline constexpr double kEarthMu = 3.986004418e14;             // m^3/s^2 (EGM2008 / IERS)
-inline constexpr double kEarthRadius = 6378137.0;              // m, geopotential reference radius
-inline constexpr double kEarthRotationRate = 7.2921158553e-5;  // rad/s, d(GMST)/dt
-inline constexpr double kSunMu = 1.32712440018e20;             // m^3/s^2
-inline constexpr double kMoonMu = 4.902800066e12;              // m^3/s^2
-inline constexpr double kAstronomicalUnit = 1.495978707e11;    // m
-inline constexpr double kSolarPressure = 4.56e-6;              // N/m^2 at 1 AU
-inline constexpr double kStationRadius = 42165765.0;           // m, a_mp (thesis (B.31))
+inline constexpr double kEarthMu = common::kEarthMu_m3_s2;      // m^3/s^2 (EGM2008 / IERS)
+inline constexpr double kEarthRadius = common::kEarthRadius_m;  // m, geopotential reference radius
+inline constexpr double kEarthRotationRate = 7.2921158553e-5;   // rad/s, d(GMST)/dt
+inline constexpr double kSunMu = 1.32712440018e20;              // m^3/s^2
+inline constexpr double kMoonMu = 4.902800066e12;               // m^3/s^2
+inline constexpr double kAstronomicalUnit = 1.495978707e11;     // m
+inline constexpr double kSolarPressure = 4.56e-6;               // N/m^2 at 1 AU
+inline constexpr double kStationRadius = 42165765.0;            // m, a_mp (thesis (B.31))
 inline constexpr double kWindowHalfWidthRad = 0.05 * common::kPi / 180.0;  // delta
 }  // namespace geo
 

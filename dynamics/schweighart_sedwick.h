@@ -62,13 +62,13 @@
 
 #include <Eigen/Core>
 
+#include "common/constants.h"
 #include "dynamics/linear_model.h"
 
 namespace thrustsched::dynamics {
 
-/// Earth constants of the model's defaults (EGM2008 values, as dynamics::geo).
-inline constexpr double kSsEarthMu_m3_s2 = 3.986004418e14;
-inline constexpr double kSsEarthRadius_m = 6378137.0;
+/// J2 of the model's default (EGM2008's C20 as the unnormalised J2); mu and
+/// the radius are common::kEarthMu_m3_s2 and common::kEarthRadius_m.
 inline constexpr double kSsEarthJ2 = 1.08262668e-3;
 
 /// Which cross-track equation (header comment).
@@ -86,8 +86,8 @@ class SchweighartSedwickModel final : public LinearModel {
   SchweighartSedwickModel(double reference_radius_m, double inclination_rad,
                           double length_scale_m = 1000.0,
                           CrossTrack cross_track = CrossTrack::kEqualInclination,
-                          double mu_m3_s2 = kSsEarthMu_m3_s2, double j2 = kSsEarthJ2,
-                          double earth_radius_m = kSsEarthRadius_m);
+                          double mu_m3_s2 = common::kEarthMu_m3_s2, double j2 = kSsEarthJ2,
+                          double earth_radius_m = common::kEarthRadius_m);
 
   std::string_view name() const override { return "schweighart_sedwick"; }
   int num_states() const override { return 6; }

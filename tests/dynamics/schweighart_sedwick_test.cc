@@ -39,7 +39,7 @@ using ::testing::ThrowsMessage;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat3 = Eigen::Matrix3d;
 
-constexpr double kMu = kSsEarthMu_m3_s2, kRe = kSsEarthRadius_m, kJ2 = kSsEarthJ2;
+constexpr double kMu = common::kEarthMu_m3_s2, kRe = common::kEarthRadius_m, kJ2 = kSsEarthJ2;
 constexpr double kLeoRadius_m = kRe + 650e3;
 
 // ---------------------------------------------------------------- nonlinear reference
