@@ -15,7 +15,7 @@ from collections.abc import Mapping
 from typing import Any, Callable, Dict, List, Optional, Union
 
 from . import _core
-from ._scenario import PathLike, ScenarioError, _check_finite
+from ._scenario import PathLike, _document_text
 
 
 class FleetResult:
@@ -73,20 +73,12 @@ def fleet(scenario: Union[PathLike, Mapping], *, time_limit_s: Optional[float] =
     Ctrl-C stops the solve and returns the best schedules found
     (``interrupted``), the second raises KeyboardInterrupt. ``progress(dict)``
     receives the solver's progress reports."""
-    if isinstance(scenario, (str, os.PathLike)):
-        source = os.fspath(scenario)
-        if os.path.isdir(source):
-            raise ScenarioError(f"{source}: is a folder, not a fleet scenario file")
-        with open(source, "r", encoding="utf-8") as f:
-            text = f.read()
-        folder = os.path.dirname(source) if base_dir is None else os.fspath(base_dir)
-    elif isinstance(scenario, Mapping):
-        _check_finite(dict(scenario), "fleet scenario")
-        source = ""
-        text = json.dumps(dict(scenario))
-        folder = os.getcwd() if base_dir is None else os.fspath(base_dir)
+    text, source = _document_text(scenario, "fleet scenario", "fleet")
+    if base_dir is not None:
+        folder = os.fspath(base_dir)
     else:
-        raise TypeError(f"fleet: scenario must be a path or a dict, got {type(scenario).__name__}")
+        folder = os.path.dirname(source) if source else os.getcwd()
+    source = source or ""
     if progress is not None and not callable(progress):
         raise TypeError(f"fleet: progress must be callable, got {type(progress).__name__}")
     summary, fleet_csv, schedules, trajectories, interrupted = _core.fleet(

@@ -10,8 +10,8 @@ import copy
 import json
 import math
 import os
-from collections.abc import MutableMapping
-from typing import Any, Iterator, Optional, Union
+from collections.abc import Mapping, MutableMapping
+from typing import Any, Iterator, Optional, Tuple, Union
 
 from . import _core
 
@@ -29,6 +29,22 @@ def _check_finite(value: Any, path: str) -> None:
     elif isinstance(value, (list, tuple)):
         for i, v in enumerate(value):
             _check_finite(v, f"{path}[{i}]")
+
+
+def _document_text(document: Any, kind: str, caller: str) -> Tuple[str, Optional[str]]:
+    """The JSON text of a file path or a dict, and the path (None for a
+    dict): what the commands that take a whole document (transfer, fleet)
+    hand to the C++ parser. ``kind`` names the document in messages."""
+    if isinstance(document, (str, os.PathLike)):
+        source = os.fspath(document)
+        if os.path.isdir(source):
+            raise ScenarioError(f"{source}: is a folder, not a {kind} file")
+        with open(source, "r", encoding="utf-8") as f:
+            return f.read(), source
+    if isinstance(document, Mapping):
+        _check_finite(dict(document), "scenario")
+        return json.dumps(dict(document)), None
+    raise TypeError(f"{caller}: scenario must be a path or a dict, got {type(document).__name__}")
 
 
 class Scenario(MutableMapping):

@@ -11,12 +11,11 @@ from __future__ import annotations
 
 import io
 import json
-import os
 from collections.abc import Mapping
 from typing import Any, Callable, Dict, Optional, Union
 
 from . import _core
-from ._scenario import PathLike, ScenarioError, _check_finite
+from ._scenario import PathLike, _document_text
 
 
 class TransferResult:
@@ -91,18 +90,9 @@ def transfer(scenario: Union[PathLike, Mapping], method: Optional[str] = None,
     "thrust_n", "converged", "duration_s"}`` after every continuation step,
     ``{"phase": "switch", ...}`` after every try of the feedback's optimal
     end and ``{"phase": "stopping", "message"}`` on the first Ctrl-C."""
-    if isinstance(scenario, (str, os.PathLike)):
-        source = os.fspath(scenario)
-        if os.path.isdir(source):
-            raise ScenarioError(f"{source}: is a folder, not a transfer scenario file")
-        with open(source, "r", encoding="utf-8") as f:
-            text = f.read()
-    elif isinstance(scenario, Mapping):
-        _check_finite(dict(scenario), "scenario")
+    text, source = _document_text(scenario, "transfer scenario", "transfer")
+    if source is None:
         source = getattr(scenario, "path", None) or ""
-        text = json.dumps(dict(scenario))
-    else:
-        raise TypeError(f"transfer: scenario must be a path or a dict, got {type(scenario).__name__}")
     if method is not None and not isinstance(method, str):
         raise TypeError(f"transfer: method must be a string, got {type(method).__name__}")
     if progress is not None and not callable(progress):
