@@ -286,16 +286,7 @@ transcription::SolveScheduleOptions CliSolveOptions(const SolveArgs& a, const Sc
   opt.search = s.search_options;
   opt.search.enabled = s.search;
   const bool quiet = a.quiet;
-  // The best incumbent seen so far: progress reports between incumbents may
-  // carry NaN for it, and the line should still show it.
-  auto best = std::make_shared<double>(std::nan(""));
-  opt.milp.progress = [quiet, best, &err,
-                       hook = a.hooks.on_progress](const milp::SolveProgress& p) {
-    if (hook) hook(p);
-    if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
-    if (quiet || p.wall_seconds < 3.0) return;
-    err << "  [" << Secs(p.wall_seconds) << "] " << ProgressLine(p, *best) << "\n";
-  };
+  opt.milp.progress = CliProgress(quiet, err, a.hooks.on_progress);
   opt.milp.interrupt = InterruptWatcher::flag();
   opt.prefix_diagnosis_s = s.diagnosis_time_limit_s;
   opt.announce = [quiet, &err](const std::string& what) {
@@ -318,9 +309,7 @@ void SolveUnderWatcher(const SolveArgs& a, const Scenario& s,
   {
     InterruptWatcher watcher;
     if (s.min_time) {
-      transcription::SolveScheduleOptions o = opt;
-      o.check = s.check;
-      run->min_time = transcription::SolveMinTime(s.problem, *s.min_time, *solver, o);
+      run->min_time = SolveScenarioMinTime(s, *solver, opt);
       run->result = MinTimeScheduleResult(*run->min_time, *s.min_time);
     } else if (s.problem.conjunction) {
       run->rounds = transcription::SolveConjunction(milp, *solver, opt, s.conjunction_solve);
@@ -456,6 +445,19 @@ void PrintTimesAndCheck(std::ostream& out, const Scenario& s, const SolveRun& ru
 }
 
 }  // namespace
+
+std::function<void(const milp::SolveProgress&)> CliProgress(
+    bool quiet, std::ostream& err, std::function<void(const milp::SolveProgress&)> hook) {
+  // The best incumbent seen so far: progress reports between incumbents may
+  // carry NaN for it, and the line should still show it.
+  auto best = std::make_shared<double>(std::nan(""));
+  return [quiet, best, &err, hook = std::move(hook)](const milp::SolveProgress& p) {
+    if (hook) hook(p);
+    if (std::isfinite(p.objective) && !(p.objective >= *best)) *best = p.objective;
+    if (quiet || p.wall_seconds < 3.0) return;
+    err << "  [" << Secs(p.wall_seconds) << "] " << ProgressLine(p, *best) << "\n";
+  };
+}
 
 int SolveExitCode(milp::SolveStatus status) {
   switch (status) {

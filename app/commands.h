@@ -6,6 +6,8 @@
 #ifndef THRUSTSCHED_APP_COMMANDS_H_
 #define THRUSTSCHED_APP_COMMANDS_H_
 
+#include <functional>
+#include <ostream>
 #include <string>
 
 #include "app/geo_products.h"
@@ -43,6 +45,11 @@ struct SolveArgs {
 };
 /// A file with a "fleet" section is solved as a fleet (app/fleet_command.h).
 int RunSolve(const SolveArgs& args);
+/// The CLI's progress observer: `hook` (if set) on every report, and once a
+/// solve has run 3 s a line on `err` (unless quiet) naming the phase, the
+/// best incumbent so far, the bound and the gap.
+std::function<void(const milp::SolveProgress&)> CliProgress(
+    bool quiet, std::ostream& err, std::function<void(const milp::SolveProgress&)> hook = {});
 /// The exit code of a solve that ended with `status`: 0 optimal or
 /// feasible, 3 infeasible, 4 no solution found, 1 unbounded or error.
 int SolveExitCode(milp::SolveStatus status);

@@ -61,9 +61,8 @@ double ClosestOnSamples(const transcription::FleetResult& r) {
 
 // The keep-out holds between the checks too: no pair inside the cube on the
 // checker's fine samples (the MILP sees the check times only).
-bool HeldOnSamples(const FleetScenario& f, const transcription::FleetResult& r) {
-  return !f.problem.keep_out ||
-         ClosestOnSamples(r) >= f.problem.keep_out->half_size_m * (1.0 - 1e-9) - 1e-9;
+bool HeldOnSamples(const FleetScenario& f, double closest) {
+  return !f.problem.keep_out || closest >= f.problem.keep_out->half_size_m * (1.0 - 1e-9) - 1e-9;
 }
 
 nlohmann::json MemberJson(const FleetScenario& f, const transcription::FleetResult& r, int k) {
@@ -116,18 +115,19 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
   j["n_binaries"] = st.num_binaries;
   j["n_nonzeros"] = st.num_nonzeros;
   const double closest = ClosestOnSamples(r);
-  j["keep_out"] = f.problem.keep_out
-                      ? nlohmann::json{{"half_size_m", f.problem.keep_out->half_size_m},
-                                       {"min_box_distance_on_samples_m", FiniteOrNull(closest)},
-                                       {"held_on_samples", r.has_schedule() && HeldOnSamples(f, r)},
-                                       {"checks", st.keep_out_checks},
-                                       {"checks_clear", st.keep_out_checks_clear},
-                                       {"single_face", st.keep_out_single_face},
-                                       {"faces_impossible", st.keep_out_faces_impossible},
-                                       {"binaries", st.keep_out_binaries},
-                                       {"big_m_min_m", FiniteOrNull(st.big_m_min_m)},
-                                       {"big_m_max_m", FiniteOrNull(st.big_m_max_m)}}
-                      : nlohmann::json(nullptr);
+  j["keep_out"] =
+      f.problem.keep_out
+          ? nlohmann::json{{"half_size_m", f.problem.keep_out->half_size_m},
+                           {"min_box_distance_on_samples_m", FiniteOrNull(closest)},
+                           {"held_on_samples", r.has_schedule() && HeldOnSamples(f, closest)},
+                           {"checks", st.keep_out_checks},
+                           {"checks_clear", st.keep_out_checks_clear},
+                           {"single_face", st.keep_out_single_face},
+                           {"faces_impossible", st.keep_out_faces_impossible},
+                           {"binaries", st.keep_out_binaries},
+                           {"big_m_min_m", FiniteOrNull(st.big_m_min_m)},
+                           {"big_m_max_m", FiniteOrNull(st.big_m_max_m)}}
+          : nlohmann::json(nullptr);
   j["assignment_binaries"] = st.assignment_binaries;
   j["infeasibility_reasons"] = st.infeasibility_reasons;
   j["members"] = nlohmann::json::array();
@@ -183,11 +183,11 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
   }
   if (f.problem.keep_out) {
     const double closest = ClosestOnSamples(r);
-    out << "keep-out      " << (HeldOnSamples(f, r) ? "HELD" : "BROKEN")
+    const bool held = HeldOnSamples(f, closest);
+    out << "keep-out      " << (held ? "HELD" : "BROKEN")
         << " on the checker's samples: closest pair " << FormatG(closest, 6) << " m (max norm) "
-        << (HeldOnSamples(f, r) ? ">=" : "<") << " " << FormatG(f.problem.keep_out->half_size_m, 6)
-        << " m" << (HeldOnSamples(f, r) ? "" : ": pairs cross between checks (a finer check grid)")
-        << "\n";
+        << (held ? ">=" : "<") << " " << FormatG(f.problem.keep_out->half_size_m, 6) << " m"
+        << (held ? "" : ": pairs cross between checks (a finer check grid)") << "\n";
   }
   for (const transcription::PairDistance& p : r.checked_pairs) {
     out << "pair          " << f.problem.members[p.a].name << "-" << f.problem.members[p.b].name
@@ -240,12 +240,7 @@ int RunFleetSolve(const SolveArgs& a) {
   FleetRunHooks hooks;
   hooks.interrupt = InterruptWatcher::flag();
   hooks.command_line = a.command_line;
-  const bool quiet = a.quiet;
-  hooks.progress = [quiet, &err](const milp::SolveProgress& p) {
-    if (quiet || p.wall_seconds < 3.0) return;
-    err << "  [" << FormatG(p.wall_seconds, 3) << " s] incumbent " << FormatG(p.objective, 8)
-        << ", bound " << FormatG(p.best_bound, 8) << ", " << p.nodes << " nodes\n";
-  };
+  hooks.progress = CliProgress(a.quiet, err);
   FleetRun run;
   {
     InterruptWatcher watcher;

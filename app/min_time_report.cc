@@ -31,6 +31,15 @@ nlohmann::json VectorOrNulls(const Eigen::VectorXd& v) {
 
 }  // namespace
 
+transcription::MinTimeResult SolveScenarioMinTime(const Scenario& scenario,
+                                                  const milp::Solver& solver,
+                                                  transcription::SolveScheduleOptions options) {
+  options.check = scenario.check;
+  options.check.nonlinear = nullptr;
+  options.check.nonlinear_default = false;
+  return transcription::SolveMinTime(scenario.problem, *scenario.min_time, solver, options);
+}
+
 transcription::ScheduleResult MinTimeScheduleResult(const transcription::MinTimeResult& r,
                                                     const transcription::MinTimeSpec& spec) {
   transcription::ScheduleResult out;

@@ -2,8 +2,7 @@
 // as the schedule result every output writer takes, its "min_time" object of
 // summary.json and its human line; shared by `solve` and the Python package.
 //
-//   transcription::MinTimeResult mt =
-//       transcription::SolveMinTime(s.problem, *s.min_time, *solver, options);
+//   transcription::MinTimeResult mt = app::SolveScenarioMinTime(s, *solver, options);
 //   transcription::ScheduleResult r = app::MinTimeScheduleResult(mt, *s.min_time);
 //   app::PrintMinTime(std::cout, mt);                      // "arrival ..." line
 //   summary["min_time"] = app::MinTimeJson(mt, *s.min_time);
@@ -22,10 +21,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/scenario.h"
+#include "milp/solver.h"
 #include "transcription/min_time.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::app {
+
+/// SolveMinTime on the scenario's problem and target (requires
+/// scenario.min_time), with the scenario's checker settings but no
+/// nonlinear replay: the arrival and its error come from the linear
+/// re-propagation, and the caller checks the schedule with the full checker
+/// (CheckWithLinearFallback), so the replay is not run twice.
+transcription::MinTimeResult SolveScenarioMinTime(const Scenario& scenario,
+                                                  const milp::Solver& solver,
+                                                  transcription::SolveScheduleOptions options);
 
 transcription::ScheduleResult MinTimeScheduleResult(const transcription::MinTimeResult& result,
                                                     const transcription::MinTimeSpec& spec);

@@ -233,9 +233,7 @@ std::shared_ptr<SolveOutcome> SolveAndCheck(
     std::optional<transcription::MinTimeResult> min_time;
     transcription::ScheduleResult& r = out->result;
     if (ctx.scenario && ctx.scenario->min_time) {
-      transcription::SolveScheduleOptions o = opt;
-      o.check = ctx.scenario->check;
-      min_time = transcription::SolveMinTime(*ctx.problem, *ctx.scenario->min_time, *solver, o);
+      min_time = app::SolveScenarioMinTime(*ctx.scenario, *solver, opt);
       r = app::MinTimeScheduleResult(*min_time, *ctx.scenario->min_time);
     } else if (request.conjunction && ctx.problem->conjunction) {
       rounds = transcription::SolveConjunction(*milp, *solver, opt, *request.conjunction);
