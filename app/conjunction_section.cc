@@ -9,28 +9,6 @@
 namespace thrustsched::app {
 namespace {
 
-// rows x cols numbers given as an array of arrays.
-Eigen::MatrixXd ReadMatrix(JsonObject& o, const std::string& key, int rows, int cols) {
-  const nlohmann::json& v = o.Raw(key);
-  const std::string path = o.FieldPath(key);
-  if (!v.is_array() || static_cast<int>(v.size()) != rows) {
-    throw ScenarioError(path + ": expected " + std::to_string(rows) + " rows of " +
-                        std::to_string(cols) + " numbers, got " + DescribeJson(v));
-  }
-  Eigen::MatrixXd m(rows, cols);
-  for (int i = 0; i < rows; ++i) {
-    const std::string row_path = path + "[" + std::to_string(i) + "]";
-    if (!v[i].is_array() || static_cast<int>(v[i].size()) != cols) {
-      throw ScenarioError(row_path + ": expected " + std::to_string(cols) + " numbers, got " +
-                          DescribeJson(v[i]));
-    }
-    for (int j = 0; j < cols; ++j) {
-      m(i, j) = CheckedNumber(v[i][j], row_path + "[" + std::to_string(j) + "]", Bound::kAny);
-    }
-  }
-  return m;
-}
-
 Eigen::Vector3d ReadVector3(JsonObject& o, const std::string& key) {
   const std::vector<double> v = o.NumberArray(key, 3);
   return Eigen::Vector3d(v[0], v[1], v[2]);
@@ -84,7 +62,7 @@ void ParsePolytope(JsonObject& c, const Eigen::Matrix3d& to_local,
     p.Fail("faces", "expected a non-empty array of [ax, ay, az], got " + DescribeJson(faces));
   }
   const int m = static_cast<int>(faces.size());
-  const Eigen::MatrixXd a = ReadMatrix(p, "faces", m, 3);
+  const Eigen::MatrixXd a = p.NumberMatrix("faces", m, 3);
   const std::vector<double> b = p.NumberArray("offsets_m", m);
   p.Finish();
   spec->polytope.faces = a * to_local.transpose();  // rows a_j^T in the local frame
@@ -114,7 +92,7 @@ void ParseConjunction(JsonObject c, Scenario* s) {
   Eigen::MatrixXd t6 = Eigen::MatrixXd::Zero(6, 6);
   t6.topLeftCorner(3, 3) = to_local;
   t6.bottomRightCorner(3, 3) = to_local;
-  const Eigen::MatrixXd cov = ReadMatrix(c, "covariance", 6, 6);
+  const Eigen::MatrixXd cov = c.NumberMatrix("covariance", 6, 6);
   spec.covariance = t6 * cov * t6.transpose();
   if (c.Has("covariance_repair")) {
     spec.repair = transcription::ParseCovarianceRepair(

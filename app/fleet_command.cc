@@ -91,6 +91,26 @@ nlohmann::json MemberJson(const FleetScenario& f, const transcription::FleetResu
   return j;
 }
 
+nlohmann::json MonteCarloJson(const FleetScenario& f,
+                              const transcription::FleetMonteCarloReport& mc) {
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const transcription::FleetMonteCarloPair& p : mc.pairs) {
+    pairs.push_back({{"member_a", f.problem.members[p.a].name},
+                     {"member_b", f.problem.members[p.b].name},
+                     {"collisions", p.collisions},
+                     {"min_distance_m", FiniteOrNull(p.min_distance_m)}});
+  }
+  return {{"samples", mc.samples},
+          {"seed", f.options.monte_carlo.seed},
+          {"step_s", mc.step_s},
+          {"radius_m", mc.radius_m},
+          {"collisions", mc.collisions},
+          {"min_distance_m", FiniteOrNull(mc.min_distance_m)},
+          {"passed", mc.passed()},
+          {"seconds", mc.seconds},
+          {"pairs", pairs}};
+}
+
 nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::FleetResult& r,
                                 const std::string& command_line, double total_seconds,
                                 bool interrupted) {
@@ -126,8 +146,22 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
                            {"faces_impossible", st.keep_out_faces_impossible},
                            {"binaries", st.keep_out_binaries},
                            {"big_m_min_m", FiniteOrNull(st.big_m_min_m)},
-                           {"big_m_max_m", FiniteOrNull(st.big_m_max_m)}}
+                           {"big_m_max_m", FiniteOrNull(st.big_m_max_m)},
+                           {"instantaneous_threshold", f.problem.keep_out->instantaneous_threshold},
+                           {"quantile", st.keep_out_quantile},
+                           {"margin_max_m", st.keep_out_margin_max_m}}
           : nlohmann::json(nullptr);
+  j["monte_carlo"] = r.monte_carlo ? MonteCarloJson(f, *r.monte_carlo) : nlohmann::json(nullptr);
+  const transcription::FleetStartSummary& start = r.start;
+  j["start"] = start.tried ? nlohmann::json{{"built", start.built},
+                                            {"accepted", start.accepted},
+                                            {"note", start.note},
+                                            {"objective", FiniteOrNull(start.objective)},
+                                            {"bound", FiniteOrNull(start.bound)},
+                                            {"member_solves", start.member_solves},
+                                            {"assignments_tried", start.tries},
+                                            {"seconds", start.seconds}}
+                           : nlohmann::json(nullptr);
   j["assignment_binaries"] = st.assignment_binaries;
   j["infeasibility_reasons"] = st.infeasibility_reasons;
   j["members"] = nlohmann::json::array();
@@ -165,6 +199,14 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
     out << "; keep-out " << r.stats.keep_out_checks << " checks (" << r.stats.keep_out_checks_clear
         << " clear), " << r.stats.keep_out_binaries << " binaries";
   }
+  if (r.start.tried) {
+    out << "\nstart         members alone: " << r.start.note;
+    if (r.start.built) {
+      out << ", objective " << FormatG(r.start.objective, 8) << ", bound "
+          << FormatG(r.start.bound, 8)
+          << (r.start.accepted ? ", accepted" : ", rejected by the fleet rows");
+    }
+  }
   out << "\nstatus        " << StatusName(r.status) << (interrupted ? " (interrupted)" : "");
   if (r.has_schedule()) {
     out << ", objective " << FormatG(r.objective, 8) << ", best bound " << FormatG(r.best_bound, 8)
@@ -188,6 +230,12 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
         << " on the checker's samples: closest pair " << FormatG(closest, 6) << " m (max norm) "
         << (held ? ">=" : "<") << " " << FormatG(f.problem.keep_out->half_size_m, 6) << " m"
         << (held ? "" : ": pairs cross between checks (a finer check grid)") << "\n";
+  }
+  if (r.monte_carlo) {
+    const transcription::FleetMonteCarloReport& mc = *r.monte_carlo;
+    out << "Monte Carlo   " << mc.collisions << " of " << mc.samples
+        << " samples with a pair closer than " << FormatG(mc.radius_m, 6) << " m (closest "
+        << FormatG(mc.min_distance_m, 6) << " m): " << (mc.passed() ? "PASSED" : "FAILED") << "\n";
   }
   for (const transcription::PairDistance& p : r.checked_pairs) {
     out << "pair          " << f.problem.members[p.a].name << "-" << f.problem.members[p.b].name

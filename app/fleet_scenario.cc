@@ -66,19 +66,7 @@ Eigen::MatrixXd ReadMap(JsonObject& o, int n) {
     o.Fail("map", "expected \"position\", \"state\" or a non-empty array of rows of " +
                       std::to_string(n) + " numbers, got " + DescribeJson(v));
   }
-  Eigen::MatrixXd a(static_cast<int>(v.size()), n);
-  for (size_t r = 0; r < v.size(); ++r) {
-    const std::string row = o.FieldPath("map") + "[" + std::to_string(r) + "]";
-    if (!v[r].is_array() || static_cast<int>(v[r].size()) != n) {
-      throw ScenarioError(row + ": expected " + std::to_string(n) + " numbers, got " +
-                          DescribeJson(v[r]));
-    }
-    for (int c = 0; c < n; ++c) {
-      a(static_cast<int>(r), c) =
-          CheckedNumber(v[r][c], row + "[" + std::to_string(c) + "]", Bound::kAny);
-    }
-  }
-  return a;
+  return o.NumberMatrix("map", -1, n);
 }
 
 Eigen::VectorXd ReadVector(JsonObject& o, std::string_view key, int size, Bound bound) {
@@ -126,6 +114,13 @@ void ParseBalance(JsonObject& fleet, FleetScenario* f) {
 void ParseKeepOut(JsonObject o, FleetScenario* f) {
   transcription::FleetKeepOut k;
   k.half_size_m = o.Number("half_size_m", Bound::kPositive);
+  if (o.Has("instantaneous_threshold")) {
+    k.instantaneous_threshold = o.Number("instantaneous_threshold", Bound::kPositive);
+    if (!(k.instantaneous_threshold < 0.5)) {
+      o.Fail("instantaneous_threshold",
+             "must be in (0, 0.5), got " + FormatNumber(k.instantaneous_threshold));
+    }
+  }
   const std::vector<double>& grid = f->members.front().problem.grid;
   o.ExactlyOneOf({"check_step_s", "check_times_s"}, /*required=*/true);
   if (o.Has("check_times_s")) {
@@ -181,6 +176,8 @@ void ParseAssignment(JsonObject o, FleetScenario* f) {
       v[r] = CheckedNumber(slots[s][r], path + "[" + std::to_string(r) + "]", Bound::kAny);
     a.slots.push_back(v);
   }
+  if (o.Has("tolerance"))
+    a.tolerance = ReadVector(o, "tolerance", static_cast<int>(a.map.rows()), Bound::kNonNegative);
   o.Finish();
   f->problem.assignment = std::move(a);
 }
@@ -191,6 +188,28 @@ void ParseFleetSolver(JsonObject o, FleetScenario* f) {
   if (auto g = o.OptionalNumber("relative_gap", Bound::kNonNegative)) so.relative_gap = *g;
   so.threads = o.OptionalInteger("threads", 1, 64).value_or(so.threads);
   so.random_seed = o.OptionalInteger("random_seed", 0, 2147483647).value_or(so.random_seed);
+  o.Finish();
+}
+
+// "initial_covariance" (n x n, SI) or "initial_std" (n standard deviations:
+// a diagonal covariance), or neither (the initial state is known exactly).
+Eigen::MatrixXd ReadInitialCovariance(JsonObject& m, int n) {
+  m.ExactlyOneOf({"initial_covariance", "initial_std"}, /*required=*/false);
+  if (m.Has("initial_std")) {
+    const Eigen::VectorXd sd = ReadVector(m, "initial_std", n, Bound::kNonNegative);
+    return sd.array().square().matrix().asDiagonal();
+  }
+  if (!m.Has("initial_covariance")) return Eigen::MatrixXd();
+  // Symmetry and definiteness: FleetProblem::IsValid, naming the member.
+  return m.NumberMatrix("initial_covariance", n, n);
+}
+
+void ParseMonteCarlo(JsonObject o, FleetScenario* f) {
+  transcription::FleetMonteCarloOptions& mc = f->options.monte_carlo;
+  mc.samples = o.OptionalInteger("samples", 0, 10000000).value_or(mc.samples);
+  mc.seed = static_cast<std::uint64_t>(
+      o.OptionalInteger("seed", 0, 2147483647).value_or(static_cast<int>(mc.seed)));
+  mc.steps = o.OptionalInteger("steps", 1, kMaxIntervals).value_or(mc.steps);
   o.Finish();
 }
 
@@ -211,8 +230,9 @@ void ParseMembers(JsonObject& fleet, const std::string& base_dir, FleetScenario*
     if (f->problem.MemberIndex(name) >= 0) m.Fail("name", "\"" + name + "\" is used twice");
     Scenario s = ReadMemberScenario(m, base_dir);
     CheckMember(s, m);
+    Eigen::MatrixXd covariance = ReadInitialCovariance(m, s.problem.model->num_states());
     m.Finish();
-    f->problem.members.push_back({name, s.problem});
+    f->problem.members.push_back({name, s.problem, std::move(covariance)});
     f->members.push_back(std::move(s));
   }
 }
@@ -254,6 +274,14 @@ FleetScenario ParseFleetScenario(const nlohmann::json& document, const std::stri
   if (fleet.Has("keep_out")) ParseKeepOut(fleet.Object("keep_out"), &f);
   if (fleet.Has("assignment")) ParseAssignment(fleet.Object("assignment"), &f);
   if (fleet.Has("solver")) ParseFleetSolver(fleet.Object("solver"), &f);
+  if (fleet.Has("monte_carlo")) {
+    if (!f.problem.keep_out || !f.problem.HasInitialCovariance()) {
+      fleet.Fail("monte_carlo",
+                 "needs a keep_out and a member with initial_covariance or initial_std (it samples "
+                 "the initial states)");
+    }
+    ParseMonteCarlo(fleet.Object("monte_carlo"), &f);
+  }
   fleet.Finish();
   std::string err;
   if (!f.problem.IsValid(&err)) throw ScenarioError("fleet: " + err);

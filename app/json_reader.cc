@@ -326,6 +326,28 @@ std::vector<double> JsonObject::NumberArray(std::string_view key, int size, Boun
   return out;
 }
 
+Eigen::MatrixXd JsonObject::NumberMatrix(std::string_view key, int rows, int cols, Bound bound) {
+  const nlohmann::json& v = Require(key);
+  const std::string path = FieldPath(key);
+  const std::string shape = (rows >= 0 ? std::to_string(rows) : std::string("one or more")) +
+                            " rows of " + std::to_string(cols) + " numbers";
+  if (!v.is_array() || v.empty() || (rows >= 0 && static_cast<int>(v.size()) != rows))
+    throw ScenarioError(path + ": expected " + shape + ", got " + DescribeJson(v));
+  Eigen::MatrixXd out(static_cast<int>(v.size()), cols);
+  for (size_t i = 0; i < v.size(); ++i) {
+    const std::string row_path = path + "[" + std::to_string(i) + "]";
+    if (!v[i].is_array() || static_cast<int>(v[i].size()) != cols) {
+      throw ScenarioError(row_path + ": expected " + std::to_string(cols) + " numbers, got " +
+                          DescribeJson(v[i]));
+    }
+    for (int j = 0; j < cols; ++j) {
+      out(static_cast<int>(i), j) =
+          CheckedNumber(v[i][j], row_path + "[" + std::to_string(j) + "]", bound);
+    }
+  }
+  return out;
+}
+
 std::vector<std::string> JsonObject::StringArray(std::string_view key) {
   const nlohmann::json& v = Require(key);
   if (!v.is_array()) {

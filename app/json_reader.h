@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 namespace thrustsched::app {
@@ -97,6 +98,9 @@ class JsonObject {
   std::string Choice(std::string_view key, const std::vector<std::string>& choices);
   /// Array of finite numbers; `size` < 0 = any non-empty length.
   std::vector<double> NumberArray(std::string_view key, int size, Bound bound = Bound::kAny);
+  /// Array of `rows` arrays of `cols` finite numbers (rows < 0: any non-empty
+  /// count), row by row.
+  Eigen::MatrixXd NumberMatrix(std::string_view key, int rows, int cols, Bound bound = Bound::kAny);
   /// Array of strings (possibly empty), no duplicates.
   std::vector<std::string> StringArray(std::string_view key);
   /// Nested object.

@@ -140,3 +140,22 @@ std::vector<Eigen::VectorXd> PropagateLinear(const LinearModel& model,
 }
 
 }  // namespace thrustsched::dynamics
+
+namespace thrustsched::dynamics {
+
+LinearFlow PropagateFlow(const LinearModel& model, double t0,
+                         const std::vector<double>& sample_times, double tolerance) {
+  const int n = model.num_states();
+  const Eigen::MatrixXd none = Eigen::MatrixXd::Zero(model.num_inputs(), 1);
+  LinearFlow f;
+  f.drift = PropagateLinear(model, none, Eigen::VectorXd::Zero(n), t0, {}, sample_times, tolerance);
+  f.phi.assign(sample_times.size(), Eigen::MatrixXd(n, n));
+  for (int c = 0; c < n; ++c) {
+    const auto xs =
+        PropagateLinear(model, none, Eigen::VectorXd::Unit(n, c), t0, {}, sample_times, tolerance);
+    for (size_t i = 0; i < sample_times.size(); ++i) f.phi[i].col(c) = xs[i] - f.drift[i];
+  }
+  return f;
+}
+
+}  // namespace thrustsched::dynamics

@@ -45,6 +45,19 @@ std::vector<Eigen::VectorXd> PropagateLinear(const LinearModel& model,
                                              const std::vector<double>& sample_times,
                                              double tolerance = 1e-11);
 
+/// The flow of the unforced model from t0: x(t) = phi(t, t0) x(t0) + drift(t)
+/// at each sample time (drift: the response of a zero state to d).
+struct LinearFlow {
+  std::vector<Eigen::MatrixXd> phi;
+  std::vector<Eigen::VectorXd> drift;
+};
+
+/// phi and drift by PropagateLinear of the zero state and of the n unit
+/// states (what a Monte Carlo of the initial state, or a covariance carried
+/// along a plan, needs). @throws as PropagateLinear.
+LinearFlow PropagateFlow(const LinearModel& model, double t0,
+                         const std::vector<double>& sample_times, double tolerance = 1e-11);
+
 }  // namespace thrustsched::dynamics
 
 #endif  // THRUSTSCHED_DYNAMICS_PROPAGATION_H_

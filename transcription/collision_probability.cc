@@ -271,4 +271,11 @@ double GaussianSampler::Next() {
   return u * f;
 }
 
+double SegmentDistanceToOrigin(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d v = b - a;
+  const double vv = v.squaredNorm();
+  const double s = vv > 0.0 ? std::clamp(-a.dot(v) / vv, 0.0, 1.0) : 0.0;
+  return (a + s * v).norm();
+}
+
 }  // namespace thrustsched::transcription

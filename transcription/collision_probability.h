@@ -59,6 +59,10 @@ Eigen::MatrixXd ClipToPositiveSemidefinite(const Eigen::MatrixXd& covariance,
 /// @throws std::invalid_argument if an eigenvalue is below -1e-12 of the largest.
 Eigen::MatrixXd CovarianceFactor(const Eigen::MatrixXd& covariance);
 
+/// Distance from the origin to the segment [a, b] (the closest approach of a
+/// relative position moving linearly from a to b).
+double SegmentDistanceToOrigin(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 /// Standard normal numbers from a 64-bit Mersenne twister by the Marsaglia
 /// polar method: the same sequence on every platform and standard library
 /// (std::normal_distribution is implementation-defined).

@@ -43,28 +43,6 @@ Timeline Merge(std::vector<std::vector<double>> lists) {
   return out;
 }
 
-// Phi(t, t0) and the free (drift) response from a zero state, at every time,
-// by adaptive integration of the continuous model.
-struct Fundamental {
-  std::vector<Eigen::MatrixXd> phi;
-  std::vector<Eigen::VectorXd> drift;
-};
-
-Fundamental Propagate(const dynamics::LinearModel& model, double t0,
-                      const std::vector<double>& times, double tol) {
-  const int n = model.num_states();
-  const Eigen::MatrixXd none = Eigen::MatrixXd::Zero(model.num_inputs(), 1);
-  Fundamental f;
-  f.drift = dynamics::PropagateLinear(model, none, Eigen::VectorXd::Zero(n), t0, {}, times, tol);
-  f.phi.assign(times.size(), Eigen::MatrixXd(n, n));
-  for (int c = 0; c < n; ++c) {
-    const auto xs =
-        dynamics::PropagateLinear(model, none, Eigen::VectorXd::Unit(n, c), t0, {}, times, tol);
-    for (size_t i = 0; i < times.size(); ++i) f.phi[i].col(c) = xs[i] - f.drift[i];
-  }
-  return f;
-}
-
 // The planned primary at every time (after the impulse of a node at that node).
 std::vector<Eigen::VectorXd> PrimaryPath(const ScheduleProblem& p, const std::vector<Burn>& burns,
                                          const std::vector<Impulse>& impulses,
@@ -104,14 +82,6 @@ std::vector<Eigen::VectorXd> PrimaryPath(const ScheduleProblem& p, const std::ve
   return out;
 }
 
-// Distance from the origin to the segment [a, b].
-double SegmentDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const Eigen::Vector3d v = b - a;
-  const double vv = v.squaredNorm();
-  const double s = vv > 0.0 ? std::clamp(-a.dot(v) / vv, 0.0, 1.0) : 0.0;
-  return (a + s * v).norm();
-}
-
 // Relative-state data on the timeline (model states, local positions).
 struct Relative {
   Eigen::VectorXd secondary0;                  // model state at t0
@@ -119,7 +89,7 @@ struct Relative {
   std::vector<Eigen::VectorXd> secondary;      // mean, model state
   std::vector<Eigen::VectorXd> primary, free;  // planned and unmanoeuvred
   std::vector<Eigen::MatrixXd> position;       // 3 x n local position map
-  Fundamental f;
+  dynamics::LinearFlow f;
 };
 
 Relative BuildRelative(const ScheduleProblem& p, const std::vector<Burn>& burns,
@@ -127,7 +97,7 @@ Relative BuildRelative(const ScheduleProblem& p, const std::vector<Burn>& burns,
   const ConjunctionSpec& c = *p.conjunction;
   const dynamics::LinearModel& model = *p.model;
   Relative r;
-  r.f = Propagate(model, p.grid.front(), tl.t, tol);
+  r.f = dynamics::PropagateFlow(model, p.grid.front(), tl.t, tol);
   const Eigen::MatrixXd sigma = EffectiveCovariance(c, model.time_scale());
   const AffineMap local = HcwCoordinates(model, c.state_time_s);
   const Eigen::MatrixXd to_state = local.map.inverse();
@@ -325,8 +295,8 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
         const Eigen::Vector3d dev = g[k] * delta;
         const Eigen::Vector3d now_plan = mu_plan[k] + dev, now_free = mu_free[k] + dev;
         if (k > 0) {
-          d_plan = std::min(d_plan, SegmentDistance(prev_plan, now_plan));
-          d_free = std::min(d_free, SegmentDistance(prev_free, now_free));
+          d_plan = std::min(d_plan, SegmentDistanceToOrigin(prev_plan, now_plan));
+          d_free = std::min(d_free, SegmentDistanceToOrigin(prev_free, now_free));
         }
         prev_plan = now_plan;
         prev_free = now_free;
@@ -342,7 +312,7 @@ ConjunctionCheckReport CheckConjunction(const ScheduleProblem& p, const std::vec
       Eigen::Vector3d prev;
       for (int k = 0; k < nf; ++k) {
         const Eigen::Vector3d now = inertial.primary[k] - orbit.At(fine[k]).head<3>();
-        if (k > 0) d_nl = std::min(d_nl, SegmentDistance(prev, now));
+        if (k > 0) d_nl = std::min(d_nl, SegmentDistanceToOrigin(prev, now));
         prev = now;
       }
       min_nl = std::min(min_nl, d_nl);

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "common/format.h"
+#include "transcription/collision_probability.h"
 #include "transcription/internal/fleet_reach.h"
 #include "transcription/internal/row_buffer.h"
 
@@ -34,6 +36,7 @@ FleetMilp::FleetMilp(const FleetProblem& fleet, const BuildOptions& options)
   if (fleet_.keep_out) AddKeepOut();
   if (fleet_.assignment) AddAssignment();
   lp_ = model_.ToLpData();
+  IndexKeepOutGroups();
   stats_.num_columns = lp_.num_cols();
   stats_.num_rows = lp_.num_rows();
   stats_.num_nonzeros = lp_.num_nonzeros();
@@ -90,6 +93,7 @@ void FleetMilp::AddObjectiveAndBalance() {
   if (b.kind == FuelBalanceKind::kMinMax) {
     // Epigraph: t >= J_k for every member; min t + w sum_k J_k.
     const milp::Variable t = model_.AddContinuous(-kInf, kInf, "fleet_max_consumption");
+    balance_column_ = t.index();
     for (int k = 0; k < count; ++k) {
       milp::LinearExpr e = ConsumptionOf(k);
       e.AddTerm(t, -1.0);
@@ -143,44 +147,91 @@ void FleetMilp::AddCouplings() {
 }
 
 // Pairwise keep-out: outside the cube of half-size R around the other member.
+namespace {
+
+// The chance-constraint margin of each face of one pair at one check (zero
+// without a risk threshold or covariances), Serra 2015 (4.19).
+Eigen::Matrix<double, 6, 1> FaceMargins(const FleetProblem& fleet,
+                                        const std::vector<internal::MemberReach>& reach,
+                                        double quantile, int k, int l, int q) {
+  Eigen::Matrix<double, 6, 1> margins = Eigen::Matrix<double, 6, 1>::Zero();
+  if (quantile <= 0.0) return margins;
+  Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+  for (int m : {k, l}) {
+    const Eigen::MatrixXd& sigma = fleet.members[m].initial_covariance;
+    if (sigma.size() != 0) c += reach[m].MapCovariance(q, sigma);
+  }
+  for (int f = 0; f < 6; ++f) margins[f] = quantile * std::sqrt(std::max(c(f / 2, f / 2), 0.0));
+  return margins;
+}
+
+struct KeepOutFace {
+  Eigen::Vector3d a;
+  double big_m = 0.0;
+  double rhs = 0.0;  // R plus the face's margin (m)
+};
+
+// The faces of one pair's check that the MILP must choose from: a face every
+// pair of plans satisfies clears the check, a face none can satisfy is
+// dropped (the one missed by least is kept for the infeasibility reason).
+struct FaceChoice {
+  bool clear = false;
+  std::vector<KeepOutFace> faces;
+  int impossible = 0;
+  double closest_miss = kInf;
+  KeepOutFace closest;
+};
+
+FaceChoice ChooseFaces(const internal::MemberReach& reach_k, const internal::MemberReach& reach_l,
+                       int q, double radius, const Eigen::Matrix<double, 6, 1>& margins) {
+  FaceChoice out;
+  out.closest = {Eigen::Vector3d::Zero(), 0.0, radius};
+  for (int f = 0; f < 6; ++f) {
+    Eigen::Vector3d a = Eigen::Vector3d::Zero();
+    a[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
+    const double rhs = radius + margins[f];
+    const auto [lo_k, hi_k] = reach_k.Range(q, a);
+    const auto [lo_l, hi_l] = reach_l.Range(q, a);
+    const double low = lo_k - hi_l, high = hi_k - lo_l;
+    if (low >= rhs) {
+      out.clear = true;
+      return out;
+    }
+    if (high < rhs) {
+      ++out.impossible;
+      if (rhs - high < out.closest_miss) out.closest_miss = rhs - high, out.closest = {a, 0.0, rhs};
+    } else {
+      out.faces.push_back({a, BigM(rhs - low, rhs), rhs});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 void FleetMilp::AddKeepOut() {
   const FleetKeepOut& ko = *fleet_.keep_out;
   const int count = num_members();
   std::vector<internal::MemberReach> reach;
   for (int k = 0; k < count; ++k)
     reach.emplace_back(*members_[k], fleet_.position_map, ko.check_times_s, options_);
+  if (ko.instantaneous_threshold > 0.0)
+    stats_.keep_out_quantile = NormalQuantile(1.0 - ko.instantaneous_threshold);
   internal::RowBuffer rows(/*scale=*/true);
   std::vector<double> big_ms;
-  const double radius = ko.half_size_m;
   for (int k = 0; k < count; ++k) {
     for (int l = k + 1; l < count; ++l) {
       const std::string pair = fleet_.members[k].name + "_" + fleet_.members[l].name;
       for (size_t q = 0; q < ko.check_times_s.size(); ++q) {
         ++stats_.keep_out_checks;
-        struct Face {
-          Eigen::Vector3d a;
-          double big_m;
-        };
-        std::vector<Face> faces;
-        double closest_miss = kInf;
-        Eigen::Vector3d closest = Eigen::Vector3d::Zero();
-        bool clear = false;
-        for (int f = 0; f < 6 && !clear; ++f) {
-          Eigen::Vector3d a = Eigen::Vector3d::Zero();
-          a[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
-          const auto [lo_k, hi_k] = reach[k].Range(q, a);
-          const auto [lo_l, hi_l] = reach[l].Range(q, a);
-          const double low = lo_k - hi_l, high = hi_k - lo_l;
-          if (low >= radius) {
-            clear = true;
-          } else if (high < radius) {
-            ++stats_.keep_out_faces_impossible;
-            if (radius - high < closest_miss) closest_miss = radius - high, closest = a;
-          } else {
-            faces.push_back({a, BigM(radius - low, radius)});
-          }
-        }
-        if (clear) {
+        const Eigen::Matrix<double, 6, 1> margins =
+            FaceMargins(fleet_, reach, stats_.keep_out_quantile, k, l, static_cast<int>(q));
+        stats_.keep_out_margin_max_m = std::max(stats_.keep_out_margin_max_m, margins.maxCoeff());
+        FaceChoice choice =
+            ChooseFaces(reach[k], reach[l], static_cast<int>(q), ko.half_size_m, margins);
+        stats_.keep_out_faces_impossible += choice.impossible;
+        std::vector<KeepOutFace>& faces = choice.faces;
+        if (choice.clear) {
           ++stats_.keep_out_checks_clear;
           continue;
         }
@@ -188,9 +239,10 @@ void FleetMilp::AddKeepOut() {
         if (faces.empty()) {
           stats_.infeasibility_reasons.push_back(
               "keep-out " + pair + " at t = " + common::FormatG(ko.check_times_s[q], 10) +
-              " s: no face of the cube can be left within the thrust bounds (missed by " +
-              common::FormatG(closest_miss, 10) + " m)");
-          faces.push_back({closest, 0.0});
+              " s: no face of the cube (with its margin) can be left within the thrust bounds "
+              "(missed by " +
+              common::FormatG(choice.closest_miss, 10) + " m)");
+          faces.push_back(choice.closest);
         }
         std::vector<milp::Variable> w;
         if (faces.size() > 1) {
@@ -204,7 +256,7 @@ void FleetMilp::AddKeepOut() {
         }
         for (size_t f = 0; f < faces.size(); ++f) {
           rows.Begin();
-          double rhs = radius;
+          double rhs = faces[f].rhs;
           for (int side = 0; side < 2; ++side) {
             const int member = side == 0 ? k : l;
             const double sign = side == 0 ? 1.0 : -1.0;
@@ -216,6 +268,7 @@ void FleetMilp::AddKeepOut() {
           rows.End(rhs, kInf, "fleet_keep_out_" + tag + "_" + std::to_string(f));
         }
         if (!w.empty()) {
+          keep_out_tags_.emplace_back(tag, static_cast<int>(faces.size()));
           model_.AddConstraint(milp::LinearExpr::Sum(w), -kInf, static_cast<double>(w.size()) - 1.0,
                                "fleet_keep_out_pick_" + tag);
         }
@@ -268,14 +321,16 @@ void FleetMilp::AddAssignment() {
         low -= hi_ref;
         high -= lo_ref;
       }
+      const double tol = a.tolerance.size() == 0 ? 0.0 : a.tolerance[r];
       for (int s = 0; s < count; ++s) {
         const milp::Variable z = slot_binaries_[i][s];
-        const double target = a.slots[s][r];
-        if (target < low || target > high) {  // no plan reaches this slot
+        const double upper = a.slots[s][r] + tol, lower = a.slots[s][r] - tol;
+        if (upper < low || lower > high) {  // no plan reaches this slot
           model_.SetBounds(z, 0.0, 0.0);
           continue;
         }
-        const double m_up = BigM(high - target, target), m_down = BigM(target - low, target);
+        const double m_up = BigM(std::max(high - upper, 0.0), upper);
+        const double m_down = BigM(std::max(lower - low, 0.0), lower);
         m_max = std::max({m_max, m_up, m_down});
         for (int sense = 0; sense < 2; ++sense) {
           rows.Begin();
@@ -288,12 +343,12 @@ void FleetMilp::AddAssignment() {
           }
           const std::string name = "fleet_slot_" + fleet_.members[k].name + "_" +
                                    std::to_string(s) + "_" + std::to_string(r);
-          if (sense == 0) {  // v + M_up z <= target + M_up
+          if (sense == 0) {  // v + M_up z <= target + tol + M_up
             rows.Coef(z.index(), m_up);
-            rows.End(-kInf, target + m_up - shift, name + "_up");
-          } else {  // v - M_down z >= target - M_down
+            rows.End(-kInf, upper + m_up - shift, name + "_up");
+          } else {  // v - M_down z >= target - tol - M_down
             rows.Coef(z.index(), -m_down);
-            rows.End(target - m_down - shift, kInf, name + "_down");
+            rows.End(lower - m_down - shift, kInf, name + "_down");
           }
         }
       }
@@ -335,6 +390,58 @@ std::vector<int> FleetMilp::Slots(const Eigen::VectorXd& x) const {
     out.push_back(best);
   }
   return out;
+}
+
+// The keep-out rows and binaries by name (the rows were buffered and
+// rescaled, so their indices are found in the frozen model).
+void FleetMilp::IndexKeepOutGroups() {
+  if (keep_out_tags_.empty()) return;
+  std::unordered_map<std::string, int> rows, cols;
+  for (int r = 0; r < lp_.num_rows(); ++r) rows.emplace(lp_.row_names[r], r);
+  for (int c = 0; c < lp_.num_cols(); ++c) cols.emplace(lp_.col_names[c], c);
+  for (const auto& [tag, faces] : keep_out_tags_) {
+    KeepOutGroup g;
+    for (int f = 0; f < faces; ++f) {
+      g.rows.push_back(rows.at("fleet_keep_out_" + tag + "_" + std::to_string(f)));
+      g.binaries.push_back(cols.at("fleet_keep_out_w_" + tag + "_" + std::to_string(f)));
+    }
+    keep_out_groups_.groups.push_back(std::move(g));
+  }
+}
+
+Eigen::VectorXd FleetMilp::StartFromPatterns(const std::vector<Eigen::MatrixXi>& patterns,
+                                             const std::vector<int>& slots) const {
+  if (static_cast<int>(patterns.size()) != num_members()) {
+    throw std::invalid_argument("FleetMilp::StartFromPatterns: " + std::to_string(patterns.size()) +
+                                " patterns for " + std::to_string(num_members()) + " members");
+  }
+  const size_t assigned = fleet_.assignment ? fleet_.assignment->members.size() : 0;
+  if (slots.size() != assigned) {
+    throw std::invalid_argument("FleetMilp::StartFromPatterns: " + std::to_string(slots.size()) +
+                                " slots for " + std::to_string(assigned) + " assigned members");
+  }
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(lp_.num_cols());
+  for (int k = 0; k < num_members(); ++k) {
+    const Eigen::VectorXd block = members_[k]->StartFromPattern(patterns[k]);
+    x.segment(offsets_[k], block.size()) = block;
+  }
+  for (size_t i = 0; i < slots.size(); ++i) {
+    if (slots[i] < 0 || slots[i] >= static_cast<int>(assigned)) {
+      throw std::invalid_argument("FleetMilp::StartFromPatterns: slot " + std::to_string(slots[i]) +
+                                  " out of range");
+    }
+    x[slot_binaries_[i][slots[i]].index()] = 1.0;
+  }
+  if (balance_column_ >= 0) {  // the epigraph column at the largest member objective
+    double most = -kInf;
+    for (int k = 0; k < num_members(); ++k) {
+      const Eigen::VectorXd block = x.segment(offsets_[k], members_[k]->lp().num_cols());
+      most = std::max(most, members_[k]->lp().Objective(block));
+    }
+    x[balance_column_] = most;
+  }
+  CompleteKeepOut(lp_, keep_out_groups_, &x);
+  return x;
 }
 
 }  // namespace thrustsched::transcription

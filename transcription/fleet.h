@@ -56,6 +56,8 @@
 #include "milp/model.h"
 #include "milp/solver.h"
 #include "transcription/checker.h"
+#include "transcription/fleet_monte_carlo.h"
+#include "transcription/keep_out.h"
 #include "transcription/problem.h"
 #include "transcription/schedule_milp.h"
 
@@ -64,6 +66,10 @@ namespace thrustsched::transcription {
 struct FleetMember {
   std::string name;  // unique, non-empty: the prefix of the member's columns and rows
   ScheduleProblem problem;
+  /// Covariance (n x n, the state's SI units) of the member's initial state
+  /// at the grid start, independent between members; empty: known exactly.
+  /// Symmetric, positive semi-definite.
+  Eigen::MatrixXd initial_covariance{};
 };
 
 /// map * x_member(t_N) - map * x_reference(t_N) = offset, within +-tolerance
@@ -90,15 +96,23 @@ struct FuelBalance {
 struct FleetKeepOut {
   double half_size_m = 0.0;           // R > 0: |r_k - r_l|_inf >= R at every check
   std::vector<double> check_times_s;  // sorted, inside the grid (a node or between)
+  /// eps' in (0, 0.5): each face row holds with probability >= 1 - eps' under
+  /// the members' initial covariances (the chance constraint of Serra 2015
+  /// (4.19) for a pair: margin c = Phi^-1(1 - eps') sqrt(a^T Sigma_kl(t) a),
+  /// Sigma_kl = P Phi(t) (Sigma_k + Sigma_l) Phi(t)^T P^T, control-independent);
+  /// 0: no margin (the planned positions only).
+  double instantaneous_threshold = 0.0;
 };
 
 /// Members `members[i]` take the slots: map x_i(t_N) - map x_ref(t_N) = slots[s]
-/// for the slot s assigned to i (a permutation: as many slots as members).
+/// (within +-tolerance per row) for the slot s assigned to i (a permutation:
+/// as many slots as members).
 struct SlotAssignment {
   std::vector<int> members;
   int reference = -1;                  // the chief (not among `members`), or -1
   Eigen::MatrixXd map;                 // rows x n
   std::vector<Eigen::VectorXd> slots;  // rows each
+  Eigen::VectorXd tolerance;           // rows, >= 0 (within +-tolerance per row), or empty
 };
 
 struct FleetProblem {
@@ -111,6 +125,8 @@ struct FleetProblem {
 
   /// Index of the member named `name`, -1 if none.
   int MemberIndex(std::string_view name) const;
+  /// Some member has an initial_covariance.
+  bool HasInitialCovariance() const;
   /// Every member valid (ScheduleProblem::IsValid, message prefixed by
   /// "members[k]."), the same grid and state size, on-off mode, names unique,
   /// couplings, balance, keep-out and assignment of consistent sizes and
@@ -130,7 +146,9 @@ struct FleetBuildStats {
   double big_m_min_m = std::numeric_limits<double>::quiet_NaN();  // keep-out big-M
   double big_m_max_m = std::numeric_limits<double>::quiet_NaN();
   double assignment_big_m_max = std::numeric_limits<double>::quiet_NaN();  // map units
-  std::vector<std::string> infeasibility_reasons;                          // found while building
+  double keep_out_quantile = 0.0;                  // Phi^-1(1 - eps'), 0 without a risk threshold
+  double keep_out_margin_max_m = 0.0;              // largest chance-constraint margin c
+  std::vector<std::string> infeasibility_reasons;  // found while building
 };
 
 class FleetMilp {
@@ -158,6 +176,15 @@ class FleetMilp {
   std::vector<double> Consumptions(const Eigen::VectorXd& x) const;
   /// Slot of each assigned member (order of assignment.members); empty without one.
   std::vector<int> Slots(const Eigen::VectorXd& x) const;
+  /// A full column vector (MIP start) from one on-off pattern per member
+  /// (thrusters x intervals) and, with an assignment, the slot of each
+  /// assigned member: each block by ScheduleMilp::StartFromPattern, the slot
+  /// binaries set, at each keep-out check the face with the largest slack
+  /// enforced (CompleteKeepOut), the min-max column at the largest member
+  /// objective. Not necessarily feasible (members alone may collide).
+  /// @throws std::invalid_argument on sizes.
+  Eigen::VectorXd StartFromPatterns(const std::vector<Eigen::MatrixXi>& patterns,
+                                    const std::vector<int>& slots) const;
 
  private:
   void Compose();
@@ -165,6 +192,7 @@ class FleetMilp {
   void AddCouplings();
   void AddKeepOut();
   void AddAssignment();
+  void IndexKeepOutGroups();
   milp::LinearExpr ConsumptionOf(int k) const;
   milp::Variable StateColumn(int k, int node, int component) const;
 
@@ -176,6 +204,10 @@ class FleetMilp {
   milp::LpData lp_;
   FleetBuildStats stats_;
   std::vector<std::vector<milp::Variable>> slot_binaries_;  // [member i][slot s]
+  std::vector<std::pair<std::string, int>>
+      keep_out_tags_;             // (tag, faces) of the checks with binaries
+  KeepOutStats keep_out_groups_;  // their rows and binaries in lp_
+  int balance_column_ = -1;       // kMinMax: the epigraph column
 };
 
 /// Minimum distance of one pair over a set of times.
@@ -191,6 +223,27 @@ struct FleetSolveOptions {
   milp::SolveOptions milp;
   bool check = true;  // CheckSchedule per member and the fleet re-checks below
   CheckOptions checker;
+  /// With the check, a keep-out and an initial covariance on some member:
+  /// the Monte Carlo of the initial states (monte_carlo.samples = 0: none).
+  FleetMonteCarloOptions monte_carlo;
+  /// A first incumbent from the members planned alone by the search
+  /// (transcription/fleet_start.h), given to the solver as a MIP start. It
+  /// spends at most start_time_share of a finite milp.time_limit_s.
+  bool decoupled_start = true;
+  double start_time_share = 0.25;
+};
+
+/// What the decoupled start did (FleetResult::start).
+struct FleetStartSummary {
+  bool tried = false;
+  bool built = false;
+  bool accepted = false;  // the fleet's first incumbent (feasible for the fleet MILP)
+  std::string note;
+  double objective = std::numeric_limits<double>::quiet_NaN();  // sum of the members alone
+  int member_solves = 0;
+  int tries = 0;                                            // FleetStart::tries
+  double bound = std::numeric_limits<double>::quiet_NaN();  // FleetStart::bound
+  double seconds = 0.0;
 };
 
 struct FleetResult {
@@ -213,6 +266,8 @@ struct FleetResult {
   /// from the checker's re-propagated final states (or the decoded ones
   /// without the check), in the map's units (beyond the tolerance: > 0).
   std::vector<double> coupling_residuals;
+  std::optional<FleetMonteCarloReport> monte_carlo;  // see FleetSolveOptions::monte_carlo
+  FleetStartSummary start;
   bool has_schedule() const {
     return status == milp::SolveStatus::kOptimal || status == milp::SolveStatus::kFeasible;
   }

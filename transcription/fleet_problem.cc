@@ -3,6 +3,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
+
 #include "common/format.h"
 #include "transcription/fleet.h"
 
@@ -42,6 +44,25 @@ bool ValidVector(const Eigen::VectorXd& v, int rows, const std::string& field, s
   return true;
 }
 
+bool ValidCovariance(const Eigen::MatrixXd& c, int n, const std::string& field,
+                     std::string* error) {
+  if (c.size() == 0) return true;
+  if (c.rows() != n || c.cols() != n) {
+    return Fail(error, field + ": " + std::to_string(c.rows()) + " x " + std::to_string(c.cols()) +
+                           ", expected " + std::to_string(n) + " x " + std::to_string(n));
+  }
+  if (!c.allFinite()) return Fail(error, field + ": not finite");
+  const double scale = c.cwiseAbs().maxCoeff();
+  if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
+    return Fail(error, field + ": not symmetric");
+  const double lowest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(c).eigenvalues().minCoeff();
+  if (lowest < -1e-12 * scale) {
+    return Fail(error,
+                field + ": not positive semi-definite (eigenvalue " + FormatG(lowest, 6) + ")");
+  }
+  return true;
+}
+
 bool ValidMembers(const FleetProblem& f, std::string* error) {
   if (f.members.empty()) return Fail(error, "members: empty");
   std::set<std::string> names;
@@ -61,6 +82,10 @@ bool ValidMembers(const FleetProblem& f, std::string* error) {
       return Fail(error, field + ".model: " + std::to_string(m.problem.model->num_states()) +
                              " states, members[0] has " +
                              std::to_string(first.model->num_states()));
+    }
+    if (!ValidCovariance(m.initial_covariance, m.problem.model->num_states(),
+                         field + ".initial_covariance", error)) {
+      return false;
     }
     if (m.problem.grid.size() != first.grid.size()) {
       return Fail(error, field + ".grid: " + std::to_string(m.problem.num_intervals()) +
@@ -112,6 +137,11 @@ bool ValidAssignment(const FleetProblem& f, int n, std::string* error) {
       !ValidMap(a.map, n, "assignment", error)) {
     return false;
   }
+  if (a.tolerance.size() != 0) {
+    if (!ValidVector(a.tolerance, static_cast<int>(a.map.rows()), "assignment.tolerance", error))
+      return false;
+    if ((a.tolerance.array() < 0.0).any()) return Fail(error, "assignment.tolerance: negative");
+  }
   std::set<int> seen;
   for (size_t i = 0; i < a.members.size(); ++i) {
     const std::string field = "assignment.members[" + std::to_string(i) + "]";
@@ -155,6 +185,12 @@ int FleetProblem::MemberIndex(std::string_view name) const {
   return -1;
 }
 
+bool FleetProblem::HasInitialCovariance() const {
+  for (const FleetMember& m : members)
+    if (m.initial_covariance.size() != 0) return true;
+  return false;
+}
+
 bool FleetProblem::IsValid(std::string* error) const {
   if (!ValidMembers(*this, error)) return false;
   const int n = members[0].problem.model->num_states();
@@ -184,6 +220,11 @@ bool FleetProblem::IsValid(std::string* error) const {
     if (!(keep_out->half_size_m > 0.0 && std::isfinite(keep_out->half_size_m))) {
       return Fail(error, "keep_out.half_size_m: " + FormatG(keep_out->half_size_m, 10) +
                              " (must be finite and > 0)");
+    }
+    if (!(keep_out->instantaneous_threshold >= 0.0 && keep_out->instantaneous_threshold < 0.5)) {
+      return Fail(error, "keep_out.instantaneous_threshold: " +
+                             FormatG(keep_out->instantaneous_threshold, 10) +
+                             " (must be in [0, 0.5); 0: no margin)");
     }
     const std::vector<double>& grid = members[0].problem.grid;
     const std::vector<double>& t = keep_out->check_times_s;

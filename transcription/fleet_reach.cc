@@ -22,7 +22,11 @@ MemberReach::MemberReach(const ScheduleMilp& milp, const Eigen::MatrixXd& map,
                       options.discretisation);
   free_.resize(p.grid.size());
   free_[0] = p.initial_state;
-  for (int j = 0; j < p.num_intervals(); ++j) free_[j + 1] = d.phi[j] * free_[j] + d.drift[j];
+  transition_.assign(p.grid.size(), Eigen::MatrixXd::Identity(n, n));
+  for (int j = 0; j < p.num_intervals(); ++j) {
+    free_[j + 1] = d.phi[j] * free_[j] + d.drift[j];
+    transition_[j + 1] = d.phi[j] * transition_[j];
+  }
   for (int node = 0; node <= p.num_intervals(); ++node) {
     cols_.state.emplace_back();
     for (int c = 0; c < n; ++c) cols_.state.back().push_back(milp.state(node, c));
@@ -39,6 +43,12 @@ std::pair<double, double> MemberReach::Range(int q, const Eigen::VectorXd& a) co
   const double free = a.dot(map_ * (at.phi * free_[at.interval] + at.drift));
   const auto [lo, hi] = KnapsackRange(effects_[q], a, std::numeric_limits<double>::infinity());
   return {free + lo, free + hi};
+}
+
+Eigen::MatrixXd MemberReach::MapCovariance(int q, const Eigen::MatrixXd& sigma0) const {
+  const PartialMap& at = maps_[q];
+  const Eigen::MatrixXd m = map_ * at.phi * transition_[at.interval];
+  return m * sigma0 * m.transpose();
 }
 
 }  // namespace thrustsched::transcription::internal

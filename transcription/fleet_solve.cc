@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "transcription/fleet.h"
+#include "transcription/fleet_start.h"
 #include "transcription/internal/fleet_reach.h"
 
 namespace thrustsched::transcription {
@@ -106,12 +107,93 @@ std::vector<double> CouplingResiduals(const FleetProblem& fleet, const std::vect
     const Eigen::VectorXd* ref = a.reference >= 0 ? &final_states[a.reference] : nullptr;
     double worst = 0.0;
     for (size_t i = 0; i < a.members.size(); ++i) {
-      worst = std::max(worst, Residual(a.map, final_states[a.members[i]], ref, a.slots[slots[i]],
-                                       Eigen::VectorXd()));
+      worst = std::max(
+          worst, Residual(a.map, final_states[a.members[i]], ref, a.slots[slots[i]], a.tolerance));
     }
     out.push_back(worst);
   }
   return out;
+}
+
+// The decoupled start as the solve's MIP start, its time taken from the
+// solve's limit.
+FleetStartSummary StartFromMembersAlone(const FleetMilp& milp, const milp::Solver& solver,
+                                        const FleetSolveOptions& options,
+                                        milp::SolveOptions* solve) {
+  const FleetProblem& fleet = milp.fleet();
+  size_t solves = fleet.members.size();
+  if (fleet.assignment) {
+    const size_t a = fleet.assignment->members.size();
+    solves += a * a - a;
+  }
+  SolveScheduleOptions member;
+  member.build = options.build;
+  member.milp.threads = options.milp.threads;
+  member.milp.random_seed = options.milp.random_seed;
+  member.milp.relative_gap = 1e-4;
+  member.milp.interrupt = options.milp.interrupt;
+  if (std::isfinite(options.milp.time_limit_s)) {
+    member.milp.time_limit_s =
+        options.start_time_share * options.milp.time_limit_s / static_cast<double>(solves);
+  }
+  const FleetStart start = DecoupledStart(milp, solver, member);
+  FleetStartSummary out;
+  out.tried = true;
+  out.built = start.built;
+  out.note = start.note;
+  out.objective = start.objective;
+  out.member_solves = start.member_solves;
+  out.tries = start.tries;
+  out.seconds = start.seconds;
+  out.bound = start.bound;
+  if (start.built) solve->initial_solution = start.x;
+  if (std::isfinite(solve->time_limit_s))
+    solve->time_limit_s = std::max(solve->time_limit_s - start.seconds, 1e-3);
+  return out;
+}
+
+// The fleet MILP from the decoupled start: when the start is feasible for the
+// fleet and within the gap of the decoupled bound, it is optimal and the
+// solver is not called; otherwise the solver starts from it, and its bound is
+// raised to the decoupled bound where that is higher.
+milp::SolveResult SolveWithStart(const FleetMilp& milp, const milp::Solver& solver,
+                                 const milp::SolveOptions& solve, FleetStartSummary* start) {
+  const milp::LpData& lp = milp.lp();
+  const double bound = start->bound;
+  if (start->built && lp.MaxViolation(*solve.initial_solution) <= kStartFeasibility) {
+    const double objective = lp.Objective(*solve.initial_solution);
+    if (milp::GapClosed(objective, bound, solve)) {
+      start->accepted = true;
+      milp::SolveResult r;
+      r.status = milp::SolveStatus::kOptimal;
+      r.x = *solve.initial_solution;
+      r.objective = objective;
+      r.best_bound = bound;
+      r.gap = milp::RelativeGap(objective, bound);
+      r.detail =
+          "the members planned alone keep every fleet row; optimal by the decoupled bound "
+          "(no fleet solve)";
+      return r;
+    }
+  }
+  milp::SolveResult r = solver.Solve(lp, solve);
+  // The backend says whether it kept the start (milp::SolveOptions::initial_solution).
+  start->accepted = start->built && r.detail.find("initial solution accepted") != std::string::npos;
+  if (bound > -std::numeric_limits<double>::infinity() &&
+      (!std::isfinite(r.best_bound) || bound > r.best_bound)) {
+    if (bound == std::numeric_limits<double>::infinity()) {
+      r.status = milp::SolveStatus::kInfeasible;  // a member alone is proven infeasible
+      r.detail += "; a member alone is infeasible (decoupled bound)";
+      return r;
+    }
+    r.best_bound = bound;
+    r.detail += "; bound raised to the decoupled bound";
+    if (r.has_solution()) {
+      r.gap = milp::RelativeGap(r.objective, bound);
+      if (milp::GapClosed(r.objective, bound, solve)) r.status = milp::SolveStatus::kOptimal;
+    }
+  }
+  return r;
 }
 
 }  // namespace
@@ -121,7 +203,9 @@ FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
   const FleetMilp milp(fleet, options.build);
   FleetResult r;
   r.stats = milp.stats();
-  const milp::SolveResult s = solver.Solve(milp.lp(), options.milp);
+  milp::SolveOptions solve = options.milp;
+  if (options.decoupled_start) r.start = StartFromMembersAlone(milp, solver, options, &solve);
+  const milp::SolveResult s = SolveWithStart(milp, solver, solve, &r.start);
   r.status = s.status;
   r.detail = s.detail;
   r.objective = s.objective;
@@ -144,6 +228,8 @@ FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
       final_states[k] = r.checks.back().final_state;
     }
     r.checked_pairs = CheckedPairs(fleet, r.checks);
+    if (fleet.keep_out && fleet.HasInitialCovariance() && options.monte_carlo.samples > 0)
+      r.monte_carlo = CheckFleetMonteCarlo(fleet, r.schedules, options.monte_carlo);
   }
   r.coupling_residuals = CouplingResiduals(fleet, r.slots, final_states);
   return r;

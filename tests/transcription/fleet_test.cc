@@ -20,6 +20,8 @@
 
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
+#include "transcription/collision_probability.h"
+#include "transcription/fleet_monte_carlo.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::transcription {
@@ -216,10 +218,19 @@ TEST(Fleet, DecoupledFleetIsTheSumOfItsMembersAlone) {
     ASSERT_TRUE(r.has_schedule());
     sum += r.schedule.consumption_l1_m_s;
   }
-  const FleetResult r = SolveFleet(f, *solver, Exact());
+  FleetSolveOptions o = Exact();
+  o.decoupled_start = false;  // the fleet MILP itself
+  const FleetResult r = SolveFleet(f, *solver, o);
   ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
   EXPECT_GT(sum, 0.0);
   EXPECT_NEAR(r.objective, sum, 1e-6);
+  EXPECT_FALSE(r.start.tried);
+  // With the decoupled start the members alone are the fleet's optimum.
+  const FleetResult d = SolveFleet(f, *solver, Exact());
+  ASSERT_EQ(d.status, milp::SolveStatus::kOptimal) << d.detail;
+  EXPECT_TRUE(d.start.accepted);
+  EXPECT_NEAR(d.objective, sum, 1e-6);
+  EXPECT_NEAR(d.start.bound, sum, 1e-6);
   // One block per member and nothing else without couplings.
   const FleetMilp milp(f, BuildOptions{});
   EXPECT_EQ(r.stats.num_columns, milp.member(0).lp().num_cols() + milp.member(1).lp().num_cols());
@@ -253,6 +264,11 @@ TEST(Fleet, KeepOutAvoidsTheCollisionOfTheUncoupledPlans) {
   const FleetResult r = SolveFleet(f, *milp::MakeCbcSolver(), Exact());
   ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
   EXPECT_NEAR(r.objective, expected, 1e-6);
+  // Alone, nobody fires and they collide: the start is built, the fleet's
+  // keep-out rows refuse it, and the solver's tree finds the optimum.
+  EXPECT_TRUE(r.start.built);
+  EXPECT_FALSE(r.start.accepted);
+  EXPECT_NEAR(r.start.bound, 0.0, 1e-9);
   ASSERT_EQ(r.planned_pairs.size(), 1u);
   EXPECT_GE(r.planned_pairs[0].min_box_distance_m, 1.0 - 1e-6);
   EXPECT_GT(r.stats.keep_out_binaries, 0);
@@ -319,6 +335,169 @@ TEST(Fleet, AssignmentMatchesEveryPermutationSolved) {
   EXPECT_LT(r.coupling_residuals[0], 1e-6);
 }
 
+// Both members uncertain, sigma_r per axis in position and sigma_v in
+// velocity: the relative position's variance per axis at time t is
+// 2 (sigma_r^2 + t^2 sigma_v^2) (double integrator, independent members), so
+// each face's margin is z sqrt of that (Serra 2015 (4.19)). The fleet MILP
+// against the enumeration with the cube grown by that margin at each check.
+TEST(Fleet, ChanceConstrainedKeepOutMatchesTheEnumerationWithItsClosedFormMargin) {
+  constexpr double kSigmaR = 0.2, kSigmaV = 0.1, kEps = 1e-3;
+  FleetProblem f;
+  Eigen::VectorXd sd(6);
+  sd << kSigmaR, kSigmaR, kSigmaR, kSigmaV, kSigmaV, kSigmaV;
+  const Eigen::MatrixXd sigma = sd.array().square().matrix().asDiagonal();
+  f.members = {{"a", Member(State(0, 0, 0, 0), {kX, -kX}), sigma},
+               {"b", Member(State(-3, 0, 1, 0), {kY, -kY}), sigma}};
+  std::vector<double> checks;
+  for (int q = 1; q <= 2 * kSlots; ++q) checks.push_back(0.5 * q);
+  f.keep_out = FleetKeepOut{1.0, checks, kEps};
+  const double z = NormalQuantile(1.0 - kEps);
+  auto margin = [&](double t) {
+    return z * std::sqrt(2.0 * (kSigmaR * kSigmaR + t * t * kSigmaV * kSigmaV));
+  };
+  const auto a = Enumerate(f.members[0].problem, checks);
+  const auto b = Enumerate(f.members[1].problem, checks);
+  auto clear = [&](double grow) {
+    return [&, grow](const Plan& x, const Plan& y) {
+      for (size_t q = 0; q < checks.size(); ++q) {
+        const double rhs = 1.0 + grow * margin(checks[q]);
+        if ((x.positions[q] - y.positions[q]).cwiseAbs().maxCoeff() < rhs - 1e-9) return false;
+      }
+      return true;
+    };
+  };
+  const double deterministic = PairMinimum(a, b, clear(0.0), Sum);
+  const double expected = PairMinimum(a, b, clear(1.0), Sum);
+  ASSERT_TRUE(std::isfinite(expected));
+  ASSERT_GT(expected, deterministic);  // the margin costs something here
+
+  FleetSolveOptions o = Exact();
+  o.monte_carlo.samples = 2000;
+  o.monte_carlo.steps = 60;
+  const FleetResult r = SolveFleet(f, *milp::MakeCbcSolver(), o);
+  ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
+  EXPECT_NEAR(r.objective, expected, 1e-6);
+  EXPECT_NEAR(r.stats.keep_out_quantile, z, 1e-12);
+  EXPECT_NEAR(r.stats.keep_out_margin_max_m, margin(checks.back()), 1e-9);
+  ASSERT_TRUE(r.monte_carlo.has_value());
+  EXPECT_EQ(r.monte_carlo->samples, 2000);
+  EXPECT_EQ(r.monte_carlo->pairs.size(), 1u);
+
+  f.keep_out->instantaneous_threshold = 0.0;  // the same fleet without the margin
+  o.monte_carlo.samples = 0;
+  const FleetResult plain = SolveFleet(f, *milp::MakeCbcSolver(), o);
+  ASSERT_EQ(plain.status, milp::SolveStatus::kOptimal) << plain.detail;
+  EXPECT_NEAR(plain.objective, deterministic, 1e-6);
+  EXPECT_EQ(plain.stats.keep_out_margin_max_m, 0.0);
+  EXPECT_FALSE(plain.monte_carlo.has_value());
+}
+
+// Nobody fires and nothing moves: the relative position is N(mu, 2 sigma^2 I)
+// at every time, so the fraction of colliding samples is P(|r| < R), which
+// BallProbability integrates independently; the Monte Carlo must agree within
+// its binomial error.
+TEST(Fleet, MonteCarloCollisionFractionMatchesTheBallProbability) {
+  constexpr double kSigma = 0.6, kRadius = 1.0;
+  constexpr int kSamples = 40000;
+  FleetProblem f;
+  Eigen::VectorXd variance = Eigen::VectorXd::Zero(6);
+  variance.head<3>().setConstant(kSigma * kSigma);  // the velocities known exactly
+  const Eigen::MatrixXd sigma = variance.asDiagonal();
+  f.members = {{"a", Member(State(0, 0, 0, 0), {kX}), sigma},
+               {"b", Member(State(1.2, 0.3, 0, 0), {kY}), sigma}};
+  f.keep_out = FleetKeepOut{kRadius, {kSlots * kStep}};
+  FleetMonteCarloOptions o;
+  o.samples = kSamples;
+  o.steps = 4;
+  const FleetMonteCarloReport mc = CheckFleetMonteCarlo(f, {Schedule{}, Schedule{}}, o);
+  const double p = BallProbability(Eigen::Vector3d(-1.2, -0.3, 0),
+                                   2.0 * kSigma * kSigma * Eigen::Matrix3d::Identity(), kRadius);
+  ASSERT_GT(p, 0.05);
+  const double fraction = static_cast<double>(mc.collisions) / kSamples;
+  EXPECT_NEAR(fraction, p, 4.0 * std::sqrt(p * (1.0 - p) / kSamples)) << p;
+  EXPECT_EQ(mc.pairs.at(0).collisions, mc.collisions);
+  EXPECT_LT(mc.min_distance_m, kRadius);
+
+  // The same seed, the same samples; another seed, other samples.
+  EXPECT_EQ(CheckFleetMonteCarlo(f, {Schedule{}, Schedule{}}, o).collisions, mc.collisions);
+  o.seed = 2;
+  EXPECT_NE(CheckFleetMonteCarlo(f, {Schedule{}, Schedule{}}, o).min_distance_m, mc.min_distance_m);
+
+  f.members[0].initial_covariance.resize(0, 0);
+  f.members[1].initial_covariance.resize(0, 0);
+  EXPECT_THROW(CheckFleetMonteCarlo(f, {Schedule{}, Schedule{}}, o), std::invalid_argument);
+}
+
+// Two members each to an absolute target, whose own optima pass 2 m apart
+// in y: the start from the members alone keeps the keep-out, so the
+// decoupled bound proves it without the fleet's tree; its value is the
+// enumerated optimum with the keep-out. With the targets swapped in an
+// assignment the start chooses the cheaper assignment, enumerated too.
+TEST(Fleet, DecoupledStartProvesTheFleetWhenTheMembersAloneKeepOut) {
+  FleetProblem f;
+  f.members = {{"a", Member(State(0, 0, 0, 0), {kX, -kX})},
+               {"b", Member(State(0, 2, 0, 0), {kX, -kX})}};
+  auto target = [](int member, double x) {
+    TerminalCoupling c;
+    c.member = member;
+    c.map = Eigen::MatrixXd::Zero(2, 6);
+    c.map(0, 0) = 1.0;
+    c.map(1, 3) = 1.0;
+    c.offset = Eigen::Vector2d(x, 0.0);
+    return c;
+  };
+  f.couplings = {target(0, 4.0), target(1, -4.0)};
+  std::vector<double> checks;
+  for (int q = 1; q <= 2 * kSlots; ++q) checks.push_back(0.5 * q);
+  f.keep_out = FleetKeepOut{1.0, checks};
+  const auto a = Enumerate(f.members[0].problem, checks);
+  const auto b = Enumerate(f.members[1].problem, checks);
+  auto at = [](const Plan& p, double x) {
+    return std::abs(p.final_state[0] - x) < 1e-6 && std::abs(p.final_state[3]) < 1e-6;
+  };
+  auto clear = [&](const Plan& x, const Plan& y) {
+    for (size_t q = 0; q < checks.size(); ++q) {
+      if ((x.positions[q] - y.positions[q]).cwiseAbs().maxCoeff() < 1.0 - 1e-9) return false;
+    }
+    return true;
+  };
+  const double expected = PairMinimum(
+      a, b, [&](const Plan& x, const Plan& y) { return at(x, 4.0) && at(y, -4.0) && clear(x, y); },
+      Sum);
+  ASSERT_TRUE(std::isfinite(expected));
+  const auto solver = milp::MakeCbcSolver();
+  const FleetResult r = SolveFleet(f, *solver, Exact());
+  ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
+  EXPECT_TRUE(r.start.accepted) << r.start.note;
+  EXPECT_NE(r.detail.find("decoupled bound"), std::string::npos) << r.detail;
+  EXPECT_NEAR(r.objective, expected, 1e-6);
+  EXPECT_EQ(r.start.member_solves, 2);
+
+  // The same targets as slots: member a to 4 m costs what b to -4 m does,
+  // a to -4 m and b to 4 m the same; the enumerated optimum over both.
+  FleetProblem g = f;
+  g.couplings.clear();
+  SlotAssignment s;
+  s.members = {0, 1};
+  s.map = f.couplings[0].map;
+  s.slots = {Eigen::Vector2d(4.0, 0.0), Eigen::Vector2d(-3.0, 0.0)};
+  g.assignment = s;
+  double best = kInf;
+  for (const auto& [xa, xb] : {std::pair{4.0, -3.0}, std::pair{-3.0, 4.0}}) {
+    best = std::min(best, PairMinimum(
+                              a, b,
+                              [&, xa = xa, xb = xb](const Plan& x, const Plan& y) {
+                                return at(x, xa) && at(y, xb) && clear(x, y);
+                              },
+                              Sum));
+  }
+  const FleetResult ra = SolveFleet(g, *solver, Exact());
+  ASSERT_EQ(ra.status, milp::SolveStatus::kOptimal) << ra.detail;
+  EXPECT_NEAR(ra.objective, best, 1e-6);
+  EXPECT_EQ(ra.start.member_solves, 4);
+  EXPECT_TRUE(ra.start.built) << ra.start.note;
+}
+
 TEST(Fleet, BadInputNamesTheField) {
   std::string error;
   FleetProblem f = TwoMembers();
@@ -346,6 +525,22 @@ TEST(Fleet, BadInputNamesTheField) {
   EXPECT_FALSE(f.IsValid(&error));
   EXPECT_NE(error.find("keep_out.check_times_s[0]"), std::string::npos) << error;
   EXPECT_THROW(FleetMilp(f, BuildOptions{}), std::invalid_argument);
+
+  f = TwoMembers();
+  f.members[1].initial_covariance = Eigen::MatrixXd::Identity(5, 5);
+  EXPECT_FALSE(f.IsValid(&error));
+  EXPECT_NE(error.find("members[1].initial_covariance: 5 x 5, expected 6 x 6"), std::string::npos)
+      << error;
+  f.members[1].initial_covariance = -Eigen::MatrixXd::Identity(6, 6);
+  EXPECT_FALSE(f.IsValid(&error));
+  EXPECT_NE(error.find("members[1].initial_covariance: not positive semi-definite"),
+            std::string::npos)
+      << error;
+
+  f = TwoMembers();
+  f.keep_out = FleetKeepOut{1.0, {3.0}, 0.5};
+  EXPECT_FALSE(f.IsValid(&error));
+  EXPECT_NE(error.find("keep_out.instantaneous_threshold: 0.5"), std::string::npos) << error;
 
   f = TwoMembers();
   EXPECT_TRUE(f.IsValid(&error)) << error;

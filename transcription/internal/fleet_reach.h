@@ -37,6 +37,11 @@ class MemberReach {
   /// over the box of binaries: the member's own rules only narrow it).
   std::pair<double, double> Range(int q, const Eigen::VectorXd& a) const;
 
+  /// Covariance of map x(times[q]) for an initial-state covariance sigma0 at
+  /// the grid start (n x n, SI): map Phi(t_q, t_0) sigma0 Phi^T map^T, the
+  /// MILP's own transition maps; the thrust does not change it.
+  Eigen::MatrixXd MapCovariance(int q, const Eigen::MatrixXd& sigma0) const;
+
   /// Calls add(column, coefficient) for sign * a^T map x(times[q]) written on
   /// the member's state columns at the interval's start node and its on-off
   /// columns of that interval (column indices shifted by `offset`, the
@@ -61,7 +66,8 @@ class MemberReach {
   Eigen::MatrixXd map_;
   Eigen::VectorXd scale_;
   std::vector<PartialMap> maps_;
-  std::vector<Eigen::VectorXd> free_;  // thrust-free states at the nodes
+  std::vector<Eigen::VectorXd> free_;        // thrust-free states at the nodes
+  std::vector<Eigen::MatrixXd> transition_;  // Phi(t_j, t_0) at the nodes
   KeepOutColumns cols_;
   std::vector<std::vector<Effect>> effects_;  // per time
 };
