@@ -32,10 +32,16 @@
 //     reachable sets of both members (every on-off binary in [0, 1]: the exact
 //     range of a^T r over the box of binaries, as transcription/keep_out.h),
 //     faces no plan can satisfy dropped, checks every plan clears left out;
+//     with initial-state covariances, each face grown by its chance-constraint
+//     margin (Serra 2015 (4.19));
 //   - slot assignment (Richards, Schouwenaars, How & Feron 2002): binaries
 //     z_is, each listed member takes one slot and each slot one member, and
 //     |A x_i(t_N) - A x_ref(t_N) - slot_s| <= M_is (1 - z_is) with M from the
 //     same reachable ranges.
+// SolveFleet first plans the members alone (transcription/fleet_start.h):
+// their plans are the solver's MIP start and their proven bounds bound the
+// fleet; after the solve it checks every member and, with covariances, runs
+// the Monte Carlo of the initial states (transcription/fleet_monte_carlo.h).
 // Members must share the grid, use the on-off input mode and the sparse
 // formulation (the couplings are written on the state columns).
 // Positions: `position_map` (3 x n, metres) maps a member's state to its
