@@ -152,7 +152,7 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
                            {"margin_max_m", st.keep_out_margin_max_m}}
           : nlohmann::json(nullptr);
   j["monte_carlo"] = r.monte_carlo ? MonteCarloJson(f, *r.monte_carlo) : nlohmann::json(nullptr);
-  const transcription::FleetStartSummary& start = r.start;
+  const transcription::FleetStart& start = r.start;
   j["start"] = start.tried ? nlohmann::json{{"built", start.built},
                                             {"accepted", start.accepted},
                                             {"note", start.note},

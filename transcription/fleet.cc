@@ -268,7 +268,10 @@ void FleetMilp::AddKeepOut() {
           rows.End(rhs, kInf, "fleet_keep_out_" + tag + "_" + std::to_string(f));
         }
         if (!w.empty()) {
-          keep_out_tags_.emplace_back(tag, static_cast<int>(faces.size()));
+          KeepOutGroup group;  // its rows are indexed once the model is frozen
+          for (const milp::Variable& v : w) group.binaries.push_back(v.index());
+          keep_out_groups_.groups.push_back(std::move(group));
+          keep_out_tags_.push_back(tag);
           model_.AddConstraint(milp::LinearExpr::Sum(w), -kInf, static_cast<double>(w.size()) - 1.0,
                                "fleet_keep_out_pick_" + tag);
         }
@@ -392,20 +395,17 @@ std::vector<int> FleetMilp::Slots(const Eigen::VectorXd& x) const {
   return out;
 }
 
-// The keep-out rows and binaries by name (the rows were buffered and
-// rescaled, so their indices are found in the frozen model).
+// The keep-out rows by name: they were buffered and rescaled, so their
+// indices are known once the model is frozen.
 void FleetMilp::IndexKeepOutGroups() {
   if (keep_out_tags_.empty()) return;
-  std::unordered_map<std::string, int> rows, cols;
+  std::unordered_map<std::string, int> rows;
   for (int r = 0; r < lp_.num_rows(); ++r) rows.emplace(lp_.row_names[r], r);
-  for (int c = 0; c < lp_.num_cols(); ++c) cols.emplace(lp_.col_names[c], c);
-  for (const auto& [tag, faces] : keep_out_tags_) {
-    KeepOutGroup g;
-    for (int f = 0; f < faces; ++f) {
-      g.rows.push_back(rows.at("fleet_keep_out_" + tag + "_" + std::to_string(f)));
-      g.binaries.push_back(cols.at("fleet_keep_out_w_" + tag + "_" + std::to_string(f)));
-    }
-    keep_out_groups_.groups.push_back(std::move(g));
+  for (size_t g = 0; g < keep_out_tags_.size(); ++g) {
+    KeepOutGroup& group = keep_out_groups_.groups[g];
+    for (size_t f = 0; f < group.binaries.size(); ++f)
+      group.rows.push_back(
+          rows.at("fleet_keep_out_" + keep_out_tags_[g] + "_" + std::to_string(f)));
   }
 }
 

@@ -210,10 +210,9 @@ class FleetMilp {
   milp::LpData lp_;
   FleetBuildStats stats_;
   std::vector<std::vector<milp::Variable>> slot_binaries_;  // [member i][slot s]
-  std::vector<std::pair<std::string, int>>
-      keep_out_tags_;             // (tag, faces) of the checks with binaries
-  KeepOutStats keep_out_groups_;  // their rows and binaries in lp_
-  int balance_column_ = -1;       // kMinMax: the epigraph column
+  std::vector<std::string> keep_out_tags_;                  // name tag of each check with binaries
+  KeepOutStats keep_out_groups_;                            // their binaries, and rows in lp_
+  int balance_column_ = -1;                                 // kMinMax: the epigraph column
 };
 
 /// Minimum distance of one pair over a set of times.
@@ -239,16 +238,29 @@ struct FleetSolveOptions {
   double start_time_share = 0.25;
 };
 
-/// What the decoupled start did (FleetResult::start).
-struct FleetStartSummary {
+/// Largest row or bound violation (model units) at which a start counts as
+/// feasible for the fleet MILP (ScheduleMilp's pattern tolerance).
+inline constexpr double kStartFeasibility = ScheduleMilp::kPatternFeasibilityTolerance;
+
+/// The first plan from the members alone (transcription/fleet_start.h).
+struct FleetStart {
   bool tried = false;
   bool built = false;
-  bool accepted = false;  // the fleet's first incumbent (feasible for the fleet MILP)
-  std::string note;
-  double objective = std::numeric_limits<double>::quiet_NaN();  // sum of the members alone
+  /// x keeps every row of the fleet MILP (the keep-out, the balance): the
+  /// solver's first incumbent.
+  bool accepted = false;
+  std::string note;  // why not built, or what was done
+  Eigen::VectorXd x;
+  std::vector<int> slots;                 // per assigned member
+  std::vector<double> member_objectives;  // J_k of each member's schedule alone
+  double objective = std::numeric_limits<double>::quiet_NaN();  // the fleet objective of x
+  /// A lower bound on the fleet MILP's objective: the fleet without its
+  /// keep-out and balance rows separates into the members alone, so the
+  /// members' proven bounds (the least over the assignments, with the
+  /// fleet's balance objective) bound it. NaN when not built.
+  double bound = std::numeric_limits<double>::quiet_NaN();
   int member_solves = 0;
-  int tries = 0;                                            // FleetStart::tries
-  double bound = std::numeric_limits<double>::quiet_NaN();  // FleetStart::bound
+  int tries = 0;  // assignments tried until one kept every fleet row (0: none did, or none tried)
   double seconds = 0.0;
 };
 
@@ -273,7 +285,7 @@ struct FleetResult {
   /// without the check), in the map's units (beyond the tolerance: > 0).
   std::vector<double> coupling_residuals;
   std::optional<FleetMonteCarloReport> monte_carlo;  // see FleetSolveOptions::monte_carlo
-  FleetStartSummary start;
+  FleetStart start;
   bool has_schedule() const {
     return status == milp::SolveStatus::kOptimal || status == milp::SolveStatus::kFeasible;
   }

@@ -117,9 +117,8 @@ std::vector<double> CouplingResiduals(const FleetProblem& fleet, const std::vect
 
 // The decoupled start as the solve's MIP start, its time taken from the
 // solve's limit.
-FleetStartSummary StartFromMembersAlone(const FleetMilp& milp, const milp::Solver& solver,
-                                        const FleetSolveOptions& options,
-                                        milp::SolveOptions* solve) {
+FleetStart StartFromMembersAlone(const FleetMilp& milp, const milp::Solver& solver,
+                                 const FleetSolveOptions& options, milp::SolveOptions* solve) {
   const FleetProblem& fleet = milp.fleet();
   size_t solves = fleet.members.size();
   if (fleet.assignment) {
@@ -136,20 +135,11 @@ FleetStartSummary StartFromMembersAlone(const FleetMilp& milp, const milp::Solve
     member.milp.time_limit_s =
         options.start_time_share * options.milp.time_limit_s / static_cast<double>(solves);
   }
-  const FleetStart start = DecoupledStart(milp, solver, member);
-  FleetStartSummary out;
-  out.tried = true;
-  out.built = start.built;
-  out.note = start.note;
-  out.objective = start.objective;
-  out.member_solves = start.member_solves;
-  out.tries = start.tries;
-  out.seconds = start.seconds;
-  out.bound = start.bound;
+  FleetStart start = DecoupledStart(milp, solver, member);
   if (start.built) solve->initial_solution = start.x;
   if (std::isfinite(solve->time_limit_s))
     solve->time_limit_s = std::max(solve->time_limit_s - start.seconds, 1e-3);
-  return out;
+  return start;
 }
 
 // The fleet MILP from the decoupled start: when the start is feasible for the
@@ -157,16 +147,15 @@ FleetStartSummary StartFromMembersAlone(const FleetMilp& milp, const milp::Solve
 // solver is not called; otherwise the solver starts from it, and its bound is
 // raised to the decoupled bound where that is higher.
 milp::SolveResult SolveWithStart(const FleetMilp& milp, const milp::Solver& solver,
-                                 const milp::SolveOptions& solve, FleetStartSummary* start) {
+                                 const milp::SolveOptions& solve, const FleetStart& start) {
   const milp::LpData& lp = milp.lp();
-  const double bound = start->bound;
-  if (start->built && lp.MaxViolation(*solve.initial_solution) <= kStartFeasibility) {
-    const double objective = lp.Objective(*solve.initial_solution);
+  const double bound = start.bound;
+  if (start.accepted) {
+    const double objective = lp.Objective(start.x);
     if (milp::GapClosed(objective, bound, solve)) {
-      start->accepted = true;
       milp::SolveResult r;
       r.status = milp::SolveStatus::kOptimal;
-      r.x = *solve.initial_solution;
+      r.x = start.x;
       r.objective = objective;
       r.best_bound = bound;
       r.gap = milp::RelativeGap(objective, bound);
@@ -177,8 +166,6 @@ milp::SolveResult SolveWithStart(const FleetMilp& milp, const milp::Solver& solv
     }
   }
   milp::SolveResult r = solver.Solve(lp, solve);
-  // The backend says whether it kept the start (milp::SolveOptions::initial_solution).
-  start->accepted = start->built && r.detail.find("initial solution accepted") != std::string::npos;
   if (bound > -std::numeric_limits<double>::infinity() &&
       (!std::isfinite(r.best_bound) || bound > r.best_bound)) {
     if (bound == std::numeric_limits<double>::infinity()) {
@@ -205,7 +192,7 @@ FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
   r.stats = milp.stats();
   milp::SolveOptions solve = options.milp;
   if (options.decoupled_start) r.start = StartFromMembersAlone(milp, solver, options, &solve);
-  const milp::SolveResult s = SolveWithStart(milp, solver, solve, &r.start);
+  const milp::SolveResult s = SolveWithStart(milp, solver, solve, r.start);
   r.status = s.status;
   r.detail = s.detail;
   r.objective = s.objective;

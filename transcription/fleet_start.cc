@@ -237,6 +237,7 @@ void Assemble(const FleetMilp& milp, const std::vector<Alone>& alone, FleetStart
     out->member_objectives.push_back(alone[k].objective);
   }
   out->x = milp.StartFromPatterns(patterns, out->slots);
+  out->accepted = milp.lp().MaxViolation(out->x) <= kStartFeasibility;
   out->objective = FleetObjective(fleet.balance, out->member_objectives);
   out->built = true;
   out->note = std::to_string(out->member_solves) + " member solves";
@@ -252,6 +253,7 @@ FleetStart DecoupledStart(const FleetMilp& milp, const milp::Solver& solver,
   options.check_schedule = false;
   options.prefix_diagnosis_s = 0.0;
   FleetStart out;
+  out.tried = true;
   const std::vector<ScheduleProblem> problems = AloneProblems(fleet, &out.note);
   const int count = static_cast<int>(fleet.members.size());
   std::vector<Alone> alone(count);

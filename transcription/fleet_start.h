@@ -22,42 +22,14 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_FLEET_START_H_
 #define THRUSTSCHED_TRANSCRIPTION_FLEET_START_H_
 
-#include <limits>
-#include <string>
-#include <vector>
-
-#include <Eigen/Core>
-
 #include "transcription/fleet.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::transcription {
-/// Largest row or bound violation (model units) at which a start counts as
-/// feasible for the fleet MILP (ScheduleMilp's pattern tolerance).
-inline constexpr double kStartFeasibility = ScheduleMilp::kPatternFeasibilityTolerance;
-}  // namespace thrustsched::transcription
-
-namespace thrustsched::transcription {
-
-struct FleetStart {
-  bool built = false;
-  std::string note;  // why not built, or what was done
-  Eigen::VectorXd x;
-  std::vector<int> slots;                 // per assigned member
-  std::vector<double> member_objectives;  // J_k of each member's schedule alone
-  double objective = std::numeric_limits<double>::quiet_NaN();  // the fleet objective of x
-  /// A lower bound on the fleet MILP's objective: the fleet without its
-  /// keep-out and balance rows separates into the members alone, so the
-  /// members' proven bounds (the least over the assignments, with the
-  /// fleet's balance objective) bound it. NaN when not built.
-  double bound = std::numeric_limits<double>::quiet_NaN();
-  int member_solves = 0;
-  int tries = 0;  // assignments tried until one kept every fleet row (0: none did, or none tried)
-  double seconds = 0.0;
-};
 
 /// `member_options`: how each member is solved alone (its time limit per
-/// solve; the check is skipped).
+/// solve; the check is skipped). The result's `tried` is true; `accepted`
+/// says whether x keeps every row of the fleet MILP.
 FleetStart DecoupledStart(const FleetMilp& milp, const milp::Solver& solver,
                           const SolveScheduleOptions& member_options);
 
