@@ -30,7 +30,8 @@ double Since(Clock::time_point t) {
 }
 
 nlohmann::json PairJson(const FleetScenario& f, const transcription::PairDistance& p,
-                        const transcription::PairDistance* planned) {
+                        const transcription::PairDistance* planned,
+                        const transcription::PairDistance* nonlinear) {
   nlohmann::json j;
   j["member_a"] = f.problem.members[p.a].name;
   j["member_b"] = f.problem.members[p.b].name;
@@ -39,22 +40,25 @@ nlohmann::json PairJson(const FleetScenario& f, const transcription::PairDistanc
   j["time_s"] = FiniteOrNull(p.time_s);
   j["planned_min_distance_m"] = planned ? FiniteOrNull(planned->min_distance_m) : nullptr;
   j["planned_min_box_distance_m"] = planned ? FiniteOrNull(planned->min_box_distance_m) : nullptr;
+  j["nonlinear_min_distance_m"] = nonlinear ? FiniteOrNull(nonlinear->min_distance_m) : nullptr;
+  j["nonlinear_min_box_distance_m"] =
+      nonlinear ? FiniteOrNull(nonlinear->min_box_distance_m) : nullptr;
   return j;
 }
 
-// The planned distance of the same pair (the MILP's check grid), if any.
-const transcription::PairDistance* PlannedPair(const transcription::FleetResult& r,
-                                               const transcription::PairDistance& p) {
-  for (const transcription::PairDistance& q : r.planned_pairs) {
+// The same pair in `pairs` (the planned or the nonlinear ones), if any.
+const transcription::PairDistance* SamePair(const std::vector<transcription::PairDistance>& pairs,
+                                            const transcription::PairDistance& p) {
+  for (const transcription::PairDistance& q : pairs) {
     if (q.a == p.a && q.b == p.b) return &q;
   }
   return nullptr;
 }
 
-// The smallest max-norm distance of any pair on the checker's samples.
-double ClosestOnSamples(const transcription::FleetResult& r) {
+// The smallest max-norm distance of any pair in `pairs`.
+double Closest(const std::vector<transcription::PairDistance>& pairs) {
   double closest = std::numeric_limits<double>::infinity();
-  for (const transcription::PairDistance& p : r.checked_pairs)
+  for (const transcription::PairDistance& p : pairs)
     closest = std::min(closest, p.min_box_distance_m);
   return closest;
 }
@@ -134,12 +138,18 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
   j["n_rows"] = st.num_rows;
   j["n_binaries"] = st.num_binaries;
   j["n_nonzeros"] = st.num_nonzeros;
-  const double closest = ClosestOnSamples(r);
+  const double closest = Closest(r.checked_pairs);
+  const double closest_nonlinear = Closest(r.nonlinear_pairs);
   j["keep_out"] =
       f.problem.keep_out
           ? nlohmann::json{{"half_size_m", f.problem.keep_out->half_size_m},
                            {"min_box_distance_on_samples_m", FiniteOrNull(closest)},
                            {"held_on_samples", r.has_schedule() && HeldOnSamples(f, closest)},
+                           {"min_box_distance_nonlinear_m", FiniteOrNull(closest_nonlinear)},
+                           {"held_nonlinear",
+                            r.nonlinear_pairs.empty()
+                                ? nlohmann::json(nullptr)
+                                : nlohmann::json(HeldOnSamples(f, closest_nonlinear))},
                            {"checks", st.keep_out_checks},
                            {"checks_clear", st.keep_out_checks_clear},
                            {"single_face", st.keep_out_single_face},
@@ -153,15 +163,25 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
           : nlohmann::json(nullptr);
   j["monte_carlo"] = r.monte_carlo ? MonteCarloJson(f, *r.monte_carlo) : nlohmann::json(nullptr);
   const transcription::FleetStart& start = r.start;
-  j["start"] = start.tried ? nlohmann::json{{"built", start.built},
-                                            {"accepted", start.accepted},
-                                            {"note", start.note},
-                                            {"objective", FiniteOrNull(start.objective)},
-                                            {"bound", FiniteOrNull(start.bound)},
-                                            {"member_solves", start.member_solves},
-                                            {"assignments_tried", start.tries},
-                                            {"seconds", start.seconds}}
-                           : nlohmann::json(nullptr);
+  j["start"] = start.tried
+                   ? nlohmann::json{{"built", start.built},
+                                    {"accepted", start.accepted},
+                                    {"note", start.note},
+                                    {"objective", FiniteOrNull(start.objective)},
+                                    {"bound", FiniteOrNull(start.bound)},
+                                    {"member_solves", start.member_solves},
+                                    {"assignments_tried", start.tries},
+                                    {"neighbourhood",
+                                     start.neighbourhood_tried
+                                         ? nlohmann::json{{"repaired", start.repaired},
+                                                          {"radius_intervals",
+                                                           start.neighbourhood_radius_intervals},
+                                                          {"free_binaries",
+                                                           start.neighbourhood_free_binaries},
+                                                          {"seconds", start.neighbourhood_seconds}}
+                                         : nlohmann::json(nullptr)},
+                                    {"seconds", start.seconds}}
+                   : nlohmann::json(nullptr);
   j["assignment_binaries"] = st.assignment_binaries;
   j["infeasibility_reasons"] = st.infeasibility_reasons;
   j["members"] = nlohmann::json::array();
@@ -169,7 +189,8 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
     j["members"].push_back(MemberJson(f, r, k));
   j["pairs"] = nlohmann::json::array();
   for (const transcription::PairDistance& p : r.checked_pairs)
-    j["pairs"].push_back(PairJson(f, p, PlannedPair(r, p)));
+    j["pairs"].push_back(
+        PairJson(f, p, SamePair(r.planned_pairs, p), SamePair(r.nonlinear_pairs, p)));
   j["coupling_residuals"] = r.coupling_residuals;
   return j;
 }
@@ -180,7 +201,7 @@ std::string FleetCsv(const FleetScenario& f, const transcription::FleetResult& r
         "planned_min_box_distance_m,keep_out_half_size_m\n";
   const auto num = [](double v) { return std::isfinite(v) ? FormatG(v, 17) : std::string(); };
   for (const transcription::PairDistance& p : r.checked_pairs) {
-    const transcription::PairDistance* q = PlannedPair(r, p);
+    const transcription::PairDistance* q = SamePair(r.planned_pairs, p);
     os << f.problem.members[p.a].name << "," << f.problem.members[p.b].name << ","
        << num(p.min_distance_m) << "," << num(p.min_box_distance_m) << "," << num(p.time_s) << ","
        << (q ? num(q->min_distance_m) : "") << "," << (q ? num(q->min_box_distance_m) : "") << ","
@@ -224,12 +245,19 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
         << "\n";
   }
   if (f.problem.keep_out) {
-    const double closest = ClosestOnSamples(r);
+    const double closest = Closest(r.checked_pairs);
     const bool held = HeldOnSamples(f, closest);
     out << "keep-out      " << (held ? "HELD" : "BROKEN")
         << " on the checker's samples: closest pair " << FormatG(closest, 6) << " m (max norm) "
         << (held ? ">=" : "<") << " " << FormatG(f.problem.keep_out->half_size_m, 6) << " m"
         << (held ? "" : ": pairs cross between checks (a finer check grid)") << "\n";
+    if (!r.nonlinear_pairs.empty()) {
+      const double exact = Closest(r.nonlinear_pairs);
+      const bool kept = HeldOnSamples(f, exact);
+      out << "keep-out      " << (kept ? "HELD" : "BROKEN")
+          << " in the nonlinear replays: closest pair " << FormatG(exact, 6) << " m (max norm) "
+          << (kept ? ">=" : "<") << " " << FormatG(f.problem.keep_out->half_size_m, 6) << " m\n";
+    }
   }
   if (r.monte_carlo) {
     const transcription::FleetMonteCarloReport& mc = *r.monte_carlo;
@@ -240,7 +268,12 @@ void PrintFleet(std::ostream& out, const FleetScenario& f, const transcription::
   for (const transcription::PairDistance& p : r.checked_pairs) {
     out << "pair          " << f.problem.members[p.a].name << "-" << f.problem.members[p.b].name
         << ": min distance " << FormatG(p.min_distance_m, 6) << " m (box "
-        << FormatG(p.min_box_distance_m, 6) << " m) at t = " << FormatG(p.time_s, 8) << " s\n";
+        << FormatG(p.min_box_distance_m, 6) << " m) at t = " << FormatG(p.time_s, 8) << " s";
+    if (const transcription::PairDistance* nl = SamePair(r.nonlinear_pairs, p)) {
+      out << "; nonlinear " << FormatG(nl->min_distance_m, 6) << " m (box "
+          << FormatG(nl->min_box_distance_m, 6) << " m)";
+    }
+    out << "\n";
   }
 }
 

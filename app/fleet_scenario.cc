@@ -28,14 +28,21 @@ Scenario ReadMemberScenario(JsonObject& m, const std::string& base_dir) {
          "expected a scenario file path or an inline scenario object, got " + DescribeJson(v));
 }
 
-// What a fleet member may be (the file comment), named by its field.
-void CheckMember(const Scenario& s, JsonObject& m) {
+// What a fleet member may be (the file comment), named by its field. GEO
+// members are positioned about their station point (radial, east, north), so
+// they share it: the first member's station longitude and epoch.
+void CheckMember(const Scenario& s, const Scenario* first, JsonObject& m) {
   const auto refuse = [&](const std::string& why) { m.Fail("scenario", why); };
   if (s.impulsive()) refuse("a fleet member needs \"input_mode\": \"on_off\"");
-  if (s.model_type == ModelType::kGeo) {
-    refuse(
-        "fleet members with the \"geo\" model are not supported yet (no map from the "
-        "linearised GEO state to metres); use hcw, yamanaka_ankersen or double_integrator");
+  if (s.geo && first != nullptr && first->geo) {
+    const dynamics::GeoModelOptions& a = *first->geo;
+    const dynamics::GeoModelOptions& b = *s.geo;
+    if (a.station_longitude_deg != b.station_longitude_deg || a.epoch != b.epoch) {
+      refuse("GEO members share one station point: model.station_longitude_deg " +
+             FormatNumber(b.station_longitude_deg) + " and epoch " + b.epoch +
+             " differ from the first member's " + FormatNumber(a.station_longitude_deg) + " and " +
+             a.epoch);
+    }
   }
   if (s.problem.conjunction) refuse("a fleet member cannot have a conjunction section");
   if (s.min_time) refuse("a fleet member cannot have the \"min_time\" objective");
@@ -55,10 +62,16 @@ int MemberIndexOf(const FleetScenario& f, JsonObject& o, std::string_view key) {
 
 // "position" (the first three states, metres), "state" (all of them) or a
 // matrix with the state size as its row length.
-Eigen::MatrixXd ReadMap(JsonObject& o, int n) {
+Eigen::MatrixXd ReadMap(JsonObject& o, const FleetScenario& f) {
+  const int n = f.members.front().problem.model->num_states();
   const nlohmann::json& v = o.Raw("map");
   if (v.is_string()) {
     const std::string k = o.Choice("map", {"position", "state"});
+    if (k == "position" && f.members.front().geo) {
+      o.Fail("map",
+             "\"position\" is the first three states; a GEO member's position depends on "
+             "time: give \"state\" or a matrix of rows of 6 numbers");
+    }
     return k == "state" ? Eigen::MatrixXd::Identity(n, n).eval()
                         : Eigen::MatrixXd::Identity(n, n).topRows(3).eval();
   }
@@ -75,13 +88,12 @@ Eigen::VectorXd ReadVector(JsonObject& o, std::string_view key, int size, Bound 
 }
 
 void ParseCouplings(JsonObject& fleet, FleetScenario* f) {
-  const int n = f->members.front().problem.model->num_states();
   for (JsonObject& c : fleet.ObjectArray("couplings")) {
     transcription::TerminalCoupling tc;
     tc.member = MemberIndexOf(*f, c, "member");
     tc.reference = c.Has("reference") ? MemberIndexOf(*f, c, "reference") : -1;
     if (tc.reference == tc.member) c.Fail("reference", "is the member itself");
-    tc.map = ReadMap(c, n);
+    tc.map = ReadMap(c, *f);
     tc.offset = ReadVector(c, "offset", static_cast<int>(tc.map.rows()), Bound::kAny);
     if (c.Has("tolerance")) {
       tc.tolerance =
@@ -151,7 +163,6 @@ void ParseKeepOut(JsonObject o, FleetScenario* f) {
 
 void ParseAssignment(JsonObject o, FleetScenario* f) {
   transcription::SlotAssignment a;
-  const int n = f->members.front().problem.model->num_states();
   const std::vector<std::string> names = o.StringArray("members");
   for (const std::string& name : names) {
     const int k = f->problem.MemberIndex(name);
@@ -159,7 +170,7 @@ void ParseAssignment(JsonObject o, FleetScenario* f) {
     a.members.push_back(k);
   }
   a.reference = o.Has("reference") ? MemberIndexOf(*f, o, "reference") : -1;
-  a.map = ReadMap(o, n);
+  a.map = ReadMap(o, *f);
   const nlohmann::json& slots = o.Raw("slots");
   if (!slots.is_array() || slots.size() != names.size()) {
     o.Fail("slots", "expected one slot per member (" + std::to_string(names.size()) + "), got " +
@@ -229,7 +240,7 @@ void ParseMembers(JsonObject& fleet, const std::string& base_dir, FleetScenario*
     }
     if (f->problem.MemberIndex(name) >= 0) m.Fail("name", "\"" + name + "\" is used twice");
     Scenario s = ReadMemberScenario(m, base_dir);
-    CheckMember(s, m);
+    CheckMember(s, f->members.empty() ? nullptr : &f->members.front(), m);
     Eigen::MatrixXd covariance = ReadInitialCovariance(m, s.problem.model->num_states());
     m.Finish();
     f->problem.members.push_back({name, s.problem, std::move(covariance)});

@@ -19,9 +19,12 @@
 // rules, window, terminal set and objective; its "solver" section is not
 // used (the fleet's is). Members must share the grid, use on-off thrusters
 // and the sparse formulation, have no conjunction section and no
-// "min_time" objective, and have a Cartesian model (HCW, Yamanaka-Ankersen,
-// double integrator: their first three states are the position the
-// keep-out and "position" maps use). Fields are documented in
+// "min_time" objective. Positions: the first three states of the Cartesian
+// models (HCW, Yamanaka-Ankersen, Schweighart-Sedwick, double integrator),
+// which the "position" map names; GEO members (co-located: one station
+// longitude and epoch) are positioned radial, east, north about the station
+// point by the model's LocalPositionMap, and their couplings take "state" or
+// a matrix. Fields are documented in
 // data/scenarios/README.md ("fleet"); errors are ScenarioError naming the
 // field ("fleet.members[1].scenario.horizon.step_s: ...") and the value.
 #ifndef THRUSTSCHED_APP_FLEET_SCENARIO_H_

@@ -236,6 +236,15 @@ OutputMatrices GeoLinearModel::EvaluateOutput(double t) const {
   return out;
 }
 
+Eigen::MatrixXd GeoLinearModel::LocalPositionMap(double t) const {
+  const Eigen::MatrixXd c = EvaluateOutput(t).c;
+  Eigen::MatrixXd p(3, 6);
+  p.row(0) = c.row(0);                        // radial
+  p.row(1) = geo::kStationRadius * c.row(2);  // east: the longitude's arc
+  p.row(2) = geo::kStationRadius * c.row(1);  // north: the latitude's arc
+  return p;
+}
+
 std::vector<std::string> GeoLinearModel::state_names() const {
   return {"da_m", "ex", "ey", "ix", "iy", "dl_rad"};
 }

@@ -61,6 +61,13 @@ class LinearModel {
   virtual Eigen::VectorXd state_scale() const = 0;
   /// Characteristic time (s, > 0), e.g. 1/n for orbital models.
   virtual double time_scale() const = 0;
+
+  /// P(t) (3 x n, metres per state unit): the position, to first order, of a
+  /// state in the model's local Cartesian frame at t, so that two states x, y
+  /// of the same model are P(t) (x - y) apart. Empty when the model defines
+  /// none; the relative-motion models' positions are their first three states
+  /// and need none.
+  virtual Eigen::MatrixXd LocalPositionMap(double /*t*/) const { return {}; }
 };
 
 }  // namespace thrustsched::dynamics

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include "common/format.h"
 #include "transcription/collision_probability.h"
@@ -214,7 +215,8 @@ void FleetMilp::AddKeepOut() {
   const int count = num_members();
   std::vector<internal::MemberReach> reach;
   for (int k = 0; k < count; ++k)
-    reach.emplace_back(*members_[k], fleet_.position_map, ko.check_times_s, options_);
+    reach.emplace_back(*members_[k], FleetPositionMaps(fleet_, k, ko.check_times_s),
+                       ko.check_times_s, options_);
   if (ko.instantaneous_threshold > 0.0)
     stats_.keep_out_quantile = NormalQuantile(1.0 - ko.instantaneous_threshold);
   internal::RowBuffer rows(/*scale=*/true);
@@ -291,7 +293,7 @@ void FleetMilp::AddAssignment() {
   const int count = static_cast<int>(a.members.size());
   const double t_final = members_[0]->problem().grid.back();
   auto reach_of = [&](int k) {
-    return internal::MemberReach(*members_[k], a.map, {t_final}, options_);
+    return internal::MemberReach(*members_[k], {a.map}, {t_final}, options_);
   };
   std::optional<internal::MemberReach> ref;
   if (a.reference >= 0) ref.emplace(reach_of(a.reference));
@@ -407,6 +409,26 @@ void FleetMilp::IndexKeepOutGroups() {
       group.rows.push_back(
           rows.at("fleet_keep_out_" + keep_out_tags_[g] + "_" + std::to_string(f)));
   }
+}
+
+std::vector<std::vector<int>> FleetMilp::KeepOutRows(int k, int l) const {
+  std::vector<std::vector<int>> out;
+  if (!fleet_.keep_out) return out;
+  if (k > l) std::swap(k, l);
+  const std::string pair = fleet_.members.at(k).name + "_" + fleet_.members.at(l).name;
+  std::unordered_map<std::string, int> rows;
+  for (int r = 0; r < lp_.num_rows(); ++r) rows.emplace(lp_.row_names[r], r);
+  for (size_t q = 0; q < fleet_.keep_out->check_times_s.size(); ++q) {
+    const std::string tag = pair + "_" + std::to_string(q);
+    out.emplace_back();
+    for (int f = 0; f < 6; ++f) {
+      const auto it = rows.find("fleet_keep_out_" + tag + "_" + std::to_string(f));
+      if (it != rows.end()) out.back().push_back(it->second);
+    }
+    const auto pick = rows.find("fleet_keep_out_pick_" + tag);
+    if (pick != rows.end()) out.back().push_back(pick->second);
+  }
+  return out;
 }
 
 Eigen::VectorXd FleetMilp::StartFromPatterns(const std::vector<Eigen::MatrixXi>& patterns,

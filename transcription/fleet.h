@@ -45,8 +45,10 @@
 // Members must share the grid, use the on-off input mode and the sparse
 // formulation (the couplings are written on the state columns).
 // Positions: `position_map` (3 x n, metres) maps a member's state to its
-// position; empty means the first three state components (HCW, YA, the
-// double integrators).
+// position; empty means the model's own local position map where it has one
+// (GEO: radial, east, north about the station point, time-varying; members
+// then share the station point) and the first three state components
+// otherwise (HCW, YA, Schweighart-Sedwick, the double integrators).
 #ifndef THRUSTSCHED_TRANSCRIPTION_FLEET_H_
 #define THRUSTSCHED_TRANSCRIPTION_FLEET_H_
 
@@ -127,7 +129,7 @@ struct FleetProblem {
   FuelBalance balance;
   std::optional<FleetKeepOut> keep_out;
   std::optional<SlotAssignment> assignment;
-  Eigen::MatrixXd position_map;  // 3 x n or empty (first three state components)
+  Eigen::MatrixXd position_map;  // 3 x n or empty (see FleetPositionMap)
 
   /// Index of the member named `name`, -1 if none.
   int MemberIndex(std::string_view name) const;
@@ -191,6 +193,9 @@ class FleetMilp {
   /// @throws std::invalid_argument on sizes.
   Eigen::VectorXd StartFromPatterns(const std::vector<Eigen::MatrixXi>& patterns,
                                     const std::vector<int>& slots) const;
+  /// Rows of lp() that keep members k and l apart (faces and pick), per
+  /// keep-out check time (empty for a clear check); k, l in any order.
+  std::vector<std::vector<int>> KeepOutRows(int k, int l) const;
 
  private:
   void Compose();
@@ -236,6 +241,11 @@ struct FleetSolveOptions {
   /// spends at most start_time_share of a finite milp.time_limit_s.
   bool decoupled_start = true;
   double start_time_share = 0.25;
+  /// A start the keep-out rejects is repaired over the thrust slots within
+  /// this many intervals of each member's own burns (0: not repaired), in at
+  /// most neighbourhood_time_share of a finite milp.time_limit_s.
+  int neighbourhood_radius_intervals = 12;
+  double neighbourhood_time_share = 0.5;
 };
 
 /// Largest row or bound violation (model units) at which a start counts as
@@ -261,7 +271,15 @@ struct FleetStart {
   double bound = std::numeric_limits<double>::quiet_NaN();
   int member_solves = 0;
   int tries = 0;  // assignments tried until one kept every fleet row (0: none did, or none tried)
-  double seconds = 0.0;
+  /// Rejected by the fleet rows: the fleet MILP over the thrust slots near
+  /// the members' own burns (transcription/fleet_neighbourhood.h) was solved;
+  /// `repaired`: its plan replaced x (then accepted, objective its own).
+  bool neighbourhood_tried = false;
+  bool repaired = false;
+  int neighbourhood_radius_intervals = 0;
+  int neighbourhood_free_binaries = 0;
+  double neighbourhood_seconds = 0.0;
+  double seconds = 0.0;  // everything above, the neighbourhood included
 };
 
 struct FleetResult {
@@ -280,6 +298,10 @@ struct FleetResult {
   std::vector<PairDistance> planned_pairs;
   /// On the checker's fine sample grid (linear re-propagation of each member).
   std::vector<PairDistance> checked_pairs;
+  /// GEO: on the same samples, from every member's nonlinear replay (the
+  /// checker's), the exact separation in the radial, east, north axes of the
+  /// pair's midpoint. Empty without the replay.
+  std::vector<PairDistance> nonlinear_pairs;
   /// Largest |residual| per coupling (couplings, then the assignment if any),
   /// from the checker's re-propagated final states (or the decoded ones
   /// without the check), in the map's units (beyond the tolerance: > 0).
@@ -296,8 +318,17 @@ struct FleetResult {
 FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
                        const FleetSolveOptions& options = {});
 
-/// Position (metres) of a member's state under fleet.position_map.
-Eigen::Vector3d FleetPosition(const FleetProblem& fleet, const Eigen::VectorXd& state);
+/// P(t) (3 x n, metres) of member k: fleet.position_map where given, else
+/// its model's LocalPositionMap(t) (the GEO model's radial, east, north about
+/// the station point), else the first three state components.
+Eigen::MatrixXd FleetPositionMap(const FleetProblem& fleet, int k, double t);
+/// FleetPositionMap at each time, or one matrix when it does not depend on t
+/// (the form internal::MemberReach takes). `times` non-empty.
+std::vector<Eigen::MatrixXd> FleetPositionMaps(const FleetProblem& fleet, int k,
+                                               const std::vector<double>& times);
+/// Position (metres) of member k's state at t: FleetPositionMap(fleet, k, t) * state.
+Eigen::Vector3d FleetPosition(const FleetProblem& fleet, int k, double t,
+                              const Eigen::VectorXd& state);
 
 }  // namespace thrustsched::transcription
 

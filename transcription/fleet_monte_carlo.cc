@@ -35,17 +35,17 @@ MemberPaths Paths(const FleetProblem& fleet, int k, const Schedule& schedule,
   const int count = static_cast<int>(times.size());
   MemberPaths out;
   out.planned.resize(3 * count);
-  for (int i = 0; i < count; ++i) out.planned.segment<3>(3 * i) = FleetPosition(fleet, xs[i]);
+  const std::vector<Eigen::MatrixXd> position = FleetPositionMaps(fleet, k, times);
+  const auto position_at = [&](int i) -> const Eigen::MatrixXd& {
+    return position.size() == 1 ? position[0] : position[i];
+  };
+  for (int i = 0; i < count; ++i) out.planned.segment<3>(3 * i) = position_at(i) * xs[i];
   if (m.initial_covariance.size() == 0) return out;
   const Eigen::MatrixXd factor = CovarianceFactor(m.initial_covariance);
   const dynamics::LinearFlow flow = dynamics::PropagateFlow(*p.model, p.grid.front(), times, tol);
-  const int n = p.model->num_states();
-  const Eigen::MatrixXd position = fleet.position_map.size() == 0
-                                       ? Eigen::MatrixXd(Eigen::MatrixXd::Identity(3, n))
-                                       : fleet.position_map;
   out.deviation.resize(3 * count, factor.cols());
   for (int i = 0; i < count; ++i)
-    out.deviation.middleRows(3 * i, 3) = position * flow.phi[i] * factor;
+    out.deviation.middleRows(3 * i, 3) = position_at(i) * flow.phi[i] * factor;
   return out;
 }
 

@@ -200,7 +200,8 @@ bool FleetProblem::IsValid(std::string* error) const {
                            std::to_string(position_map.cols()) + ", expected finite 3 x " +
                            std::to_string(n));
   }
-  if (position_map.size() == 0 && n < 3) {
+  if (position_map.size() == 0 && n < 3 &&
+      members[0].problem.model->LocalPositionMap(members[0].problem.grid.front()).size() == 0) {
     return Fail(error,
                 "position_map: empty and the state has " + std::to_string(n) + " components (< 3)");
   }
@@ -241,9 +242,28 @@ bool FleetProblem::IsValid(std::string* error) const {
   return true;
 }
 
-Eigen::Vector3d FleetPosition(const FleetProblem& fleet, const Eigen::VectorXd& state) {
-  if (fleet.position_map.size() == 0) return state.head<3>();
-  return fleet.position_map * state;
+Eigen::MatrixXd FleetPositionMap(const FleetProblem& fleet, int k, double t) {
+  if (fleet.position_map.size() != 0) return fleet.position_map;
+  const dynamics::LinearModel& model = *fleet.members.at(k).problem.model;
+  Eigen::MatrixXd local = model.LocalPositionMap(t);
+  if (local.size() != 0) return local;
+  return Eigen::MatrixXd::Identity(3, model.num_states());
+}
+
+std::vector<Eigen::MatrixXd> FleetPositionMaps(const FleetProblem& fleet, int k,
+                                               const std::vector<double>& times) {
+  const bool constant =
+      fleet.position_map.size() != 0 ||
+      fleet.members.at(k).problem.model->LocalPositionMap(times.front()).size() == 0;
+  if (constant) return {FleetPositionMap(fleet, k, times.front())};
+  std::vector<Eigen::MatrixXd> out;
+  for (double t : times) out.push_back(FleetPositionMap(fleet, k, t));
+  return out;
+}
+
+Eigen::Vector3d FleetPosition(const FleetProblem& fleet, int k, double t,
+                              const Eigen::VectorXd& state) {
+  return FleetPositionMap(fleet, k, t) * state;
 }
 
 }  // namespace thrustsched::transcription

@@ -2,7 +2,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "transcription/fleet.h"
+#include "transcription/fleet_neighbourhood.h"
 #include "transcription/fleet_start.h"
 #include "transcription/internal/fleet_reach.h"
 
@@ -17,7 +20,8 @@ std::vector<std::vector<Eigen::Vector3d>> PlannedPositions(const FleetMilp& flee
                                                            const Eigen::VectorXd& x) {
   std::vector<std::vector<Eigen::Vector3d>> out;
   for (int k = 0; k < fleet.num_members(); ++k) {
-    const internal::MemberReach reach(fleet.member(k), fleet.fleet().position_map, times, options);
+    const internal::MemberReach reach(fleet.member(k), FleetPositionMaps(fleet.fleet(), k, times),
+                                      times, options);
     out.emplace_back();
     for (size_t q = 0; q < times.size(); ++q) {
       Eigen::Vector3d r;
@@ -56,8 +60,10 @@ std::vector<PairDistance> PairsOf(const std::vector<std::vector<Eigen::Vector3d>
 
 // Pairs on the checker's sample times: the members share the grid, so the
 // samples coincide; times one member lacks (a burn edge) are skipped.
-std::vector<PairDistance> CheckedPairs(const FleetProblem& fleet,
-                                       const std::vector<CheckReport>& checks) {
+// relative(a, i, b, j): member a's position at its sample i minus b's at j.
+template <typename Relative>
+std::vector<PairDistance> PairsOnSamples(const std::vector<CheckReport>& checks,
+                                         Relative&& relative) {
   std::vector<PairDistance> out;
   for (size_t a = 0; a < checks.size(); ++a) {
     for (size_t b = a + 1; b < checks.size(); ++b) {
@@ -68,8 +74,7 @@ std::vector<PairDistance> CheckedPairs(const FleetProblem& fleet,
       size_t i = 0, j = 0;
       while (i < ta.size() && j < tb.size()) {
         if (std::abs(ta[i] - tb[j]) <= 1e-6) {
-          Closest(FleetPosition(fleet, checks[a].sample_states[i]),
-                  FleetPosition(fleet, checks[b].sample_states[j]), ta[i], &d);
+          Closest(relative(d.a, i, d.b, j), Eigen::Vector3d::Zero(), ta[i], &d);
           ++i, ++j;
         } else if (ta[i] < tb[j]) {
           ++i;
@@ -81,6 +86,33 @@ std::vector<PairDistance> CheckedPairs(const FleetProblem& fleet,
     }
   }
   return out;
+}
+
+std::vector<PairDistance> CheckedPairs(const FleetProblem& fleet,
+                                       const std::vector<CheckReport>& checks) {
+  return PairsOnSamples(checks, [&](int a, size_t i, int b, size_t j) {
+    const double t = checks[a].sample_times[i];
+    return Eigen::Vector3d(FleetPosition(fleet, a, t, checks[a].sample_states[i]) -
+                           FleetPosition(fleet, b, t, checks[b].sample_states[j]));
+  });
+}
+
+// Pairs of the nonlinear replays (GEO): the exact inertial separation, in
+// the radial, east, north axes of the pair's midpoint (the max-norm is the
+// cube's). Empty unless every member was replayed.
+std::vector<PairDistance> NonlinearPairs(const std::vector<CheckReport>& checks) {
+  for (const CheckReport& c : checks) {
+    if (!c.nonlinear_checked || c.nonlinear_eci.size() != c.sample_times.size()) return {};
+  }
+  return PairsOnSamples(checks, [&](int a, size_t i, int b, size_t j) {
+    const Eigen::Vector3d ra = checks[a].nonlinear_eci[i].head<3>();
+    const Eigen::Vector3d rb = checks[b].nonlinear_eci[j].head<3>();
+    const Eigen::Vector3d radial = (ra + rb).normalized();
+    const Eigen::Vector3d east = Eigen::Vector3d::UnitZ().cross(radial).normalized();
+    const Eigen::Vector3d north = radial.cross(east);
+    const Eigen::Vector3d d = ra - rb;
+    return Eigen::Vector3d(d.dot(radial), d.dot(east), d.dot(north));
+  });
 }
 
 double Residual(const Eigen::MatrixXd& map, const Eigen::VectorXd& x, const Eigen::VectorXd* ref,
@@ -115,6 +147,37 @@ std::vector<double> CouplingResiduals(const FleetProblem& fleet, const std::vect
   return out;
 }
 
+// A start the keep-out rejected, replaced by the fleet plan over the slots
+// near the members' own burns where one is found; its time taken from the
+// solve's limit.
+void RepairInNeighbourhood(const FleetMilp& milp, const milp::Solver& solver,
+                           const FleetSolveOptions& options, milp::SolveOptions* solve,
+                           FleetStart* start) {
+  milp::SolveOptions restricted = *solve;
+  restricted.initial_solution.reset();
+  if (std::isfinite(solve->time_limit_s))
+    restricted.time_limit_s = options.neighbourhood_time_share * solve->time_limit_s;
+  const FleetNeighbourhood n = RepairMemberByMember(milp, start->x, solver, restricted,
+                                                    options.neighbourhood_radius_intervals);
+  start->neighbourhood_tried = true;
+  start->neighbourhood_radius_intervals = n.radius_intervals;
+  start->neighbourhood_free_binaries = n.free_binaries;
+  start->neighbourhood_seconds = n.seconds;
+  start->seconds += n.seconds;
+  if (std::isfinite(solve->time_limit_s))
+    solve->time_limit_s = std::max(solve->time_limit_s - n.seconds, 1e-3);
+  if (!n.found) {
+    start->note += "; not repaired: " + n.note;
+    return;
+  }
+  start->x = n.x;
+  start->objective = n.objective;
+  start->accepted = start->repaired = true;
+  start->note += "; repaired member by member (" + std::to_string(n.members_replanned) +
+                 " re-planned within " + std::to_string(n.radius_intervals) +
+                 " intervals of their own burns)";
+}
+
 // The decoupled start as the solve's MIP start, its time taken from the
 // solve's limit.
 FleetStart StartFromMembersAlone(const FleetMilp& milp, const milp::Solver& solver,
@@ -136,9 +199,12 @@ FleetStart StartFromMembersAlone(const FleetMilp& milp, const milp::Solver& solv
         options.start_time_share * options.milp.time_limit_s / static_cast<double>(solves);
   }
   FleetStart start = DecoupledStart(milp, solver, member);
-  if (start.built) solve->initial_solution = start.x;
   if (std::isfinite(solve->time_limit_s))
     solve->time_limit_s = std::max(solve->time_limit_s - start.seconds, 1e-3);
+  if (start.built && !start.accepted && fleet.keep_out &&
+      options.neighbourhood_radius_intervals > 0)
+    RepairInNeighbourhood(milp, solver, options, solve, &start);
+  if (start.built) solve->initial_solution = start.x;
   return start;
 }
 
@@ -166,6 +232,12 @@ milp::SolveResult SolveWithStart(const FleetMilp& milp, const milp::Solver& solv
     }
   }
   milp::SolveResult r = solver.Solve(lp, solve);
+  if (!r.has_solution() && start.accepted) {  // a limit before the solver took the start: keep it
+    r.x = start.x;
+    r.objective = lp.Objective(start.x);
+    r.status = milp::SolveStatus::kFeasible;
+    r.detail += "; the start kept (the solver stopped without taking it)";
+  }
   if (bound > -std::numeric_limits<double>::infinity() &&
       (!std::isfinite(r.best_bound) || bound > r.best_bound)) {
     if (bound == std::numeric_limits<double>::infinity()) {
@@ -215,6 +287,7 @@ FleetResult SolveFleet(const FleetProblem& fleet, const milp::Solver& solver,
       final_states[k] = r.checks.back().final_state;
     }
     r.checked_pairs = CheckedPairs(fleet, r.checks);
+    r.nonlinear_pairs = NonlinearPairs(r.checks);
     if (fleet.keep_out && fleet.HasInitialCovariance() && options.monte_carlo.samples > 0)
       r.monte_carlo = CheckFleetMonteCarlo(fleet, r.schedules, options.monte_carlo);
   }

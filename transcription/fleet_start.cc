@@ -26,11 +26,13 @@ int SelectedComponent(const Eigen::RowVectorXd& row) {
 }
 
 // Narrows `box` (a kStateBox or kFixedState terminal, or kFree) by map x = offset +- tol;
-// false if the map is not a selection of components.
+// false if the map is not a selection of components or the terminal is the
+// station-keeping sets (not a box).
 bool Narrow(const Eigen::MatrixXd& map, const Eigen::VectorXd& offset,
             const Eigen::VectorXd& tolerance, TerminalSpec* box) {
   const int n = static_cast<int>(map.cols());
-  if (box->kind == TerminalKind::kFixedState) {  // a box of zero width
+  if (box->kind == TerminalKind::kStationKeepingSets) return false;  // not a box
+  if (box->kind == TerminalKind::kFixedState) {                      // a box of zero width
     box->kind = TerminalKind::kStateBox;
     box->tolerance = Eigen::VectorXd::Zero(n);
   }
@@ -146,19 +148,15 @@ Choice ChooseSlots(const FuelBalance& balance, const std::vector<double>& fixed_
 std::vector<ScheduleProblem> AloneProblems(const FleetProblem& fleet, std::string* why) {
   std::vector<ScheduleProblem> out;
   for (const FleetMember& m : fleet.members) out.push_back(m.problem);
-  for (const ScheduleProblem& p : out) {
-    if (p.terminal.kind == TerminalKind::kStationKeepingSets) {
-      *why = "a member's own terminal set is not a box (station-keeping sets)";
-      return {};
-    }
-  }
   for (const TerminalCoupling& c : fleet.couplings) {
     if (c.reference >= 0) {
       *why = "a coupling is relative to another member";
       return {};
     }
     if (!Narrow(c.map, c.offset, c.tolerance, &out[c.member].terminal)) {
-      *why = "a coupling map is not a selection of state components";
+      *why =
+          "a coupling map is not a selection of state components, or its member's terminal "
+          "set is not a box (station-keeping sets)";
       return {};
     }
   }
@@ -186,7 +184,9 @@ bool SolveEverySlot(const SlotAssignment& a, const std::vector<ScheduleProblem>&
     for (size_t s = 0; s < slots; ++s) {
       ScheduleProblem p = problems[a.members[i]];
       if (!Narrow(a.map, a.slots[s], a.tolerance, &p.terminal)) {
-        start->note = "the assignment map is not a selection of state components";
+        start->note =
+            "the assignment map is not a selection of state components, or a member's "
+            "terminal set is not a box (station-keeping sets)";
         return false;
       }
       out->plans[i][s] = SolveAlone(p, solver, options);

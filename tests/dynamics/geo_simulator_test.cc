@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "dynamics/geo_model.h"
+#include "dynamics/models.h"
 #include "dynamics/propagation.h"
 #include "dynamics/thrusters.h"
 
@@ -35,6 +36,36 @@ std::vector<double> Grid(double t1, double step) {
 
 double Seconds(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The fleet keep-out's local position map against the exact ECI positions of
+// two co-located satellites: e/i-vector separated (Soop, ch. 7) and 30 km
+// apart in longitude, the first-order map's error is second order in their
+// offsets from the station point.
+TEST(GeoSimulatorTest, LocalPositionMapGivesTheSeparationOfCoLocatedSatellites) {
+  const GeoModelOptions options;
+  const GeoSimulator sim{options};
+  const GeoLinearModel model{options};
+  Eigen::VectorXd x(6), y(6);
+  x << 800.0, 1.2e-4, 0.3e-4, 0.6e-4, -0.2e-4, 0.02 * kDeg;
+  y << -400.0, -0.9e-4, 0.5e-4, -0.5e-4, 0.4e-4, -0.02 * kDeg;
+  double largest = 0.0;
+  for (double t : {0.0, 7000.0, 0.37 * kDay, 2.9 * kDay}) {
+    const Vector6d station = sim.EciFromRelative(Eigen::VectorXd::Zero(6), t);
+    const Eigen::Vector3d radial = station.head<3>().normalized();
+    const Eigen::Vector3d north = Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d east = north.cross(radial);
+    const Eigen::Vector3d d =
+        sim.EciFromRelative(x, t).head<3>() - sim.EciFromRelative(y, t).head<3>();
+    const Eigen::Vector3d exact(d.dot(radial), d.dot(east), d.dot(north));
+    const Eigen::Vector3d linear = model.LocalPositionMap(t) * (x - y);
+    largest = std::max(largest, exact.norm());
+    // |offset| <= 15 km + 2 a e ~ 25 km: (25 km)^2 / a_mp = 15 m.
+    EXPECT_LT((linear - exact).norm(), 30.0)
+        << "t = " << t << " exact " << exact.transpose() << " linear " << linear.transpose();
+  }
+  EXPECT_GT(largest, 25e3);  // a separation worth checking
+  EXPECT_EQ(HcwModel(4e-3).LocalPositionMap(0.0).size(), 0);
 }
 
 TEST(GeoSimulatorTest, StationPointConversions) {

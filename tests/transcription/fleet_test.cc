@@ -14,6 +14,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@
 #include "milp/cbc_solver.h"
 #include "transcription/collision_probability.h"
 #include "transcription/fleet_monte_carlo.h"
+#include "transcription/fleet_neighbourhood.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::transcription {
@@ -51,6 +53,7 @@ Eigen::VectorXd State(double x, double y, double vx, double vy) {
 
 // One enumerated plan: its cost, final state and positions at the check times.
 struct Plan {
+  std::vector<int> slot;  // 0 off, i > 0 thruster i - 1, per slot
   double cost = 0.0;
   Eigen::VectorXd final_state;
   std::vector<Eigen::Vector3d> positions;
@@ -63,6 +66,7 @@ std::vector<Plan> Enumerate(const ScheduleProblem& p, const std::vector<double>&
   std::vector<int> slot(kSlots, 0);  // 0 off, i > 0 thruster i - 1
   while (true) {
     Plan plan;
+    plan.slot = slot;
     std::vector<Eigen::Vector3d> r(kSlots + 1), v(kSlots + 1), u(kSlots, Eigen::Vector3d::Zero());
     r[0] = p.initial_state.head<3>();
     v[0] = p.initial_state.tail<3>();
@@ -237,24 +241,37 @@ TEST(Fleet, DecoupledFleetIsTheSumOfItsMembersAlone) {
   EXPECT_EQ(r.stats.num_rows, milp.member(0).lp().num_rows() + milp.member(1).lp().num_rows());
 }
 
-// b drifts along x through a, which sits still: alone, neither fires and
-// they meet at t = 3 s. With a 1 m keep-out cube a may step aside along x,
-// b along y; the enumeration over both members' patterns gives the price.
-TEST(Fleet, KeepOutAvoidsTheCollisionOfTheUncoupledPlans) {
-  FleetProblem f;
-  f.members = {{"a", Member(State(0, 0, 0, 0), {kX, -kX})},
-               {"b", Member(State(-3, 0, 1, 0), {kY, -kY})}};
+// a at rest at the origin (thrusters along x), b 3 m behind it at 1 m/s
+// (thrusters along y), 1-m keep-out cube checked at the nodes and midpoints.
+struct CrossingPair {
+  FleetProblem fleet;
   std::vector<double> checks;
-  for (int q = 1; q <= 2 * kSlots; ++q) checks.push_back(0.5 * q);  // nodes and midpoints
-  f.keep_out = FleetKeepOut{1.0, checks};
-  const auto a = Enumerate(f.members[0].problem, checks);
-  const auto b = Enumerate(f.members[1].problem, checks);
-  auto clear = [&](const Plan& x, const Plan& y) {
+  std::vector<Plan> a, b;  // every plan of each
+  CrossingPair() {
+    fleet.members = {{"a", Member(State(0, 0, 0, 0), {kX, -kX})},
+                     {"b", Member(State(-3, 0, 1, 0), {kY, -kY})}};
+    for (int q = 1; q <= 2 * kSlots; ++q) checks.push_back(0.5 * q);
+    fleet.keep_out = FleetKeepOut{1.0, checks};
+    a = Enumerate(fleet.members[0].problem, checks);
+    b = Enumerate(fleet.members[1].problem, checks);
+  }
+  bool Clear(const Plan& x, const Plan& y) const {
     for (size_t q = 0; q < checks.size(); ++q) {
       if ((x.positions[q] - y.positions[q]).cwiseAbs().maxCoeff() < 1.0 - 1e-9) return false;
     }
     return true;
-  };
+  }
+};
+
+// b drifts along x through a, which sits still: alone, neither fires and
+// they meet at t = 3 s. With a 1 m keep-out cube a may step aside along x,
+// b along y; the enumeration over both members' patterns gives the price.
+TEST(Fleet, KeepOutAvoidsTheCollisionOfTheUncoupledPlans) {
+  CrossingPair pair;
+  FleetProblem& f = pair.fleet;
+  const auto& a = pair.a;
+  const auto& b = pair.b;
+  auto clear = [&](const Plan& x, const Plan& y) { return pair.Clear(x, y); };
   ASSERT_EQ(a[0].cost, 0.0);  // the all-off plans collide
   ASSERT_FALSE(clear(a[0], b[0]));
   const double expected = PairMinimum(a, b, clear, Sum);
@@ -282,6 +299,66 @@ TEST(Fleet, KeepOutAvoidsTheCollisionOfTheUncoupledPlans) {
   ASSERT_EQ(free.status, milp::SolveStatus::kOptimal);
   EXPECT_NEAR(free.objective, 0.0, 1e-9);
   EXPECT_LT(free.planned_pairs[0].min_distance_m, 1e-6);  // they meet
+}
+
+// Member by member near given burns is the enumeration over b's plans that
+// fire only near its own burn and keep out of a's fixed plan: a fires slot 2
+// (and keeps it), b's burn in slot 2 leaves it slots 1-3 within one slot; with
+// the radius the whole horizon, b's best plan clear of a's.
+TEST(Fleet, RepairMemberByMemberIsTheEnumerationOverTheSlotsNearTheGivenBurns) {
+  CrossingPair pair;
+  FleetProblem& f = pair.fleet;
+  const auto& a = pair.a;
+  const auto& b = pair.b;
+  auto clear = [&](const Plan& x, const Plan& y) { return pair.Clear(x, y); };
+  auto within = [](const Plan& p, int first, int last) {
+    for (int j = 0; j < kSlots; ++j) {
+      if (p.slot[j] > 0 && (j < first || j > last)) return false;
+    }
+    return true;
+  };
+  const Plan* fixed = nullptr;  // a's plan: thruster 0 (+x) in slot 2 only
+  for (const Plan& p : a) {
+    if (p.slot == std::vector<int>{0, 0, 1, 0, 0, 0}) fixed = &p;
+  }
+  ASSERT_NE(fixed, nullptr);
+  double near = kInf, anywhere = kInf;
+  for (const Plan& p : b) {
+    if (!clear(*fixed, p)) continue;
+    anywhere = std::min(anywhere, fixed->cost + p.cost);
+    if (within(p, 1, 3)) near = std::min(near, fixed->cost + p.cost);
+  }
+  ASSERT_TRUE(std::isfinite(near));
+  ASSERT_GE(near, anywhere);
+
+  const FleetMilp milp(f, BuildOptions{});
+  Eigen::MatrixXi pa = Eigen::MatrixXi::Zero(2, kSlots), pb = Eigen::MatrixXi::Zero(2, kSlots);
+  pa(0, 2) = 1;
+  pb(1, 2) = 1;
+  const Eigen::VectorXd plans = milp.StartFromPatterns({pa, pb}, {});
+  ASSERT_GT(milp.lp().MaxViolation(plans), kStartFeasibility);  // the given plans collide
+  const auto cbc = milp::MakeCbcSolver();
+  const FleetNeighbourhood n = RepairMemberByMember(milp, plans, *cbc, Exact().milp, 1);
+  ASSERT_TRUE(n.found) << n.note;
+  EXPECT_NEAR(n.objective, near, 1e-6);
+  EXPECT_EQ(n.members_replanned, 1);
+  EXPECT_GE(n.rounds, 1);  // summed over the rounds of row generation:
+  EXPECT_EQ(n.free_binaries, n.rounds * 2 * 3);
+  EXPECT_EQ(n.fixed_binaries, n.rounds * 2 * kSlots - n.free_binaries);
+  EXPECT_LE(milp.lp().MaxViolation(n.x), kStartFeasibility);
+
+  const FleetNeighbourhood all = RepairMemberByMember(milp, plans, *cbc, Exact().milp, kSlots);
+  ASSERT_TRUE(all.found) << all.note;
+  EXPECT_NEAR(all.objective, anywhere, 1e-6);
+  EXPECT_EQ(all.fixed_binaries, 0);
+  // Plans that already keep out are not touched.
+  const FleetNeighbourhood same = RepairMemberByMember(milp, all.x, *cbc, Exact().milp, 1);
+  ASSERT_TRUE(same.found);
+  EXPECT_EQ(same.members_replanned, 0);
+  EXPECT_NEAR(same.objective, anywhere, 1e-9);
+  EXPECT_THROW(RepairMemberByMember(milp, plans, *cbc, Exact().milp, -1), std::invalid_argument);
+  EXPECT_THROW(RepairMemberByMember(milp, plans.head(3), *cbc, Exact().milp, 1),
+               std::invalid_argument);
 }
 
 // Three deputies take three slots relative to a chief: the assignment MILP

@@ -5,7 +5,7 @@
 // transcription/internal/keep_out_bounds.h (Effects, KnapsackRange) with no
 // cost budget: each binary anywhere in [0, 1].
 //
-//   internal::MemberReach reach(member_milp, position_map, check_times, options);
+//   internal::MemberReach reach(member_milp, {position_map}, check_times, options);
 //   auto [low, high] = reach.Range(q, a);               // a^T map x(t_q)
 //   double drift = reach.AddPositionTerms(q, a, +1.0, offset, add_coef);
 #ifndef THRUSTSCHED_TRANSCRIPTION_INTERNAL_FLEET_REACH_H_
@@ -28,9 +28,11 @@ Eigen::VectorXd StateScale(const ScheduleMilp& milp);
 
 class MemberReach {
  public:
-  /// map: rows x n, or empty for the first three state components; times
-  /// sorted inside the member's grid. Keeps a reference to `milp`.
-  MemberReach(const ScheduleMilp& milp, const Eigen::MatrixXd& map,
+  /// maps: one (rows x n) per time, or one for every time; times sorted
+  /// inside the member's grid. Keeps a reference to `milp`.
+  /// @throws std::invalid_argument if maps has neither one matrix nor one
+  ///         per time.
+  MemberReach(const ScheduleMilp& milp, std::vector<Eigen::MatrixXd> maps,
               const std::vector<double>& times, const BuildOptions& options);
 
   /// Lowest and highest a^T map x(times[q]) over every on-off plan (exact
@@ -51,19 +53,24 @@ class MemberReach {
   double AddPositionTerms(int q, const Eigen::VectorXd& a, double sign, int offset,
                           Add&& add) const {
     const PartialMap& at = maps_[q];
-    const Eigen::RowVectorXd on_state = a.transpose() * map_ * at.phi;
-    const Eigen::RowVectorXd on_thrust = a.transpose() * map_ * at.gamma;
+    const Eigen::MatrixXd& map = MapAt(q);
+    const Eigen::RowVectorXd on_state = a.transpose() * map * at.phi;
+    const Eigen::RowVectorXd on_thrust = a.transpose() * map * at.gamma;
     const int j = at.interval;
     for (int c = 0; c < on_state.size(); ++c)
       add(offset + milp_.state(j, c).index(), sign * on_state[c] * scale_[c]);
     for (int i = 0; i < on_thrust.size(); ++i)
       add(offset + milp_.on(i, j).index(), sign * on_thrust[i]);
-    return a.dot(map_ * at.drift);
+    return a.dot(map * at.drift);
   }
 
  private:
+  const Eigen::MatrixXd& MapAt(int q) const {
+    return maps_at_.size() == 1 ? maps_at_[0] : maps_at_[q];
+  }
+
   const ScheduleMilp& milp_;
-  Eigen::MatrixXd map_;
+  std::vector<Eigen::MatrixXd> maps_at_;
   Eigen::VectorXd scale_;
   std::vector<PartialMap> maps_;
   std::vector<Eigen::VectorXd> free_;        // thrust-free states at the nodes
