@@ -1,4 +1,5 @@
 // FleetProblem's validation and small helpers (transcription/fleet.h).
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -204,6 +205,22 @@ bool FleetProblem::IsValid(std::string* error) const {
       members[0].problem.model->LocalPositionMap(members[0].problem.grid.front()).size() == 0) {
     return Fail(error,
                 "position_map: empty and the state has " + std::to_string(n) + " components (< 3)");
+  }
+  if (position_map.size() == 0) {  // the models' local frames must be one frame
+    const double t0 = members[0].problem.grid.front();
+    const Eigen::MatrixXd first = members[0].problem.model->LocalPositionMap(t0);
+    for (size_t k = 1; k < members.size(); ++k) {
+      const Eigen::MatrixXd local = members[k].problem.model->LocalPositionMap(t0);
+      const bool same =
+          local.rows() == first.rows() && local.cols() == first.cols() &&
+          (first.size() == 0 || (local - first).cwiseAbs().maxCoeff() <=
+                                    1e-12 * std::max(1.0, first.cwiseAbs().maxCoeff()));
+      if (!same) {
+        return Fail(error, "members[" + std::to_string(k) +
+                               "].problem.model: its local position frame differs from "
+                               "members[0]'s (co-located members share one station point)");
+      }
+    }
   }
   if (!ValidCouplings(*this, n, error) || !ValidAssignment(*this, n, error)) return false;
   if (balance.kind == FuelBalanceKind::kMaxExcessOverMean &&

@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
 #include "transcription/collision_probability.h"
@@ -578,6 +579,21 @@ TEST(Fleet, DecoupledStartProvesTheFleetWhenTheMembersAloneKeepOut) {
 TEST(Fleet, BadInputNamesTheField) {
   std::string error;
   FleetProblem f = TwoMembers();
+  // GEO members at two station points: their local frames are not one.
+  for (int k = 0; k < 2; ++k) {
+    dynamics::GeoModelOptions geo;
+    geo.station_longitude_deg = k == 0 ? 118.0 : 118.5;
+    f.members[k].problem.model = std::make_shared<dynamics::GeoLinearModel>(geo);
+  }
+  f.couplings.clear();
+  EXPECT_FALSE(f.IsValid(&error));
+  EXPECT_NE(error.find("members[1].problem.model: its local position frame differs"),
+            std::string::npos)
+      << error;
+  f.members[1].problem.model = f.members[0].problem.model;
+  EXPECT_TRUE(f.IsValid(&error)) << error;
+
+  f = TwoMembers();
   f.couplings[0].reference = 5;
   EXPECT_FALSE(f.IsValid(&error));
   EXPECT_NE(error.find("couplings[0].reference: no member 5"), std::string::npos) << error;
