@@ -42,21 +42,32 @@ double RowsViolation(const milp::LpData& lp, const std::vector<int>& rows,
   return worst;
 }
 
-// The keep-out checks against member k's predecessors: rows[l][q] for l < k.
-using CheckRows = std::vector<std::vector<std::vector<int>>>;
+// Keep-out rows per check: [check q][row].
+using CheckRows = std::vector<std::vector<int>>;
+// Every pair's, [a][b] for a < b, read once from the fleet MILP.
+using PairRows = std::vector<std::vector<CheckRows>>;
+
+PairRows AllKeepOutRows(const FleetMilp& milp) {
+  const int count = milp.num_members();
+  PairRows out(count, std::vector<CheckRows>(count));
+  for (int a = 0; a < count; ++a)
+    for (int b = a + 1; b < count; ++b) out[a][b] = milp.KeepOutRows(a, b);
+  return out;
+}
 
 // Adds to `active` every check (l, q) whose rows x breaks, with its
 // neighbours within kCheckNeighbours (the violation moves as the plan does);
 // returns how many were added.
 constexpr int kCheckNeighbours = 2;
-int ActivateBroken(const milp::LpData& lp, const CheckRows& rows, const Eigen::VectorXd& x,
+// rows[l][k] for l < k: member k's checks against its predecessors.
+int ActivateBroken(const milp::LpData& lp, const PairRows& rows, int k, const Eigen::VectorXd& x,
                    std::vector<std::vector<bool>>* active) {
   const Eigen::VectorXd activity = lp.a_matrix * x;
   int added = 0;
-  for (size_t l = 0; l < rows.size(); ++l) {
-    const int checks = static_cast<int>(rows[l].size());
+  for (int l = 0; l < k; ++l) {
+    const int checks = static_cast<int>(rows[l][k].size());
     for (int q = 0; q < checks; ++q) {
-      if (RowsViolation(lp, rows[l][q], activity) <= kStartFeasibility) continue;
+      if (RowsViolation(lp, rows[l][k][q], activity) <= kStartFeasibility) continue;
       for (int p = std::max(0, q - kCheckNeighbours);
            p <= std::min(checks - 1, q + kCheckNeighbours); ++p) {
         if (!(*active)[l][p]) (*active)[l][p] = true, ++added;
@@ -70,9 +81,9 @@ int ActivateBroken(const milp::LpData& lp, const CheckRows& rows, const Eigen::V
 // on-off binaries fixed to 0 away from its burns, and only the active
 // keep-out checks against its predecessors kept (every other keep-out row
 // relaxed: row generation, the checks found broken added round by round).
-milp::LpData StepLp(const FleetMilp& milp, const Eigen::VectorXd& x, int k, int radius,
-                    const CheckRows& rows, const std::vector<std::vector<bool>>& active,
-                    FleetNeighbourhood* out) {
+milp::LpData StepLp(const FleetMilp& milp, const Eigen::VectorXd& x, int k,
+                    const std::vector<bool>& near, const PairRows& rows,
+                    const std::vector<std::vector<bool>>& active, FleetNeighbourhood* out) {
   milp::LpData lp = milp.lp();
   const int count = milp.num_members();
   for (int l = 0; l < count; ++l) {
@@ -82,7 +93,6 @@ milp::LpData StepLp(const FleetMilp& milp, const Eigen::VectorXd& x, int k, int 
       lp.col_lower[c] = lp.col_upper[c] = x[c];
   }
   const ScheduleMilp& m = milp.member(k);
-  const std::vector<bool> near = NearBurns(milp, x, k, radius);
   for (int i = 0; i < m.problem().thrusters.size(); ++i) {
     for (int j = 0; j < m.problem().num_intervals(); ++j) {
       const int c = milp.column_offset(k) + m.on(i, j).index();
@@ -100,12 +110,12 @@ milp::LpData StepLp(const FleetMilp& milp, const Eigen::VectorXd& x, int k, int 
   for (int a = 0; a < count; ++a) {
     for (int b = a + 1; b < count; ++b) {
       if (b == k) continue;
-      for (const std::vector<int>& r : milp.KeepOutRows(a, b)) relax(r);
+      for (const std::vector<int>& r : rows[a][b]) relax(r);
     }
   }
   for (int l = 0; l < k; ++l) {
-    for (size_t q = 0; q < rows[l].size(); ++q)
-      if (!active[l][q]) relax(rows[l][q]);
+    for (size_t q = 0; q < rows[l][k].size(); ++q)
+      if (!active[l][q]) relax(rows[l][k][q]);
   }
   return lp;
 }
@@ -132,15 +142,13 @@ FleetNeighbourhood RepairMemberByMember(const FleetMilp& milp, const Eigen::Vect
   FleetNeighbourhood out;
   out.radius_intervals = radius_intervals;
   Eigen::VectorXd x = plans;
+  const PairRows rows = AllKeepOutRows(milp);
   for (int k = 1; k < milp.num_members(); ++k) {
-    CheckRows rows;
     std::vector<std::vector<bool>> active;
-    for (int l = 0; l < k; ++l) {
-      rows.push_back(milp.KeepOutRows(l, k));
-      active.emplace_back(rows.back().size(), false);
-    }
-    if (ActivateBroken(whole, rows, x, &active) == 0) continue;
+    for (int l = 0; l < k; ++l) active.emplace_back(rows[l][k].size(), false);
+    if (ActivateBroken(whole, rows, k, x, &active) == 0) continue;
     ++out.members_replanned;
+    const std::vector<bool> near = NearBurns(milp, x, k, radius_intervals);
     const double step_limit =
         std::isfinite(options.time_limit_s)
             ? std::max(options.time_limit_s - Seconds(start), 1e-3) / (milp.num_members() - k)
@@ -151,8 +159,7 @@ FleetNeighbourhood RepairMemberByMember(const FleetMilp& milp, const Eigen::Vect
       milp::SolveOptions step = options;
       step.initial_solution.reset();
       step.time_limit_s = std::max(step_limit - Seconds(step_start), 1e-3);
-      const milp::SolveResult r =
-          solver.Solve(StepLp(milp, x, k, radius_intervals, rows, active, &out), step);
+      const milp::SolveResult r = solver.Solve(StepLp(milp, x, k, near, rows, active, &out), step);
       out.status = r.status;
       ++out.rounds;
       if (!r.has_solution()) {
@@ -162,7 +169,7 @@ FleetNeighbourhood RepairMemberByMember(const FleetMilp& milp, const Eigen::Vect
         out.seconds = Seconds(start);
         return out;
       }
-      kept = ActivateBroken(whole, rows, r.x, &active) == 0;
+      kept = ActivateBroken(whole, rows, k, r.x, &active) == 0;
       if (kept) x = r.x;
     }
     if (!kept) {

@@ -16,9 +16,10 @@
 //
 // Not built (with the reason in `note`) when a coupling or the assignment is
 // relative to another member (no member alone knows its target), a coupling
-// map is not a selection of state components (a member's terminal set is a
-// box), a member has station-keeping terminal sets of its own, or some
-// member alone (or every assignment) has no schedule.
+// or assignment map is not a selection of state components or applies to a
+// member whose terminal set is not a box (its own station-keeping sets; a
+// member with them and no coupling is solved alone as it is), or some member
+// alone (or every assignment) has no schedule.
 #ifndef THRUSTSCHED_TRANSCRIPTION_FLEET_START_H_
 #define THRUSTSCHED_TRANSCRIPTION_FLEET_START_H_
 
