@@ -163,25 +163,36 @@ nlohmann::json FleetSummaryJson(const FleetScenario& f, const transcription::Fle
           : nlohmann::json(nullptr);
   j["monte_carlo"] = r.monte_carlo ? MonteCarloJson(f, *r.monte_carlo) : nlohmann::json(nullptr);
   const transcription::FleetStart& start = r.start;
-  j["start"] = start.tried
-                   ? nlohmann::json{{"built", start.built},
-                                    {"accepted", start.accepted},
-                                    {"note", start.note},
-                                    {"objective", FiniteOrNull(start.objective)},
-                                    {"bound", FiniteOrNull(start.bound)},
-                                    {"member_solves", start.member_solves},
-                                    {"assignments_tried", start.tries},
-                                    {"neighbourhood",
-                                     start.neighbourhood_tried
-                                         ? nlohmann::json{{"repaired", start.repaired},
-                                                          {"radius_intervals",
-                                                           start.neighbourhood_radius_intervals},
-                                                          {"free_binaries",
-                                                           start.neighbourhood_free_binaries},
-                                                          {"seconds", start.neighbourhood_seconds}}
-                                         : nlohmann::json(nullptr)},
-                                    {"seconds", start.seconds}}
-                   : nlohmann::json(nullptr);
+  j["start"] =
+      start.tried
+          ? nlohmann::json{{"built", start.built},
+                           {"accepted", start.accepted},
+                           {"note", start.note},
+                           {"objective", FiniteOrNull(start.objective)},
+                           {"bound", FiniteOrNull(start.bound)},
+                           {"member_solves", start.member_solves},
+                           {"assignments_tried", start.tries},
+                           {"neighbourhood",
+                            start.neighbourhood_tried
+                                ? nlohmann::json{{"repaired", start.repaired},
+                                                 {"radius_intervals",
+                                                  start.neighbourhood_radius_intervals},
+                                                 {"free_binaries",
+                                                  start.neighbourhood_free_binaries},
+                                                 {"seconds", start.neighbourhood_seconds}}
+                                : nlohmann::json(nullptr)},
+                           {"in_turn", start.in_turn_tried
+                                           ? nlohmann::json{{"found", start.in_turn_found},
+                                                            {"members_replanned",
+                                                             start.in_turn_members_replanned},
+                                                            {"searches", start.in_turn_searches},
+                                                            {"keep_out_faces",
+                                                             start
+                                                                 .in_turn_constraints},
+                                                            {"seconds", start.in_turn_seconds}}
+                                           : nlohmann::json(nullptr)},
+                           {"seconds", start.seconds}}
+          : nlohmann::json(nullptr);
   j["assignment_binaries"] = st.assignment_binaries;
   j["infeasibility_reasons"] = st.infeasibility_reasons;
   j["members"] = nlohmann::json::array();
@@ -284,6 +295,7 @@ FleetRun RunFleetScenario(const FleetScenario& f, const FleetRunHooks& hooks) {
   transcription::FleetSolveOptions opt = f.options;
   opt.milp.interrupt = hooks.interrupt;
   opt.milp.progress = hooks.progress;
+  opt.announce = hooks.announce;
   const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
   FleetRun run;
   run.result = transcription::SolveFleet(f.problem, *solver, opt);
@@ -322,6 +334,7 @@ int RunFleetSolve(const SolveArgs& a) {
   hooks.interrupt = InterruptWatcher::flag();
   hooks.command_line = a.command_line;
   hooks.progress = CliProgress(a.quiet, err);
+  if (!a.quiet) hooks.announce = [&err](const std::string& step) { err << "  " << step << "\n"; };
   FleetRun run;
   {
     InterruptWatcher watcher;

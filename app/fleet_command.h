@@ -42,7 +42,8 @@ struct FleetRun {
 struct FleetRunHooks {
   const std::atomic<bool>* interrupt = nullptr;  // stops the solve, keeps the best schedules
   std::function<void(const milp::SolveProgress&)> progress;
-  std::string command_line;  // summary.json's
+  std::function<void(const std::string&)> announce;  // each step of the start, as it begins
+  std::string command_line;                          // summary.json's
 };
 
 /// Solves, checks and formats (the fleet's own solver options).

@@ -465,8 +465,11 @@ SolveResult CbcSolverImpl::VerifyInfeasibilityClaim(const LpData& lp, const Solv
   if (start_claim) {
     undecided = claimed;
     undecided.status = SolveStatus::kFeasible;
-    undecided.best_bound =
-        relaxed.status == SolveStatus::kOptimal ? relaxed.objective : claimed.best_bound;
+    // The claim's own bound is its objective, unconfirmed: without the
+    // relaxation's bound there is none.
+    undecided.best_bound = relaxed.status == SolveStatus::kOptimal
+                               ? relaxed.objective
+                               : -sign * std::numeric_limits<double>::infinity();
     undecided.gap = RelativeGap(undecided.objective, undecided.best_bound);
   }
   undecided.nodes = claimed.nodes + retry.nodes;

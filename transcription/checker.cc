@@ -449,6 +449,33 @@ void ReplayNonlinear(const ScheduleProblem& problem, const dynamics::GeoSimulato
   r->nonlinear_checked = true;
 }
 
+// The path constraints on their own propagation to their times (the samples
+// need not contain them).
+void CheckStateConstraints(const ScheduleProblem& problem,
+                           const std::vector<dynamics::InputPulse>& pulses, double tolerance,
+                           CheckReport* r) {
+  const std::vector<StateConstraint>& cs = problem.state_constraints;
+  if (cs.empty()) return;
+  std::vector<int> order(cs.size());
+  for (size_t k = 0; k < cs.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cs[a].t_s < cs[b].t_s; });
+  std::vector<double> times;
+  for (int k : order)
+    times.push_back(std::clamp(cs[k].t_s, problem.grid.front(), problem.grid.back()));
+  const std::vector<Eigen::VectorXd> states = dynamics::PropagateLinear(
+      *problem.model, problem.thrusters.AccelerationMatrix(), problem.initial_state,
+      problem.grid.front(), pulses, times, tolerance);
+  for (size_t q = 0; q < order.size(); ++q) {
+    const StateConstraint& c = cs[order[q]];
+    const double v = c.a.dot(states[q]);
+    const double excess = std::max(c.lower - v, v - c.upper);
+    if (excess > r->max_state_constraint_violation) {
+      r->max_state_constraint_violation = excess;
+      r->worst_state_constraint = order[q];
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<RuleViolation> CheckOperationalRules(const OperationalRules& rules,
@@ -563,6 +590,8 @@ CheckReport CheckSchedule(const ScheduleProblem& problem, const std::vector<Burn
     }
   }
 
+  CheckStateConstraints(problem, pulses, options.propagation_tolerance, &r);
+
   // Terminal constraint, in units of the model's state scale.
   const TerminalSpec& term = problem.terminal;
   if (term.kind == TerminalKind::kFixedState || term.kind == TerminalKind::kStateBox) {
@@ -602,6 +631,10 @@ std::string CheckReport::Summary() const {
        << " s); at nodes only: " << FormatG(max_window_violation_at_nodes, 10) << "\n";
   } else {
     os << "window (linear re-propagation): ok at " << sample_times.size() << " samples\n";
+  }
+  if (worst_state_constraint >= 0) {
+    os << "state constraints (linear re-propagation): constraint " << worst_state_constraint
+       << " violated by " << FormatG(max_state_constraint_violation, 10) << "\n";
   }
   os << "terminal: " << (terminal_ok ? "ok" : "VIOLATED") << " (scaled error "
      << FormatG(terminal_error, 10) << ")\n";

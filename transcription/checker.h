@@ -103,6 +103,12 @@ struct CheckReport {
   std::vector<Eigen::Matrix<double, 6, 1>> nonlinear_eci;  // at sample_times
   std::vector<Eigen::Vector3d> nonlinear_outputs;          // [dr_m, dlat_rad, dlon_rad]
 
+  /// Path constraints (ScheduleProblem::state_constraints) on the linear
+  /// re-propagation: the largest excess of a^T x(t) beyond its bounds, in the
+  /// constraint's own unit (0 if all hold), and which one (-1: none).
+  double max_state_constraint_violation = 0.0;
+  int worst_state_constraint = -1;
+
   /// Terminal constraint satisfied by the re-propagated final state (fixed or
   /// box terminal kinds; true for free or polytope kinds) within tolerance.
   bool terminal_ok = true;

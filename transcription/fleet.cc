@@ -224,10 +224,13 @@ void FleetMilp::AddKeepOut() {
   for (int k = 0; k < count; ++k) {
     for (int l = k + 1; l < count; ++l) {
       const std::string pair = fleet_.members[k].name + "_" + fleet_.members[l].name;
+      keep_out_rhs_.emplace_back();
       for (size_t q = 0; q < ko.check_times_s.size(); ++q) {
         ++stats_.keep_out_checks;
         const Eigen::Matrix<double, 6, 1> margins =
             FaceMargins(fleet_, reach, stats_.keep_out_quantile, k, l, static_cast<int>(q));
+        keep_out_rhs_.back().push_back(Eigen::Matrix<double, 6, 1>::Constant(ko.half_size_m) +
+                                       margins);
         stats_.keep_out_margin_max_m = std::max(stats_.keep_out_margin_max_m, margins.maxCoeff());
         FaceChoice choice =
             ChooseFaces(reach[k], reach[l], static_cast<int>(q), ko.half_size_m, margins);
@@ -409,6 +412,21 @@ void FleetMilp::IndexKeepOutGroups() {
       group.rows.push_back(
           rows.at("fleet_keep_out_" + keep_out_tags_[g] + "_" + std::to_string(f)));
   }
+}
+
+bool KeepsFleetRows(const FleetMilp& milp, const Eigen::VectorXd& x, double* objective) {
+  if (milp.lp().MaxViolation(x) > kStartFeasibility) return false;
+  *objective = milp.lp().Objective(x);
+  return true;
+}
+
+Eigen::Matrix<double, 6, 1> FleetMilp::KeepOutFaceRhs(int k, int l, int q) const {
+  const int count = num_members();
+  if (!fleet_.keep_out || k < 0 || k >= l || l >= count)
+    throw std::out_of_range("FleetMilp::KeepOutFaceRhs: no keep-out check for members " +
+                            std::to_string(k) + ", " + std::to_string(l));
+  const int pair = k * count - k * (k + 1) / 2 + (l - k - 1);
+  return keep_out_rhs_.at(pair).at(q);
 }
 
 std::vector<std::vector<int>> FleetMilp::KeepOutRows(int k, int l) const {

@@ -52,6 +52,7 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_FLEET_H_
 #define THRUSTSCHED_TRANSCRIPTION_FLEET_H_
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -196,6 +197,11 @@ class FleetMilp {
   /// Rows of lp() that keep members k and l apart (faces and pick), per
   /// keep-out check time (empty for a clear check); k, l in any order.
   std::vector<std::vector<int>> KeepOutRows(int k, int l) const;
+  /// The right-hand sides (metres: the half-size plus each face's chance
+  /// margin) of the keep-out check q between members k < l, by face f:
+  /// face f holds when s (r_k - r_l)[f / 2] >= rhs[f], s = +1 for even f and
+  /// -1 for odd. @throws std::out_of_range without a keep-out or k >= l.
+  Eigen::Matrix<double, 6, 1> KeepOutFaceRhs(int k, int l, int q) const;
 
  private:
   void Compose();
@@ -217,7 +223,9 @@ class FleetMilp {
   std::vector<std::vector<milp::Variable>> slot_binaries_;  // [member i][slot s]
   std::vector<std::string> keep_out_tags_;                  // name tag of each check with binaries
   KeepOutStats keep_out_groups_;                            // their binaries, and rows in lp_
-  int balance_column_ = -1;                                 // kMinMax: the epigraph column
+  /// [pair][check] of KeepOutFaceRhs, pairs in the order (0, 1), (0, 2), ..., (1, 2), ...
+  std::vector<std::vector<Eigen::Matrix<double, 6, 1>>> keep_out_rhs_;
+  int balance_column_ = -1;  // kMinMax: the epigraph column
 };
 
 /// Minimum distance of one pair over a set of times.
@@ -241,9 +249,18 @@ struct FleetSolveOptions {
   /// spends at most start_time_share of a finite milp.time_limit_s.
   bool decoupled_start = true;
   double start_time_share = 0.25;
-  /// A start the keep-out rejects is repaired over the thrust slots within
-  /// this many intervals of each member's own burns (0: not repaired), in at
-  /// most neighbourhood_time_share of a finite milp.time_limit_s.
+  /// A start the keep-out rejects is re-planned member by member, each by the
+  /// search against the fixed plans of those before it
+  /// (transcription/fleet_in_turn.h), in at most in_turn_time_share of a
+  /// finite milp.time_limit_s; where that fails, repaired over the thrust
+  /// slots within neighbourhood_radius_intervals of each member's own burns
+  /// (0: not repaired), in at most neighbourhood_time_share of it.
+  /// Called (calling thread) as each step of the start begins, with a
+  /// sentence saying what it does (members alone, in turn, repair), so that
+  /// a user is told why the work goes on before the solver reports.
+  std::function<void(const std::string&)> announce;
+  bool in_turn = true;
+  double in_turn_time_share = 0.4;
   int neighbourhood_radius_intervals = 12;
   double neighbourhood_time_share = 0.5;
 };
@@ -251,6 +268,10 @@ struct FleetSolveOptions {
 /// Largest row or bound violation (model units) at which a start counts as
 /// feasible for the fleet MILP (ScheduleMilp's pattern tolerance).
 inline constexpr double kStartFeasibility = ScheduleMilp::kPatternFeasibilityTolerance;
+
+/// True, with *objective set, if the fleet column vector x keeps every row
+/// of the fleet MILP (within kStartFeasibility): a start the solver may take.
+bool KeepsFleetRows(const FleetMilp& milp, const Eigen::VectorXd& x, double* objective);
 
 /// The first plan from the members alone (transcription/fleet_start.h).
 struct FleetStart {
@@ -276,6 +297,14 @@ struct FleetStart {
   /// `repaired`: its plan replaced x (then accepted, objective its own).
   bool neighbourhood_tried = false;
   bool repaired = false;
+  /// Rejected by the keep-out: the members re-planned in turn
+  /// (transcription/fleet_in_turn.h); `in_turn_found`: its plan replaced x.
+  bool in_turn_tried = false;
+  bool in_turn_found = false;
+  int in_turn_members_replanned = 0;
+  int in_turn_searches = 0;
+  int in_turn_constraints = 0;
+  double in_turn_seconds = 0.0;
   int neighbourhood_radius_intervals = 0;
   int neighbourhood_free_binaries = 0;
   double neighbourhood_seconds = 0.0;

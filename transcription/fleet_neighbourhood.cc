@@ -180,10 +180,9 @@ FleetNeighbourhood RepairMemberByMember(const FleetMilp& milp, const Eigen::Vect
     }
   }
   out.seconds = Seconds(start);
-  if (whole.MaxViolation(x) <= kStartFeasibility) {
-    out.found = true;
+  out.found = KeepsFleetRows(milp, x, &out.objective);
+  if (out.found) {
     out.x = x;
-    out.objective = whole.Objective(x);
   } else {
     out.note = "the repaired plan breaks a fleet row (the balance)";
   }

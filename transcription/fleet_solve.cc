@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "transcription/fleet.h"
+#include "transcription/fleet_in_turn.h"
 #include "transcription/fleet_neighbourhood.h"
 #include "transcription/fleet_start.h"
 #include "transcription/internal/fleet_reach.h"
@@ -23,17 +24,8 @@ std::vector<std::vector<Eigen::Vector3d>> PlannedPositions(const FleetMilp& flee
     const internal::MemberReach reach(fleet.member(k), FleetPositionMaps(fleet.fleet(), k, times),
                                       times, options);
     out.emplace_back();
-    for (size_t q = 0; q < times.size(); ++q) {
-      Eigen::Vector3d r;
-      for (int i = 0; i < 3; ++i) {
-        double terms = 0.0;
-        const double drift = reach.AddPositionTerms(static_cast<int>(q), Eigen::Vector3d::Unit(i),
-                                                    1.0, fleet.column_offset(k),
-                                                    [&](int c, double v) { terms += v * x[c]; });
-        r[i] = terms + drift;
-      }
-      out.back().push_back(r);
-    }
+    for (size_t q = 0; q < times.size(); ++q)
+      out.back().push_back(reach.Position(static_cast<int>(q), fleet.column_offset(k), x));
   }
   return out;
 }
@@ -147,12 +139,23 @@ std::vector<double> CouplingResiduals(const FleetProblem& fleet, const std::vect
   return out;
 }
 
+// What a step of the start took is taken from the solve's time limit.
+void Spend(double seconds, milp::SolveOptions* solve) {
+  if (std::isfinite(solve->time_limit_s))
+    solve->time_limit_s = std::max(solve->time_limit_s - seconds, 1e-3);
+}
+
 // A start the keep-out rejected, replaced by the fleet plan over the slots
 // near the members' own burns where one is found; its time taken from the
 // solve's limit.
 void RepairInNeighbourhood(const FleetMilp& milp, const milp::Solver& solver,
                            const FleetSolveOptions& options, milp::SolveOptions* solve,
                            FleetStart* start) {
+  if (options.announce) {
+    options.announce("start: repairing member by member over the slots within " +
+                     std::to_string(options.neighbourhood_radius_intervals) +
+                     " intervals of their own burns");
+  }
   milp::SolveOptions restricted = *solve;
   restricted.initial_solution.reset();
   if (std::isfinite(solve->time_limit_s))
@@ -164,8 +167,7 @@ void RepairInNeighbourhood(const FleetMilp& milp, const milp::Solver& solver,
   start->neighbourhood_free_binaries = n.free_binaries;
   start->neighbourhood_seconds = n.seconds;
   start->seconds += n.seconds;
-  if (std::isfinite(solve->time_limit_s))
-    solve->time_limit_s = std::max(solve->time_limit_s - n.seconds, 1e-3);
+  Spend(n.seconds, solve);
   if (!n.found) {
     start->note += "; not repaired: " + n.note;
     return;
@@ -176,6 +178,36 @@ void RepairInNeighbourhood(const FleetMilp& milp, const milp::Solver& solver,
   start->note += "; repaired member by member (" + std::to_string(n.members_replanned) +
                  " re-planned within " + std::to_string(n.radius_intervals) +
                  " intervals of their own burns)";
+}
+
+// A start the keep-out rejected, replaced by the members re-planned in turn
+// against each other's fixed plans where they all find one; its time taken
+// from the solve's limit.
+void PlanInTurn(const FleetMilp& milp, const milp::Solver& solver, const FleetSolveOptions& options,
+                const SolveScheduleOptions& member, milp::SolveOptions* solve, FleetStart* start) {
+  SolveScheduleOptions o = member;
+  o.announce = options.announce;
+  o.milp.time_limit_s = std::isfinite(solve->time_limit_s)
+                            ? options.in_turn_time_share * solve->time_limit_s
+                            : std::numeric_limits<double>::infinity();
+  const FleetInTurn t = PlanMembersInTurn(milp, start->x, start->slots, solver, o);
+  start->in_turn_tried = true;
+  start->in_turn_members_replanned = t.members_replanned;
+  start->in_turn_searches = t.searches;
+  start->in_turn_constraints = t.constraints;
+  start->in_turn_seconds = t.seconds;
+  start->seconds += t.seconds;
+  Spend(t.seconds, solve);
+  if (!t.found) {
+    start->note += "; not planned in turn: " + t.note;
+    return;
+  }
+  start->x = t.x;
+  start->objective = t.objective;
+  start->accepted = start->in_turn_found = true;
+  start->note += "; planned in turn (" + std::to_string(t.members_replanned) +
+                 " re-planned against the fixed plans before them, " + std::to_string(t.searches) +
+                 " searches, " + std::to_string(t.constraints) + " keep-out faces)";
 }
 
 // The decoupled start as the solve's MIP start, its time taken from the
@@ -198,9 +230,15 @@ FleetStart StartFromMembersAlone(const FleetMilp& milp, const milp::Solver& solv
     member.milp.time_limit_s =
         options.start_time_share * options.milp.time_limit_s / static_cast<double>(solves);
   }
+  if (options.announce) {
+    options.announce(
+        "start: the " + std::to_string(solves) + " member solves alone by the search (at most " +
+        std::to_string(static_cast<int>(options.start_time_share * 100)) + " % of the time limit)");
+  }
   FleetStart start = DecoupledStart(milp, solver, member);
-  if (std::isfinite(solve->time_limit_s))
-    solve->time_limit_s = std::max(solve->time_limit_s - start.seconds, 1e-3);
+  Spend(start.seconds, solve);
+  if (start.built && !start.accepted && fleet.keep_out && options.in_turn)
+    PlanInTurn(milp, solver, options, member, solve, &start);
   if (start.built && !start.accepted && fleet.keep_out &&
       options.neighbourhood_radius_intervals > 0)
     RepairInNeighbourhood(milp, solver, options, solve, &start);

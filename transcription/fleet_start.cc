@@ -245,6 +245,24 @@ void Assemble(const FleetMilp& milp, const std::vector<Alone>& alone, FleetStart
 
 }  // namespace
 
+std::vector<ScheduleProblem> MemberProblemsAlone(const FleetProblem& fleet,
+                                                 const std::vector<int>& slots, std::string* why) {
+  std::vector<ScheduleProblem> out = AloneProblems(fleet, why);
+  if (out.empty() || !fleet.assignment) return out;
+  const SlotAssignment& a = *fleet.assignment;
+  if (slots.size() != a.members.size()) {
+    *why = "no slot for every assigned member";
+    return {};
+  }
+  for (size_t i = 0; i < slots.size(); ++i) {
+    if (!Narrow(a.map, a.slots[slots[i]], a.tolerance, &out[a.members[i]].terminal)) {
+      *why = "the assignment map is not a selection of state components";
+      return {};
+    }
+  }
+  return out;
+}
+
 FleetStart DecoupledStart(const FleetMilp& milp, const milp::Solver& solver,
                           const SolveScheduleOptions& member_options) {
   const auto start = std::chrono::steady_clock::now();

@@ -23,6 +23,9 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_FLEET_START_H_
 #define THRUSTSCHED_TRANSCRIPTION_FLEET_START_H_
 
+#include <string>
+#include <vector>
+
 #include "transcription/fleet.h"
 #include "transcription/solve.h"
 
@@ -33,6 +36,13 @@ namespace thrustsched::transcription {
 /// says whether x keeps every row of the fleet MILP.
 FleetStart DecoupledStart(const FleetMilp& milp, const milp::Solver& solver,
                           const SolveScheduleOptions& member_options);
+
+/// Each member's problem as the start solves it alone: its own, with the
+/// fleet's absolute terminal couplings and, for an assigned member, its slot
+/// `slots[i]` narrowing its terminal box. Empty, with `*why`, when the fleet
+/// cannot be decoupled (the cases above).
+std::vector<ScheduleProblem> MemberProblemsAlone(const FleetProblem& fleet,
+                                                 const std::vector<int>& slots, std::string* why);
 
 }  // namespace thrustsched::transcription
 

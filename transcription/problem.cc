@@ -1,6 +1,7 @@
 #include "transcription/problem.h"
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -221,6 +222,40 @@ bool ConjunctionValid(const ScheduleProblem& p, int n, std::string* error) {
   return true;
 }
 
+// The path constraints on the state against the model and the horizon.
+bool StateConstraintsValid(const ScheduleProblem& p, int n, std::string* error) {
+  if (p.state_constraints.empty()) return true;
+  if (p.input_mode != InputMode::kOnOff) {
+    return Fail(error, "state_constraints: only in the on-off input mode");
+  }
+  const double t0 = p.grid.front(), tf = p.grid.back();
+  const double tol = kHorizonRelativeSlack * (tf - t0);
+  std::set<std::string> names;
+  for (size_t k = 0; k < p.state_constraints.size(); ++k) {
+    const StateConstraint& c = p.state_constraints[k];
+    const std::string field = "state_constraints[" + std::to_string(k) + "]";
+    if (!names.insert(c.name.empty() ? std::to_string(k) : c.name).second) {
+      return Fail(error, field + ".name \"" + c.name + "\" is used twice (as a name or an index)");
+    }
+    if (!std::isfinite(c.t_s) || c.t_s < t0 - tol || c.t_s > tf + tol) {
+      return Fail(error, field + ".t_s " + FormatG(c.t_s, 10) + " s is outside the horizon [" +
+                             FormatG(t0, 10) + ", " + FormatG(tf, 10) + "] s");
+    }
+    if (c.a.size() != n || !AllFinite(c.a)) {
+      return Fail(error, field + ".a must have " + std::to_string(n) + " finite entries, got " +
+                             std::to_string(c.a.size()));
+    }
+    if (std::isnan(c.lower) || std::isnan(c.upper) || c.lower > c.upper ||
+        c.lower == std::numeric_limits<double>::infinity() ||
+        c.upper == -std::numeric_limits<double>::infinity() ||
+        (!std::isfinite(c.lower) && !std::isfinite(c.upper))) {
+      return Fail(error, field + ": bounds [" + FormatG(c.lower, 10) + ", " + FormatG(c.upper, 10) +
+                             "] must be ordered, one of them finite");
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string_view ToString(ObjectiveKind kind) {
@@ -254,7 +289,8 @@ bool ScheduleProblem::IsValid(std::string* error) const {
   if (!TerminalValid(*this, n, error)) return false;
   if (!ObjectiveAndImpulsesValid(*this, m, error)) return false;
   if (conjunction && !conjunction->IsValid(error)) return false;
-  return !conjunction || ConjunctionValid(*this, n, error);
+  if (conjunction && !ConjunctionValid(*this, n, error)) return false;
+  return StateConstraintsValid(*this, n, error);
 }
 
 }  // namespace thrustsched::transcription

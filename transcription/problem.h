@@ -98,6 +98,22 @@ enum class InputMode {
   kImpulsive,  // continuous delta-v >= 0 per thruster at nodes 0..N (L1 cost), no binaries
 };
 
+/// A linear constraint on the state at one time inside the horizon (a path
+/// constraint): lower <= a^T x(t_s) <= upper, x(t_s) the model state (model
+/// units) with the plan's thrust, between nodes held as the on-off input is.
+/// Serves keep-out against a known trajectory (a fleet member planned before,
+/// one face of its keep-out cube per check), corridors, any affine state
+/// bound at chosen times. On-off input mode only.
+///
+///   p.state_constraints.push_back({3600.0, a, 5000.0 + a.dot(other), kInf, "clear_q12"});
+struct StateConstraint {
+  double t_s = 0.0;   // seconds since the model epoch, inside [grid.front(), grid.back()]
+  Eigen::VectorXd a;  // one coefficient per state component (per model unit)
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  std::string name;  // its row is "state_<name>" in exported models; empty: "state_<index>"
+};
+
 struct ScheduleProblem {
   std::shared_ptr<const dynamics::LinearModel> model;
   dynamics::ThrusterSet thrusters;
@@ -119,6 +135,8 @@ struct ScheduleProblem {
   /// A secondary object to keep out of (chance-constrained keep-out rows,
   /// transcription/keep_out.h); sparse formulation only.
   std::optional<ConjunctionSpec> conjunction;
+  /// Path constraints on the state (StateConstraint), any order.
+  std::vector<StateConstraint> state_constraints;
 
   /// Upper bound of thruster i's impulses (impulsive mode, m/s).
   double MaxImpulse(int thruster) const {

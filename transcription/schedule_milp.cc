@@ -9,6 +9,9 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common/constants.h"
 #include "common/error.h"
@@ -266,6 +269,34 @@ bool WindowActive(const ScheduleProblem& p, int node, double t) {
   return node >= 1 && t >= p.window.enforce_from_s - kTimeTolerance;
 }
 
+// The maps from each interval's start to the times of the state constraints
+// in it: [interval] = (constraint index, map), in time order. A time within
+// the horizon's tolerance outside it is taken at the horizon's end.
+using ConstraintMaps = std::vector<std::vector<std::pair<int, PartialMap>>>;
+ConstraintMaps StateConstraintMaps(const ScheduleProblem& p,
+                                   const dynamics::DiscretizationOptions& opt) {
+  ConstraintMaps out(p.num_intervals());
+  const std::vector<StateConstraint>& cs = p.state_constraints;
+  if (cs.empty()) return out;
+  std::vector<int> order(cs.size());
+  for (size_t k = 0; k < cs.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cs[a].t_s < cs[b].t_s; });
+  std::vector<double> times;
+  for (int k : order) times.push_back(std::clamp(cs[k].t_s, p.grid.front(), p.grid.back()));
+  std::vector<PartialMap> maps =
+      PartialMaps(*p.model, p.thrusters.AccelerationMatrix(), p.grid, times, opt);
+  for (size_t q = 0; q < maps.size(); ++q)
+    out[maps[q].interval].emplace_back(order[q], std::move(maps[q]));
+  return out;
+}
+
+std::string StateConstraintName(const ScheduleProblem& p, int k) {
+  const std::string& name = p.state_constraints[k].name;
+  return "state_" + (name.empty() ? std::to_string(k) : name);
+}
+
+double Shifted(double bound, double shift) { return std::isfinite(bound) ? bound - shift : bound; }
+
 }  // namespace
 
 void ScheduleMilp::BuildSparse() {
@@ -411,6 +442,22 @@ void ScheduleMilp::BuildSparse() {
   }
   rows.Flush(&model_);
 
+  // Path constraints, on their interval's start node and on-columns.
+  const ConstraintMaps constrained = StateConstraintMaps(p, options_.discretisation);
+  for (int j = 0; j < nn; ++j) {
+    for (const auto& [k, q] : constrained[j]) {
+      const StateConstraint& c = p.state_constraints[k];
+      const Eigen::RowVectorXd on_state = c.a.transpose() * q.phi;
+      const Eigen::RowVectorXd on_thrust = c.a.transpose() * q.gamma;
+      rows.Begin();
+      for (int i = 0; i < n; ++i) rows.Coef(state_[j][i].index(), on_state[i] * S[i]);
+      for (int i = 0; i < m; ++i) rows.Coef(encoding_.on[i][j].index(), on_thrust[i]);
+      const double shift = c.a.dot(q.drift);
+      rows.End(Shifted(c.lower, shift), Shifted(c.upper, shift), StateConstraintName(p, k));
+    }
+  }
+  rows.Flush(&model_);
+
   // Terminal constraint on the final state (after the last impulse).
   const std::vector<milp::Variable>& xf = impulsive ? final_state_ : state_[nn];
   const TerminalSpec& term = p.terminal;
@@ -444,6 +491,7 @@ void ScheduleMilp::BuildCondensed() {
   const int nn = p.num_intervals();
   RowBuffer rows(options_.scale);
   const auto partials = InterSampleMaps(p, options_.discretisation);
+  const ConstraintMaps constrained = StateConstraintMaps(p, options_.discretisation);
 
   // x_j = base_j + G_j u over the free on-columns (all of them without a
   // free_slots mask), stacked in time order: G_j has nonzeros in the columns
@@ -525,6 +573,17 @@ void ScheduleMilp::BuildCondensed() {
                      j, static_cast<int>(s) + 1);
         }
       }
+    }
+    for (const auto& [k, q] : constrained[j]) {
+      const StateConstraint& c = p.state_constraints[k];
+      const Eigen::MatrixXd qg = gamma_free(q.gamma, j);
+      const int here = static_cast<int>(qg.cols());
+      const Eigen::RowVectorXd aphi = c.a.transpose() * q.phi;
+      Eigen::RowVectorXd coef(used + here);
+      coef.head(used) = aphi * g.leftCols(used);
+      coef.tail(here) = c.a.transpose() * qg;
+      add_row(coef, used + here, aphi.dot(base) + c.a.dot(q.drift), c.lower, c.upper,
+              StateConstraintName(p, k), milp::Variable(), 0.0);
     }
     if (rows.pending_entries() > kFlushEntries) rows.Flush(&model_);
     // Advance: x_{j+1} = Phi_j x_j + Gamma_j u_j + d_j.

@@ -47,6 +47,11 @@ std::string DiagnosePrefixes(const ScheduleMilp& milp, const milp::Solver& solve
       if (f.start_s < p.grid.back()) forced.push_back(f);
     }
     p.forced_off = forced;
+    std::vector<StateConstraint> constraints;
+    for (const StateConstraint& c : full.state_constraints) {
+      if (c.t_s <= p.grid.back()) constraints.push_back(c);
+    }
+    p.state_constraints = constraints;
     milp::SolveOptions o = options.milp;
     o.time_limit_s = left / static_cast<double>(lengths.size() - q);
     o.progress = nullptr;

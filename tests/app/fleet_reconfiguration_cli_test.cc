@@ -162,8 +162,11 @@ TEST(FleetReconfiguration, DeploymentIsTheLeastAssignmentOfTheDeputiesAlone) {
 // The same references by plain CBC (about a minute each on 2 cores).
 TEST(FleetReconfiguration, SlowDeputiesAloneByPlainCbcAgree) {
   const std::string dir = TempDir("fleet_hcw_cbc");
-  const double by_cbc = LeastAssignment(ReadJson(kFile), dir, /*no_search=*/true);
-  const double by_search = LeastAssignment(ReadJson(kFile), dir, /*no_search=*/false);
+  // One output folder per run: the two sets of solves in their own.
+  std::filesystem::create_directories(dir + "/cbc");
+  std::filesystem::create_directories(dir + "/search");
+  const double by_cbc = LeastAssignment(ReadJson(kFile), dir + "/cbc", /*no_search=*/true);
+  const double by_search = LeastAssignment(ReadJson(kFile), dir + "/search", /*no_search=*/false);
   EXPECT_NEAR(by_cbc, by_search, 1e-9);
   std::filesystem::remove_all(dir);
 }

@@ -53,6 +53,16 @@ struct Case {
   Eigen::Vector3d v0 = Eigen::Vector3d(0.843, 0.408, 0.0);  // m/s
   double thrust_n = 0.38;
   double enforce_from_s = 0;
+  // Path constraints (ScheduleProblem::state_constraints): one between nodes,
+  // one at the last node, on positions and velocities together.
+  std::vector<StateConstraint> path;
+  Case& WithPathConstraints(double y_plus_vy_max, double x_minus_vx_min) {
+    path = {
+        {250.0, (Eigen::VectorXd(6) << 0, 1, 0, 0, 40, 0).finished(), -kInf, y_plus_vy_max,
+         "y_plus_vy_at_250"},
+        {600.0, (Eigen::VectorXd(6) << 1, 0, 0, -60, 0, 0).finished(), x_minus_vx_min, kInf, ""}};
+    return *this;
+  }
   // A start for which the motion between nodes matters: with 2 interior
   // points per interval the optimum costs more (found by a parameter search).
   Case& WithInterSampleDrift(int points) {
@@ -104,6 +114,7 @@ ScheduleProblem MakeProblem(const Case& c) {
   }
   p.objective.kind = c.objective;
   p.objective.burn_start_penalty = c.burn_start_penalty;
+  p.state_constraints = c.path;
   return p;
 }
 
@@ -185,6 +196,14 @@ Reference Enumerate(const Case& c) {
         violation += std::max(0.0, excess);
       }
     };
+    bool path_ok = true;
+    auto judge_path = [&](const StateConstraint& s, const Eigen::Vector3d& r,
+                          const Eigen::Vector3d& v) {
+      Eigen::VectorXd x(6);
+      x << r, v;
+      const double value = s.a.dot(x);
+      if (value < s.lower - 1e-9 || value > s.upper + 1e-9) path_ok = false;
+    };
     Eigen::Vector3d r = Eigen::Vector3d::Zero(), v = c.v0;
     for (int j = 0; j < n; ++j) {
       const double h = p.grid[j + 1] - p.grid[j];
@@ -195,6 +214,12 @@ Reference Enumerate(const Case& c) {
           cost += rate[i] * h;
         }
       }
+      for (const StateConstraint& s : c.path) {
+        const double tau = s.t_s - p.grid[j];
+        if (tau >= 0.0 && tau < h) {
+          judge_path(s, r + v * tau + 0.5 * acc * tau * tau, v + acc * tau);
+        }
+      }
       for (int s = 1; s <= c.intersample_points; ++s) {
         const double tau = h * s / (c.intersample_points + 1);
         judge(r + v * tau + 0.5 * acc * tau * tau, p.grid[j] + tau);
@@ -203,6 +228,10 @@ Reference Enumerate(const Case& c) {
       v += acc * h;
       judge(r, p.grid[j + 1]);
     }
+    for (const StateConstraint& s : c.path) {
+      if (s.t_s >= p.grid.back()) judge_path(s, r, v);  // at the last node
+    }
+    if (!path_ok) continue;
     if (c.terminal_box && (std::abs(r[0]) > c.terminal_position_m + 1e-9 ||
                            std::abs(r[1]) > c.terminal_position_m + 1e-9)) {
       continue;
@@ -247,6 +276,7 @@ TEST_P(BruteForceTest, MilpOptimumEqualsExhaustiveMinimum) {
   // The decoded schedule passes the rule checker and its totals match the
   // objective's physics (no penalties in these terms).
   EXPECT_TRUE(r.check.operational_ok);
+  EXPECT_LE(r.check.max_state_constraint_violation, 1e-6);
   double on_time = 0.0;
   for (const Burn& b : r.schedule.burns) on_time += b.duration_s();
   EXPECT_NEAR(r.schedule.delta_v_m_s, c.thrust_n / 100.0 * on_time, 1e-9);
@@ -284,6 +314,16 @@ TEST(BruteForceReference, CasesAreDiscriminating) {
   const Reference drift_terminal = Enumerate(drift);
   ASSERT_TRUE(drift_terminal.feasible);
   EXPECT_GT(drift_terminal.cost, between.cost + 1e-6);
+  Case path = base;
+  path.WithPathConstraints(90.0, 100.0);
+  const Reference constrained = Enumerate(path);
+  ASSERT_TRUE(constrained.feasible);
+  EXPECT_GT(constrained.cost, l1.cost + 1e-6);  // the optimum without them breaks them ...
+  const CheckReport unconstrained =
+      CheckSchedule(MakeProblem(path), BurnsOfPattern(l1.pattern, 2, kGrid));
+  // ... the first: y + 40 vy = 111.87 m at 250 s, not <= 90 m
+  EXPECT_NEAR(unconstrained.max_state_constraint_violation, 111.871 - 90.0, 0.01);
+  EXPECT_EQ(unconstrained.worst_state_constraint, 0);
   Case tight = base;
   tight.half_width_m = 40.0;
   EXPECT_FALSE(Enumerate(tight).feasible);  // hard: infeasible ...
@@ -330,6 +370,18 @@ std::vector<Case> Cases() {
   c.soft_penalty = 0.5;
   c.intersample_points = 1;
   v.push_back(c);
+  c = Case{"path_constraints"};
+  c.WithPathConstraints(90.0, 100.0);
+  v.push_back(c);
+  c = Case{"path_constraints_condensed"};
+  c.WithPathConstraints(90.0, 100.0);
+  c.formulation = Formulation::kCondensed;
+  v.push_back(c);
+  c = Case{"path_constraints_intersample_terminal"};
+  c.WithInterSampleDrift(2);
+  c.terminal_box = true;
+  c.WithPathConstraints(90.0, 100.0);
+  v.push_back(c);
   // Formulations and encodings on the richer cases.
   for (Formulation f : {Formulation::kSparse, Formulation::kCondensed}) {
     for (Encoding e : {Encoding::kTight, Encoding::kThesis}) {
@@ -354,6 +406,38 @@ std::vector<Case> Cases() {
     }
   }
   return v;
+}
+
+// Bad path constraints are refused by name and value, never built.
+TEST(BruteForceReference, BadStateConstraintsNameTheField) {
+  const auto refused = [](const Case& c, const std::string& what) {
+    std::string error;
+    EXPECT_FALSE(MakeProblem(c).IsValid(&error)) << what;
+    EXPECT_NE(error.find(what), std::string::npos) << error;
+  };
+  Case c{"bad"};
+  c.WithPathConstraints(90.0, 100.0);
+  c.path[1].t_s = 601.0;
+  refused(c, "state_constraints[1].t_s 601 s is outside the horizon [0, 600] s");
+  c.WithPathConstraints(90.0, 100.0);
+  c.path[0].a = Eigen::VectorXd::Ones(3);
+  refused(c, "state_constraints[0].a must have 6 finite entries, got 3");
+  c.WithPathConstraints(90.0, 100.0);
+  c.path[0].upper = kInf;
+  refused(c, "state_constraints[0]: bounds [-inf, inf] must be ordered, one of them finite");
+  c.WithPathConstraints(90.0, 100.0);
+  c.path[1].name = c.path[0].name;
+  refused(c, "state_constraints[1].name \"y_plus_vy_at_250\" is used twice");
+  c.WithPathConstraints(90.0, 100.0);
+  c.path[0].name = "1";  // the other's index
+  refused(c, "state_constraints[1].name \"\" is used twice");
+  c.WithPathConstraints(90.0, 100.0);
+  ScheduleProblem impulsive = MakeProblem(c);
+  impulsive.input_mode = InputMode::kImpulsive;
+  std::string error;
+  EXPECT_FALSE(impulsive.IsValid(&error));
+  EXPECT_NE(error.find("state_constraints: only in the on-off input mode"), std::string::npos)
+      << error;
 }
 
 // CLP 1.17's interior point aborts the process on this relaxation ("primal

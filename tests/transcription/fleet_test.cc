@@ -23,6 +23,7 @@
 #include "dynamics/models.h"
 #include "milp/cbc_solver.h"
 #include "transcription/collision_probability.h"
+#include "transcription/fleet_in_turn.h"
 #include "transcription/fleet_monte_carlo.h"
 #include "transcription/fleet_neighbourhood.h"
 #include "transcription/solve.h"
@@ -256,6 +257,20 @@ struct CrossingPair {
     a = Enumerate(fleet.members[0].problem, checks);
     b = Enumerate(fleet.members[1].problem, checks);
   }
+  // a fires thruster 0 (+x) in slot 2, b thruster 1 in slot 2: they collide.
+  static std::vector<Eigen::MatrixXi> CollidingPatterns() {
+    Eigen::MatrixXi pa = Eigen::MatrixXi::Zero(2, kSlots), pb = Eigen::MatrixXi::Zero(2, kSlots);
+    pa(0, 2) = 1;
+    pb(1, 2) = 1;
+    return {pa, pb};
+  }
+  // a's plan of this pattern (per slot: 0 off, i > 0 thruster i - 1), or null.
+  const Plan* PlanOfA(const std::vector<int>& slot) const {
+    for (const Plan& p : a) {
+      if (p.slot == slot) return &p;
+    }
+    return nullptr;
+  }
   bool Clear(const Plan& x, const Plan& y) const {
     for (size_t q = 0; q < checks.size(); ++q) {
       if ((x.positions[q] - y.positions[q]).cwiseAbs().maxCoeff() < 1.0 - 1e-9) return false;
@@ -283,10 +298,23 @@ TEST(Fleet, KeepOutAvoidsTheCollisionOfTheUncoupledPlans) {
   ASSERT_EQ(r.status, milp::SolveStatus::kOptimal) << r.detail;
   EXPECT_NEAR(r.objective, expected, 1e-6);
   // Alone, nobody fires and they collide: the start is built, the fleet's
-  // keep-out rows refuse it, and the solver's tree finds the optimum.
+  // keep-out rows refuse it, b re-planned against a's plan gives the first
+  // incumbent, and the solver's tree finds the optimum.
   EXPECT_TRUE(r.start.built);
-  EXPECT_FALSE(r.start.accepted);
+  EXPECT_TRUE(r.start.in_turn_tried);
+  EXPECT_TRUE(r.start.in_turn_found);
+  EXPECT_TRUE(r.start.accepted);
+  EXPECT_EQ(r.start.in_turn_members_replanned, 1);
+  EXPECT_GE(r.start.objective, expected - 1e-9);
   EXPECT_NEAR(r.start.bound, 0.0, 1e-9);
+  // Without the re-plan in turn (and with no burn to repair near), the tree alone.
+  FleetSolveOptions tree = Exact();
+  tree.in_turn = false;
+  const FleetResult t = SolveFleet(f, *milp::MakeCbcSolver(), tree);
+  ASSERT_EQ(t.status, milp::SolveStatus::kOptimal) << t.detail;
+  EXPECT_NEAR(t.objective, expected, 1e-6);
+  EXPECT_FALSE(t.start.accepted);
+  EXPECT_FALSE(t.start.in_turn_tried);
   ASSERT_EQ(r.planned_pairs.size(), 1u);
   EXPECT_GE(r.planned_pairs[0].min_box_distance_m, 1.0 - 1e-6);
   EXPECT_GT(r.stats.keep_out_binaries, 0);
@@ -318,10 +346,7 @@ TEST(Fleet, RepairMemberByMemberIsTheEnumerationOverTheSlotsNearTheGivenBurns) {
     }
     return true;
   };
-  const Plan* fixed = nullptr;  // a's plan: thruster 0 (+x) in slot 2 only
-  for (const Plan& p : a) {
-    if (p.slot == std::vector<int>{0, 0, 1, 0, 0, 0}) fixed = &p;
-  }
+  const Plan* fixed = pair.PlanOfA({0, 0, 1, 0, 0, 0});  // thruster 0 (+x) in slot 2 only
   ASSERT_NE(fixed, nullptr);
   double near = kInf, anywhere = kInf;
   for (const Plan& p : b) {
@@ -333,10 +358,8 @@ TEST(Fleet, RepairMemberByMemberIsTheEnumerationOverTheSlotsNearTheGivenBurns) {
   ASSERT_GE(near, anywhere);
 
   const FleetMilp milp(f, BuildOptions{});
-  Eigen::MatrixXi pa = Eigen::MatrixXi::Zero(2, kSlots), pb = Eigen::MatrixXi::Zero(2, kSlots);
-  pa(0, 2) = 1;
-  pb(1, 2) = 1;
-  const Eigen::VectorXd plans = milp.StartFromPatterns({pa, pb}, {});
+  const std::vector<Eigen::MatrixXi> patterns = CrossingPair::CollidingPatterns();
+  const Eigen::VectorXd plans = milp.StartFromPatterns(patterns, {});
   ASSERT_GT(milp.lp().MaxViolation(plans), kStartFeasibility);  // the given plans collide
   const auto cbc = milp::MakeCbcSolver();
   const FleetNeighbourhood n = RepairMemberByMember(milp, plans, *cbc, Exact().milp, 1);
@@ -359,6 +382,47 @@ TEST(Fleet, RepairMemberByMemberIsTheEnumerationOverTheSlotsNearTheGivenBurns) {
   EXPECT_NEAR(same.objective, anywhere, 1e-9);
   EXPECT_THROW(RepairMemberByMember(milp, plans, *cbc, Exact().milp, -1), std::invalid_argument);
   EXPECT_THROW(RepairMemberByMember(milp, plans.head(3), *cbc, Exact().milp, 1),
+               std::invalid_argument);
+}
+
+// In turn: a keeps its plan (thruster 0, +x, in slot 2), b is re-planned by
+// the search against it with one face per encounter: b's best plan clear of
+// a's fixed plan over every slot (the enumeration), here reached.
+TEST(Fleet, PlanMembersInTurnIsTheBestPlanClearOfTheFixedOne) {
+  CrossingPair pair;
+  const Plan* fixed = pair.PlanOfA({0, 0, 1, 0, 0, 0});
+  ASSERT_NE(fixed, nullptr);
+  double anywhere = kInf;
+  for (const Plan& p : pair.b) {
+    if (pair.Clear(*fixed, p)) anywhere = std::min(anywhere, fixed->cost + p.cost);
+  }
+  ASSERT_TRUE(std::isfinite(anywhere));
+  const FleetMilp milp(pair.fleet, BuildOptions{});
+  const std::vector<Eigen::MatrixXi> patterns = CrossingPair::CollidingPatterns();
+  const Eigen::VectorXd plans = milp.StartFromPatterns(patterns, {});
+  ASSERT_GT(milp.lp().MaxViolation(plans), kStartFeasibility);  // the given plans collide
+  const auto cbc = milp::MakeCbcSolver();
+  SolveScheduleOptions member;
+  member.milp.relative_gap = 0.0;
+  const FleetInTurn t = PlanMembersInTurn(milp, plans, {}, *cbc, member);
+  ASSERT_TRUE(t.found) << t.note;
+  EXPECT_NEAR(t.objective, anywhere, 1e-6);
+  EXPECT_EQ(t.members_replanned, 1);
+  EXPECT_GE(t.searches, 1);
+  EXPECT_GT(t.constraints, 0);
+  EXPECT_LE(milp.lp().MaxViolation(t.x), kStartFeasibility);
+  EXPECT_EQ(milp.member(0).encoding().OnPattern(milp.MemberColumns(t.x, 0)), patterns[0]);
+  // Plans that already keep out are not touched.
+  const FleetInTurn same = PlanMembersInTurn(milp, t.x, {}, *cbc, member);
+  ASSERT_TRUE(same.found);
+  EXPECT_EQ(same.members_replanned, 0);
+  EXPECT_EQ(same.searches, 0);
+  EXPECT_NEAR(same.objective, anywhere, 1e-9);
+  EXPECT_THROW(PlanMembersInTurn(milp, plans.head(3), {}, *cbc, member), std::invalid_argument);
+  FleetProblem no_keep_out = pair.fleet;
+  no_keep_out.keep_out.reset();
+  const FleetMilp free(no_keep_out, BuildOptions{});
+  EXPECT_THROW(PlanMembersInTurn(free, free.StartFromPatterns(patterns, {}), {}, *cbc, member),
                std::invalid_argument);
 }
 

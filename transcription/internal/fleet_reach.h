@@ -64,6 +64,19 @@ class MemberReach {
     return a.dot(map * at.drift);
   }
 
+  /// map x(times[q]) (3 rows: a position) of the member's block of the
+  /// column vector x (its columns from `offset`), as the MILP writes it.
+  Eigen::Vector3d Position(int q, int offset, const Eigen::VectorXd& x) const {
+    Eigen::Vector3d r;
+    for (int i = 0; i < 3; ++i) {
+      double terms = 0.0;
+      const double drift = AddPositionTerms(q, Eigen::Vector3d::Unit(i), 1.0, offset,
+                                            [&](int c, double v) { terms += v * x[c]; });
+      r[i] = terms + drift;
+    }
+    return r;
+  }
+
  private:
   const Eigen::MatrixXd& MapAt(int q) const {
     return maps_at_.size() == 1 ? maps_at_[0] : maps_at_[q];
