@@ -55,7 +55,7 @@ struct Case {
   double enforce_from_s = 0;
   // Path constraints (ScheduleProblem::state_constraints): one between nodes,
   // one at the last node, on positions and velocities together.
-  std::vector<StateConstraint> path;
+  std::vector<StateConstraint> path{};
   Case& WithPathConstraints(double y_plus_vy_max, double x_minus_vx_min) {
     path = {
         {250.0, (Eigen::VectorXd(6) << 0, 1, 0, 0, 40, 0).finished(), -kInf, y_plus_vy_max,

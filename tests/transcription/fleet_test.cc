@@ -337,7 +337,6 @@ TEST(Fleet, KeepOutAvoidsTheCollisionOfTheUncoupledPlans) {
 TEST(Fleet, RepairMemberByMemberIsTheEnumerationOverTheSlotsNearTheGivenBurns) {
   CrossingPair pair;
   FleetProblem& f = pair.fleet;
-  const auto& a = pair.a;
   const auto& b = pair.b;
   auto clear = [&](const Plan& x, const Plan& y) { return pair.Clear(x, y); };
   auto within = [](const Plan& p, int first, int last) {
