@@ -76,6 +76,10 @@ void ParseSearch(JsonObject& solver, std::string_view key, transcription::Search
   if (o.Has("relaxation")) {
     JsonObject r = o.Object("relaxation");
     SetBool(r, "drop_dormant_blocks", &search->relaxation.drop_dormant_blocks);
+    if (r.Has("lp_method")) {
+      transcription::ParseLpMethod(r.Choice("lp_method", {"clp_barrier", "interior_point"}),
+                                   &search->relaxation.lp_method);
+    }
     r.Finish();
   }
   if (o.Has("nets")) ParseNets(o.Object("nets"), &search->nets);

@@ -14,6 +14,11 @@
 //     restricted MILP (transcription/search.cc): the condensed six-thruster
 //     GEO week with every slot of the first 1-3 thrusters free (2016-6048
 //     slots), then milp::RemoveFixedColumns.
+// BM_GeoWeekRelaxation/<method>/<thrusters>  the LP relaxation of the GEO
+//     week (4 or 6 thrusters) as the search's phase "relaxation" solves it:
+//     by the project's interior point (milp/interior_point.h, method 0) or
+//     by CLP's barrier without crossover (method 1, the previous release),
+//     with the safe bound of its duals (milp/lp_bound.h). Target 0.2 s.
 #include <memory>
 #include <string>
 
@@ -24,6 +29,9 @@
 #include "dynamics/geo_model.h"
 #include "dynamics/models.h"
 #include "dynamics/thrusters.h"
+#include "milp/cbc_solver.h"
+#include "milp/interior_point.h"
+#include "milp/lp_bound.h"
 #include "milp/lp_data.h"
 #include "transcription/schedule_milp.h"
 
@@ -124,6 +132,33 @@ void BM_BuildGeoWeekRestricted(benchmark::State& state) {
   state.counters["nonzeros"] = static_cast<double>(nonzeros);
 }
 BENCHMARK(BM_BuildGeoWeekRestricted)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
+
+void BM_GeoWeekRelaxation(benchmark::State& state) {
+  const bool own = state.range(0) == 0;
+  const ScheduleProblem p = GeoProblem(7, /*six_thrusters=*/state.range(1) == 6);
+  BuildOptions opt;
+  const dynamics::DiscreteModel dm =
+      dynamics::Discretize(*p.model, p.thrusters.AccelerationMatrix(), p.grid, opt.discretisation);
+  const ScheduleMilp milp(p, dm, opt);
+  const std::unique_ptr<milp::Solver> solver = milp::MakeCbcSolver();
+  milp::SolveOptions clp;
+  clp.lp_algorithm = milp::LpAlgorithm::kBarrierNoCrossover;
+  clp.log_level = 0;
+  milp::LpRelaxationResult r;
+  for (auto _ : state) {
+    r = own ? milp::ToLpRelaxationResult(milp.lp(), milp::SolveLpByInteriorPoint(milp.lp(), {}))
+            : solver->SolveLpRelaxation(milp.lp(), clp);
+    benchmark::DoNotOptimize(r.x.data());
+  }
+  state.counters["optimal"] = r.status == milp::SolveStatus::kOptimal ? 1 : 0;
+  state.counters["objective"] = r.objective;
+  state.counters["safe_bound"] = milp::SafeDualBound(milp.lp(), r.row_duals).bound;
+  state.counters["iterations"] = static_cast<double>(r.iterations);
+}
+BENCHMARK(BM_GeoWeekRelaxation)
+    ->ArgsProduct({{0, 1}, {4, 6}})
+    ->ArgNames({"method", "thrusters"})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace thrustsched::transcription

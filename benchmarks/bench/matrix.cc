@@ -189,8 +189,7 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     for (const Arm& a :
          {Arm{SearchArm::kThisRelease, "search (this release)"},
           Arm{SearchArm::kPreviousRelease,
-              "search as the previous release ran it (the lazy rows' first LP with the "
-              "dense rows the column bounds imply)"},
+              "search as the previous release ran it (the LP relaxation by CLP's barrier)"},
           Arm{SearchArm::kLazyLpUnpresolved,
               "search with the lazy rows' first LP unpresolved "
               "(LazyRowOptions::presolve_lp_relaxation false)"}}) {

@@ -53,10 +53,9 @@ enum class CaseKind {
 /// solver-speed section.
 enum class SearchArm {
   kThisRelease,  // SearchOptions' defaults: what `thrustsched solve` does
-  /// The search as the previous release ran it, the lazy rows' first LP
-  /// with the dense rows the column bounds imply
-  /// (LazyRowOptions::skip_implied_rows_in_lp false), for the side-by-side
-  /// ratio.
+  /// The search as the previous release ran it, its LP relaxation by CLP's
+  /// barrier (RelaxationOptions::LpMethod::kClpBarrier), for the
+  /// side-by-side ratio.
   kPreviousRelease,
   /// The lazy rows' first LP without presolve
   /// (LazyRowOptions::presolve_lp_relaxation false), the ablation arm of

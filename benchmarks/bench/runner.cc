@@ -246,7 +246,9 @@ std::vector<Row> ExecuteMilp(const CaseSpec& spec, int repeat, const RunContext&
     // The arms (matrix.h, SearchArm).
     search.disabled_phases = ctx.disabled_phases;
     milp::LazyRowOptions& lazy = search.restricted.lazy_row_options;
-    if (spec.search_arm == SearchArm::kPreviousRelease) lazy.skip_implied_rows_in_lp = false;
+    if (spec.search_arm == SearchArm::kPreviousRelease) {
+      search.relaxation.lp_method = transcription::RelaxationOptions::LpMethod::kClpBarrier;
+    }
     if (spec.search_arm == SearchArm::kLazyLpUnpresolved) lazy.presolve_lp_relaxation = false;
     sr = transcription::SearchSchedule(*milp, *solver, so, search, {}, &report);
     std::string steps;

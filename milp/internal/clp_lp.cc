@@ -43,13 +43,15 @@ class SilentHandler : public CoinMessageHandler {
 // iterations are few and long).
 class LpStopHandler : public ClpEventHandler {
  public:
-  LpStopHandler(SolveClock* clock, const SolveOptions* options)
-      : clock_(clock), options_(options) {}
+  // simplex_only: the LPs of a session (simplex solves whatever the
+  // options' algorithm), reported but never under the interior point's cap.
+  LpStopHandler(SolveClock* clock, const SolveOptions* options, bool simplex_only = false)
+      : clock_(clock), options_(options), simplex_only_(simplex_only) {}
   int event(Event which) override {
     if (which != endOfIteration) return -1;
     ++count_;
-    const bool interior =
-        options_ != nullptr && options_->lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
+    const bool interior = !simplex_only_ && options_ != nullptr &&
+                          options_->lp_algorithm == LpAlgorithm::kBarrierNoCrossover;
     if (!interior && (count_ & 15) != 0) return -1;
     Progress();
     // CLP's interior point does not detect infeasibility: it iterates until
@@ -73,7 +75,8 @@ class LpStopHandler : public ClpEventHandler {
     p.phase = SolvePhase::kRootLp;
     p.in_root_lp = true;
     p.lp_iterations = count_;
-    if (model_ != nullptr && options_->lp_algorithm != LpAlgorithm::kBarrierNoCrossover) {
+    if (model_ != nullptr &&
+        (simplex_only_ || options_->lp_algorithm != LpAlgorithm::kBarrierNoCrossover)) {
       p.lp_objective = model_->objectiveValue();
       p.lp_primal_infeasibility = model_->sumPrimalInfeasibilities();
     }
@@ -81,6 +84,7 @@ class LpStopHandler : public ClpEventHandler {
   }
   SolveClock* clock_;
   const SolveOptions* options_;
+  bool simplex_only_;
   unsigned count_ = 0;
   double last_ = 0.0;
 };
@@ -467,7 +471,7 @@ class ClpSession final : public LpSession {
         options_(options),
         clock_(options.time_limit_s, options.interrupt),
         silent_(MakeSilentHandler()),
-        stop_(&clock_, nullptr) {
+        stop_(&clock_, &options_, /*simplex_only=*/true) {
     std::fill(lp_.col_type.begin(), lp_.col_type.end(), VarType::kContinuous);
     sign_ = ObjectiveSign(lp_);
     Silence(&model_, silent_.get(), options.log_level);

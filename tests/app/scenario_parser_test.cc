@@ -387,6 +387,20 @@ TEST(ScenarioParser, DiscretisationTranscriptionSolverExtensions) {
   }
 }
 
+TEST(ScenarioParser, SearchRelaxationLpMethod) {
+  json j = HcwBase();
+  using Method = transcription::RelaxationOptions::LpMethod;
+  EXPECT_EQ(Parse(j).search_options.relaxation.lp_method, Method::kInteriorPoint);  // default
+  j["solver"]["search"] = {{"relaxation", {{"lp_method", "clp_barrier"}}}};
+  EXPECT_EQ(Parse(j).search_options.relaxation.lp_method, Method::kClpBarrier);
+  j["solver"]["search"] = {{"relaxation", {{"lp_method", "interior_point"}}}};
+  EXPECT_EQ(Parse(j).search_options.relaxation.lp_method, Method::kInteriorPoint);
+  j["solver"]["search"] = {{"relaxation", {{"lp_method", "simplex"}}}};
+  const std::string m = ErrorOf(j);
+  EXPECT_HAS(m, "scenario.solver.search.relaxation.lp_method");
+  EXPECT_HAS(m, "simplex");
+}
+
 TEST(ScenarioParser, HistoryForcedOffTerminalInputModeCheck) {
   json j = HcwBase();
   j["history"] = {{"-T", {{"on_for_s", 600}}}, {"+R", {{"off_for_s", 900}}}};

@@ -87,6 +87,31 @@ TEST(SearchSchedule, ProvesTheThesisTable41Optima) {
   }
 }
 
+// The relaxation by either interior point (the project's, CLP's barrier):
+// the same proven optimum of Table 4.1 (3 d, 6 slots) and bounds never above
+// it; the step names the method that gave the bound.
+TEST(SearchSchedule, EitherLpMethodOfTheRelaxationProvesTheSameOptimum) {
+  auto solver = milp::MakeCbcSolver();
+  const double optimum = 6 * 0.265 / 4850 * 300;
+  const ScheduleProblem p = ThesisTable41(3);
+  using Method = RelaxationOptions::LpMethod;
+  for (const Method method : {Method::kInteriorPoint, Method::kClpBarrier}) {
+    SCOPED_TRACE(ToString(method));
+    SolveScheduleOptions o;
+    o.milp = Exact();
+    o.search.relaxation.lp_method = method;
+    const ScheduleResult r = SolveSchedule(p, *solver, o);
+    ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
+    EXPECT_NEAR(r.solve.objective, optimum, 1e-9);
+    EXPECT_LE(r.search.lp_bound, optimum + 1e-9);
+    EXPECT_GT(r.search.lp_bound, 0.5 * optimum);
+    ASSERT_FALSE(r.search.steps.empty());
+    const bool own =
+        r.search.steps.front().find("the project's interior point") != std::string::npos;
+    EXPECT_EQ(own, method == Method::kInteriorPoint) << r.search.steps.front();
+  }
+}
+
 // On a problem with several burns the search and CBC alone agree, and the
 // search is deterministic (node limits only).
 TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {

@@ -1,6 +1,8 @@
 // The phase "relaxation": the LP relaxation by interior point without
-// crossover, and a bound from its row duals valid whatever their accuracy
-// (milp/lp_bound.h), rounded up to the objective step.
+// crossover (RelaxationOptions::lp_method: the project's own,
+// milp/interior_point.h, then CLP's barrier if it ends without an optimum;
+// or CLP's barrier alone), and a bound from its row duals valid whatever
+// their accuracy (milp/lp_bound.h), rounded up to the objective step.
 //
 //   plan.push_back({MakeRelaxationPhase(), "always", Always});
 //

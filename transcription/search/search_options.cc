@@ -31,6 +31,21 @@ bool Share(std::string* error, const std::string& path, double value) {
 
 bool RelaxationOptions::IsValid(std::string* /*error*/) const { return true; }
 
+const char* ToString(RelaxationOptions::LpMethod method) {
+  return method == RelaxationOptions::LpMethod::kInteriorPoint ? "interior_point" : "clp_barrier";
+}
+
+bool ParseLpMethod(const std::string& name, RelaxationOptions::LpMethod* method) {
+  for (auto m :
+       {RelaxationOptions::LpMethod::kClpBarrier, RelaxationOptions::LpMethod::kInteriorPoint}) {
+    if (name == ToString(m)) {
+      *method = m;
+      return true;
+    }
+  }
+  return false;
+}
+
 bool NetOptions::IsValid(std::string* error) const {
   if (!(candidate_threshold > 0.0 && candidate_threshold < 1.0)) {
     return Fail(error, "nets.candidate_threshold", "in (0, 1)", FormatG(candidate_threshold, 6));

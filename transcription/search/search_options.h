@@ -28,8 +28,20 @@ struct RelaxationOptions {
   /// leave off (transcription/dormant.h), and keep those thrusters out of
   /// the nets.
   bool drop_dormant_blocks = true;
+  /// Which interior point solves it: CLP's barrier (without crossover), or
+  /// the project's own (milp/interior_point.h: one ordering of the KKT
+  /// staircase, then a factorisation per iteration), with CLP's barrier after
+  /// it where it ends without an optimum. Either way the bound is the safe one
+  /// of its duals (milp/lp_bound.h).
+  enum class LpMethod { kClpBarrier, kInteriorPoint };
+  LpMethod lp_method = LpMethod::kInteriorPoint;
   bool IsValid(std::string* error) const;
 };
+
+/// "clp_barrier" | "interior_point" (the scenario's search.relaxation.lp_method).
+const char* ToString(RelaxationOptions::LpMethod method);
+/// @returns false for any other name.
+bool ParseLpMethod(const std::string& name, RelaxationOptions::LpMethod* method);
 
 /// The nets around the relaxation's slots: the phase "nets" (widened until
 /// one holds a schedule) and the phase "improvement" (the next, wider nets
