@@ -77,8 +77,11 @@ void ParseSearch(JsonObject& solver, std::string_view key, transcription::Search
     JsonObject r = o.Object("relaxation");
     SetBool(r, "drop_dormant_blocks", &search->relaxation.drop_dormant_blocks);
     if (r.Has("lp_method")) {
-      transcription::ParseLpMethod(r.Choice("lp_method", {"clp_barrier", "interior_point"}),
-                                   &search->relaxation.lp_method);
+      using Method = transcription::RelaxationOptions::LpMethod;
+      transcription::ParseLpMethod(
+          r.Choice("lp_method", {transcription::ToString(Method::kClpBarrier),
+                                 transcription::ToString(Method::kInteriorPoint)}),
+          &search->relaxation.lp_method);
     }
     r.Finish();
   }

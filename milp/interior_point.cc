@@ -470,8 +470,15 @@ InteriorPointResult SolveLpByInteriorPoint(const LpData& lp, const InteriorPoint
   Iterate it = ipm.Start();
   Iterate last = it;
   Residuals r;
+  int reported = 0;  // the last iteration handed to on_iteration
   for (;;) {
     r = Measure(ipm, it, scaling, b_norm, c_norm);
+    if (options.on_iteration && result.iterations > reported) {
+      reported = result.iterations;
+      const double objective =
+          f.sign * scaling.cost * ipm.PrimalObjective(it) + f.fixed_cost + lp.objective_offset;
+      options.on_iteration(result.iterations, objective, r.primal);
+    }
     if (r.primal <= options.tolerance && r.dual <= options.tolerance &&
         r.gap <= options.tolerance) {
       result.status = SolveStatus::kOptimal;
@@ -506,12 +513,6 @@ InteriorPointResult SolveLpByInteriorPoint(const LpData& lp, const InteriorPoint
       break;
     }
     ++result.iterations;
-    if (options.on_iteration) {
-      const double objective =
-          f.sign * scaling.cost * ipm.PrimalObjective(it) + f.fixed_cost + lp.objective_offset;
-      options.on_iteration(result.iterations, objective,
-                           Measure(ipm, it, scaling, b_norm, c_norm).primal);
-    }
   }
   result.primal_residual = r.primal;
   result.dual_residual = r.dual;
