@@ -91,8 +91,15 @@ class Recorder : public DriverListener {
   }
   bool StopRequested() override {
     clock_->ShouldStop();  // remembers an interrupt
-    return clock_->stopped_by_interrupt() || callback_error_ != nullptr;
+    if (!std::isnan(options_.known_bound) && std::isfinite(best_objective_) &&
+        GapClosed(best_objective_, options_.known_bound, options_)) {
+      known_bound_reached_ = true;
+    }
+    return clock_->stopped_by_interrupt() || callback_error_ != nullptr || known_bound_reached_;
   }
+  /// StopRequested stopped the solve: an incumbent within the gap of
+  /// SolveOptions::known_bound.
+  bool known_bound_reached() const { return known_bound_reached_; }
 
   // An incumbent of our own (the MIP start).
   void RecordOwn(double objective) {
@@ -136,6 +143,7 @@ class Recorder : public DriverListener {
   double best_objective_ = std::numeric_limits<double>::quiet_NaN();
   double best_wall_ = 0.0;
   double last_reported_objective_ = std::numeric_limits<double>::quiet_NaN();
+  bool known_bound_reached_ = false;
 };
 
 class CbcSolverImpl final : public Solver {
@@ -642,6 +650,7 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
   const Eigen::VectorXd x = ChooseSolution(lp, options, out, recorder, start_x, &detail);
   const bool has_x = x.size() > 0;
   auto limit = [&]() -> std::string {
+    if (recorder.known_bound_reached()) return "an incumbent within the gap of the known bound";
     if (clock.stopped_by_interrupt()) return "interrupted";
     if (options.max_nodes >= 0 && !clock.DeadlinePassed() && out.status == 1) return "node limit";
     return "time limit";
@@ -677,6 +686,10 @@ SolveResult CbcSolverImpl::SolveOnce(const LpData& lp, const SolveOptions& optio
     r.x = x;
     r.objective = lp.Objective(x);
     r.best_bound = FinalBound(lp, options, out, r.status, r.objective);
+    if (!std::isnan(options.known_bound) && sign * options.known_bound > sign * r.best_bound) {
+      r.best_bound =
+          sign * options.known_bound > sign * r.objective ? r.objective : options.known_bound;
+    }
     r.gap = RelativeGap(r.objective, r.best_bound);
   }
   r.incumbents = recorder.incumbents();

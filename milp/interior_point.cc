@@ -355,7 +355,20 @@ class MehrotraIteration {
                                          : (s_l_aff.dot(it->y_l + a_d * affine.dy_l) +
                                             s_u_aff.dot(it->y_u + a_d * affine.dy_u)) /
                                                n_bounds_;
-    const double sigma = mu > 0 ? std::pow(std::clamp(mu_aff / mu, 0.0, 1.0), 3) : 0.0;
+    double sigma = mu > 0 ? std::pow(std::clamp(mu_aff / mu, 0.0, 1.0), 3) : 0.0;
+    // Complementarity never far ahead of feasibility: where mu falls below
+    // the primal residual (a week that needs almost no thrust: the zero
+    // schedule misses the window by little), the slacks reach the boundary
+    // while the iterate is still infeasible, the barrier diagonal grows to
+    // 1e15 and the steps no longer lower the residual (it stalled at 1e-6 on
+    // such a week); centring in proportion to the residual keeps the iterate
+    // interior until it is feasible (cf. the "mu-infeasibility balance" of
+    // Wright 1997, Primal-Dual Interior-Point Methods, ch. 6).
+    if (mu > 0) {
+      const double residual =
+          r_p.lpNorm<Eigen::Infinity>() / (1.0 + f_.b.lpNorm<Eigen::Infinity>());
+      sigma = std::max(sigma, std::min(0.9, kCentringPerResidual * residual / mu));
+    }
     // Corrector: centring and the second-order term.
     for (int j = 0; j < d.size(); ++j) {
       if (has_l_[j]) r_cl[j] += sigma * mu - affine.dz[j] * affine.dy_l[j];
@@ -386,6 +399,8 @@ class MehrotraIteration {
 
  private:
   static constexpr double kMaxRegularisation = 1e-4;
+  /// sigma mu >= kCentringPerResidual * relative primal residual.
+  static constexpr double kCentringPerResidual = 0.01;
   double regularisation_ = 1e-8;
 
   Direction Solve(const Iterate& it, const VectorXd& s_l, const VectorXd& s_u, const VectorXd& r_p,

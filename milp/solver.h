@@ -128,6 +128,14 @@ struct SolveOptions {
   /// incumbent by (almost) a full step, which closes gaps the LP bound alone
   /// cannot. A wrong step can cut off the optimum: pass it only when it is true.
   double objective_step = 0.0;
+  /// A bound on the optimum proven elsewhere (model sense; NaN: none), e.g.
+  /// by a relaxation the caller solved with more knowledge of the problem:
+  /// the MILP solve stops, as at a limit, once an incumbent closes the gap
+  /// to it (GapClosed), and its result's best_bound is the better of the
+  /// solver's and this one. Its status stays kFeasible: the proof is not the
+  /// solver's, and a caller that reads kOptimal as "this model is solved"
+  /// (the search's exact restricted MILP) is not misled.
+  double known_bound = std::numeric_limits<double>::quiet_NaN();
   LpAlgorithm lp_algorithm = LpAlgorithm::kPrimal;
   /// MIP start: a full column vector; integer entries are rounded and the
   /// continuous ones re-optimised with the integers fixed. If the result is

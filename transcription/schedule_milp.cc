@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -49,6 +51,52 @@ double ObjectiveStep(const milp::LpData& lp) {
     if (std::abs(ratio - std::round(ratio)) > 1e-9 * std::max(1.0, ratio)) return 0.0;
   }
   return smallest;
+}
+
+// See ScheduleMilp::least_firing_objective() and dearest_schedule_objective():
+// {-inf, +inf} where the slots do not carry the whole objective at costs >= 0.
+std::pair<double, double> FiringObjectiveRange(const milp::LpData& lp,
+                                               const OperationalEncoding& enc,
+                                               const OperationalRules& rules) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const std::pair<double, double> none{-kInf, kInf};
+  if (lp.sense != milp::ObjectiveSense::kMinimize || enc.on.empty()) return none;
+  std::vector<char> is_on(static_cast<size_t>(lp.num_cols()), 0);
+  for (const auto& thruster : enc.on)
+    for (const milp::Variable& v : thruster) is_on[static_cast<size_t>(v.index())] = 1;
+  double cheapest = kInf;
+  bool free_slot = false;  // a slot that can fire at no cost
+  for (int j = 0; j < lp.num_cols(); ++j) {
+    const double c = lp.col_cost[j];
+    if (is_on[static_cast<size_t>(j)]) {
+      if (c < 0.0) return none;
+      if (lp.col_upper[j] < 0.5) continue;
+      free_slot = free_slot || c == 0.0;
+      cheapest = std::min(cheapest, c);
+    } else if (c != 0.0) {
+      return none;  // a cost that is not the slots' (a slack, an arrival time)
+    }
+  }
+  // The dearest: in each interval the max_simultaneous dearest free slots.
+  double dearest = lp.objective_offset;
+  std::vector<double> costs;
+  for (int j = 0; j < enc.num_intervals; ++j) {
+    costs.clear();
+    for (int i = 0; i < enc.num_thrusters; ++i) {
+      const int c = enc.on[static_cast<size_t>(i)][static_cast<size_t>(j)].index();
+      if (lp.col_upper[c] >= 0.5) costs.push_back(lp.col_cost[c]);
+    }
+    std::sort(costs.begin(), costs.end(), std::greater<double>());
+    for (size_t k = 0; k < costs.size() && k < static_cast<size_t>(rules.max_simultaneous); ++k)
+      dearest += costs[k];
+  }
+  if (!std::isfinite(cheapest) || free_slot) return {-kInf, dearest};
+  // A burn from the history or one continuing past the end may be shorter.
+  const bool shorter =
+      rules.allow_burn_across_end ||
+      std::any_of(enc.prev_on.begin(), enc.prev_on.end(), [](int on) { return on; });
+  const int slots = shorter ? 1 : std::max(1, enc.min_burn_intervals_min);
+  return {lp.objective_offset + slots * cheapest, dearest};
 }
 
 }  // namespace
@@ -219,6 +267,8 @@ void ScheduleMilp::Build() {
   if (problem_.conjunction) AddConjunction();
   lp_ = model_.ToLpData();
   objective_step_ = ObjectiveStep(lp_);
+  std::tie(least_firing_objective_, dearest_schedule_objective_) =
+      FiringObjectiveRange(lp_, encoding_, problem_.rules);
   stats_.build_seconds = Seconds(t0);
   stats_.num_binaries = lp_.num_integer_cols();
   stats_.num_columns = lp_.num_cols();

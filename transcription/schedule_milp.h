@@ -24,6 +24,7 @@
 #ifndef THRUSTSCHED_TRANSCRIPTION_SCHEDULE_MILP_H_
 #define THRUSTSCHED_TRANSCRIPTION_SCHEDULE_MILP_H_
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -134,6 +135,21 @@ class ScheduleMilp {
   /// feasible objective values then differ by whole steps, which lets the
   /// solver prove optimality (milp::SolveOptions::objective_step). Else 0.
   double objective_step() const { return objective_step_; }
+  /// The least objective of a schedule that fires at all, where the slots
+  /// carry the whole objective at positive costs: every burn lasts at least
+  /// the minimum burn's number of intervals (one where a burn from the
+  /// history or across the end may be shorter), each at least the cheapest
+  /// free slot's cost. A bound above the zero schedule's objective
+  /// (objective_offset) proves that every schedule fires, and so raises to
+  /// this: a week that needs a fraction of a slot of thrust, by the LP, and
+  /// burns of at least 3 slots, is bounded by 3 slots. -inf where the costs
+  /// are not of that form (a slack, an arrival time, a free slot).
+  double least_firing_objective() const { return least_firing_objective_; }
+  /// The objective of the dearest schedule the rules allow, where the slots
+  /// carry the whole objective at costs >= 0: in every interval the
+  /// max_simultaneous dearest free slots. A bound above it proves the MILP
+  /// infeasible. +inf where the costs are not of that form.
+  double dearest_schedule_objective() const { return dearest_schedule_objective_; }
   /// The keep-out rows of problem().conjunction (sizes, big-M range, budget);
   /// empty without a conjunction.
   const std::optional<KeepOutStats>& keep_out() const { return keep_out_; }
@@ -190,6 +206,8 @@ class ScheduleMilp {
   BuildStats stats_;
   std::vector<std::string> reasons_;
   double objective_step_ = 0.0;
+  double least_firing_objective_ = -std::numeric_limits<double>::infinity();
+  double dearest_schedule_objective_ = std::numeric_limits<double>::infinity();
   std::optional<KeepOutStats> keep_out_;
   Eigen::VectorXd scale_;                           // state scale S (ones if !scale)
   std::vector<std::vector<milp::Variable>> state_;  // sparse: [node][component], scaled

@@ -6,8 +6,10 @@
 //                     [--report-only] [--list] [--year-results DIR]
 //                     [--external-time-limit S] [--keep-mps]
 //
-// Writes DIR/results.csv, DIR/report.md, DIR/*.svg, DIR/meta.json and
-// DIR/runs/ (one JSON result file and one solver trace per run). Each run is
+// Writes DIR/results.csv, DIR/report.md, DIR/*.svg, DIR/meta.json,
+// DIR/runs/ (one JSON result file and one solver trace per run) and
+// DIR/random_weeks/ (the weeks of the section "random_weeks", drawn by
+// scripts/random_weeks.py from bench::kRandomWeeksSeed). Each run is
 // a forked child process (see runner.h). Exit code: 0 when every case
 // produced a row (solver limits are results, not failures), 1 if a case
 // failed (error, crash or deadline), 2 on bad command-line input.
@@ -15,6 +17,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -49,6 +52,20 @@ const char* KindName(bench::CaseKind k) {
       return "transfer";
   }
   return "?";
+}
+
+// Draws the random weeks into `dir` (scripts/random_weeks.py, the bench's
+// seed and count); false, with a warning, where the script fails (the
+// section is then not run).
+bool WriteRandomWeeks(const std::string& dir) {
+  const std::string cmd = "python3 '" THRUSTSCHED_SOURCE_DIR "/scripts/random_weeks.py' --seed " +
+                          std::to_string(bench::kRandomWeeksSeed) + " --count " +
+                          std::to_string(bench::kRandomWeeksCount) + " --out '" + dir +
+                          "' > /dev/null";
+  if (std::system(cmd.c_str()) == 0) return true;
+  std::cerr << "thrustsched-bench: warning: scripts/random_weeks.py could not write " << dir
+            << ": the section random_weeks is not run\n";
+  return false;
 }
 
 }  // namespace
@@ -135,9 +152,24 @@ int main(int argc, char** argv) {
     mo.time_limit_s = time_limit;
     mo.timing_repeats = repeats;
     mo.external_time_limit_s = external_time_limit;
+    // --list writes nothing to DIR: the weeks go to a temporary folder.
+    std::string list_dir;
+    if (list) {
+      std::string pattern =
+          (std::filesystem::temp_directory_path() / "thrustsched-bench-XXXXXX").string();
+      if (mkdtemp(pattern.data()) != nullptr) list_dir = pattern;
+    }
+    const std::string weeks_dir = list ? list_dir + "/random_weeks" : out + "/random_weeks";
+    if (!quick && (!list || !list_dir.empty()) && WriteRandomWeeks(weeks_dir)) {
+      mo.random_weeks_dir = weeks_dir;
+    }
     std::vector<bench::CaseSpec> cases;
     for (bench::CaseSpec& c : bench::BuildMatrix(mo)) {
       if (fnmatch(case_glob.c_str(), c.id.c_str(), 0) == 0) cases.push_back(std::move(c));
+    }
+    if (!list_dir.empty()) {
+      std::error_code ec;
+      std::filesystem::remove_all(list_dir, ec);
     }
     if (list) {
       for (const bench::CaseSpec& c : cases) {

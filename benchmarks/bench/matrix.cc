@@ -52,10 +52,16 @@ class Builder {
   explicit Builder(const MatrixOptions& o) : o_(o) {}
 
   CaseSpec Make(const std::string& section, const std::string& scenario, CaseKind kind) {
+    return MakeAt(section, scenario, Locate(scenario), kind);
+  }
+
+  /// A case of a scenario file outside the scenario directories.
+  CaseSpec MakeAt(const std::string& section, const std::string& scenario, const std::string& path,
+                  CaseKind kind) {
     CaseSpec c;
     c.section = section;
     c.scenario = scenario;
-    c.scenario_path = Locate(scenario);
+    c.scenario_path = path;
     c.kind = kind;
     c.threads = o_.threads;
     c.time_limit_s = o_.time_limit_s;
@@ -168,6 +174,38 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
   }
 }
 
+// The arms of a search case: the search as `thrustsched solve` runs it and
+// as the previous release ran it, side by side in the same run so that
+// machine load cancels in the ratios.
+struct SearchArmSpec {
+  SearchArm search;
+  const char* variant;
+};
+constexpr SearchArmSpec kThisReleaseArm{SearchArm::kThisRelease, "search (this release)"};
+constexpr SearchArmSpec kPreviousReleaseArm{
+    SearchArm::kPreviousRelease,
+    "search as the previous release ran it (the LP relaxation by CLP's barrier)"};
+constexpr SearchArmSpec kLazyLpUnpresolvedArm{SearchArm::kLazyLpUnpresolved,
+                                              "search with the lazy rows' first LP unpresolved "
+                                              "(LazyRowOptions::presolve_lp_relaxation false)"};
+
+// Adds `c` once per arm, its id ending in `suffix` and the arm's path
+// (SolverPathIdSuffix). Only the solve is timed: no separate LP relaxation
+// (the search reports its bound in search_steps) and no reference
+// discretisation.
+void AddSearchArms(Builder* b, CaseSpec c, const std::string& suffix,
+                   std::initializer_list<SearchArmSpec> arms) {
+  c.lp_relaxation = false;
+  c.error_metrics = false;
+  for (const SearchArmSpec& a : arms) {
+    CaseSpec arm = c;
+    arm.search = true;
+    arm.search_arm = a.search;
+    arm.variant = a.variant;
+    b->Add(arm, suffix + SolverPathIdSuffix(SolverPath(arm)));
+  }
+}
+
 // The problem-aware search against the same search with one named switch off
 // (`previous`, its variant says which) and CBC alone on the whole MILP, case
 // by case in the same run so that machine load cancels in the ratios; the
@@ -175,33 +213,12 @@ void AddTargets(Builder* b, const MatrixOptions& o) {
 void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
   // cbc_repeats > 0: the CBC-alone arm that many times, not c.repeats.
   auto pair = [b](CaseSpec c, const std::string& suffix, int cbc_repeats = 0) {
-    auto add = [b, &suffix](const CaseSpec& arm) {
-      b->Add(arm, suffix + SolverPathIdSuffix(SolverPath(arm)));
-    };
-    // Only the solve is timed: no separate LP relaxation (the search reports
-    // its bound in search_steps) and no reference discretisation.
+    AddSearchArms(b, c, suffix, {kThisReleaseArm, kPreviousReleaseArm, kLazyLpUnpresolvedArm});
     c.lp_relaxation = false;
     c.error_metrics = false;
-    struct Arm {
-      SearchArm search;
-      const char* variant;
-    };
-    for (const Arm& a :
-         {Arm{SearchArm::kThisRelease, "search (this release)"},
-          Arm{SearchArm::kPreviousRelease,
-              "search as the previous release ran it (the LP relaxation by CLP's barrier)"},
-          Arm{SearchArm::kLazyLpUnpresolved,
-              "search with the lazy rows' first LP unpresolved "
-              "(LazyRowOptions::presolve_lp_relaxation false)"}}) {
-      CaseSpec arm = c;
-      arm.search = true;
-      arm.search_arm = a.search;
-      arm.variant = a.variant;
-      add(arm);
-    }
     if (cbc_repeats > 0) c.repeats = cbc_repeats;
     c.variant = "CBC on the whole MILP (first release)";
-    add(c);
+    b->Add(c, suffix + SolverPathIdSuffix(SolverPath(c)));
   };
   {
     CaseSpec c = b->Make(kSectionSolverSpeed, "hcw_table42_t1_2d", CaseKind::kSolve);
@@ -250,6 +267,26 @@ void AddSolverSpeed(Builder* b, const MatrixOptions& o) {
     c.target_gap_s = 60.0;
     // CBC alone reached 2 % in 60 s on none of them: one repeat.
     pair(c, "2threads", 1);
+  }
+}
+
+// Weeks nobody chose (scripts/random_weeks.py, kRandomWeeksSeed): each to a
+// 1 % gap in kRandomWeeksTimeLimitS on 2 threads, this release against the
+// previous one in the same run; the report gives the distribution.
+void AddRandomWeeks(Builder* b, const MatrixOptions& o) {
+  if (o.quick || o.random_weeks_dir.empty()) return;
+  std::vector<std::filesystem::path> weeks;
+  for (const auto& e : std::filesystem::directory_iterator(o.random_weeks_dir)) {
+    if (e.path().extension() == ".json") weeks.push_back(e.path());
+  }
+  std::sort(weeks.begin(), weeks.end());
+  for (const std::filesystem::path& week : weeks) {
+    CaseSpec c =
+        b->MakeAt(kSectionRandomWeeks, week.stem().string(), week.string(), CaseKind::kSolve);
+    c.threads = 2;
+    c.time_limit_s = kRandomWeeksTimeLimitS;
+    c.relative_gap = 0.01;
+    AddSearchArms(b, c, "2threads", {kThisReleaseArm, kPreviousReleaseArm});
   }
 }
 
@@ -589,6 +626,7 @@ std::vector<CaseSpec> BuildMatrix(const MatrixOptions& options) {
   AddOperations(&b, options);
   AddCollisionAvoidance(&b, options);
   AddTransfers(&b, options);
+  AddRandomWeeks(&b, options);
   std::vector<CaseSpec> cases = b.Take();
   if (options.quick) {
     // --quick checks code paths and numbers, not speed: its solves stop at a

@@ -39,6 +39,14 @@ inline constexpr const char* kSectionOperations = "operations";
 inline constexpr const char* kSectionSolverSpeed = "solver_speed";
 inline constexpr const char* kSectionCollisionAvoidance = "collision_avoidance";
 inline constexpr const char* kSectionTransfer = "transfer";
+inline constexpr const char* kSectionRandomWeeks = "random_weeks";
+
+/// The random weeks' draw (scripts/random_weeks.py): a seed fixed here and
+/// never used while developing the search (develop on others), and how many.
+inline constexpr int kRandomWeeksSeed = 8123;
+inline constexpr int kRandomWeeksCount = 50;
+/// Each random week, on each arm: to a 1 % gap, stopped at this limit.
+inline constexpr double kRandomWeeksTimeLimitS = 60.0;
 
 enum class CaseKind {
   kAccuracy,     // every scheme vs the reference on each step of `accuracy_steps_s`
@@ -146,6 +154,9 @@ struct MatrixOptions {
   double time_limit_s = 60.0;              // per matrix solve (targets fixed)
   int timing_repeats = 3;                  // repeats of the timing-target cases
   double external_time_limit_s = 0.0;      // cross-check solvers; 0: min(30 s, time_limit_s)
+  /// Folder of the random weeks (scripts/random_weeks.py's files, which the
+  /// bench writes there); empty: the section "random_weeks" is not built.
+  std::string random_weeks_dir;
 };
 
 /// The cases, in run order. Scenario files are located but not parsed.

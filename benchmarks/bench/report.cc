@@ -13,6 +13,7 @@
 #include "benchmarks/bench/report_campaigns.h"
 #include "benchmarks/bench/report_conjunction.h"
 #include "benchmarks/bench/report_format.h"
+#include "benchmarks/bench/report_random_weeks.h"
 #include "benchmarks/bench/report_sections.h"
 #include "benchmarks/bench/report_solver.h"
 #include "benchmarks/bench/report_transfer.h"
@@ -57,6 +58,7 @@ void WriteReport(const std::string& dir, const std::vector<Row>& rows, const Rep
   WriteSolverSpeed(md, rows, dir);
   WriteCampaigns(md, dir);
   WriteTransfers(md, rows);
+  WriteRandomWeeks(md, rows);
   WriteMethod(md);
   WriteSkipped(md, idx, meta);
   WriteColumns(md);

@@ -64,6 +64,7 @@ void WriteHeader(std::ostream& md, const ReportMeta& m) {
         "[8. Solver speed](#8-solver-speed-the-search-against-the-previous-release-and-cbc-alone) "
         "· [9. Campaigns](#9-campaigns-thrustsched-sweep-on-dask) · "
         "[10. Orbit transfers](#10-orbit-transfers-transfer) · "
+        "[11. Random weeks](#11-random-weeks-the-search-on-weeks-nobody-chose) · "
         "[Method and definitions](#method-and-definitions) · "
         "[Not run or skipped](#not-run-or-skipped) · [Columns](#columns-of-resultscsv)\n\n";
 }

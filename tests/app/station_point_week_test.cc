@@ -19,22 +19,19 @@
 
 #include "app/scenario.h"
 #include "milp/cbc_solver.h"
+#include "tests/app/deterministic_week.h"
 #include "transcription/search.h"
 #include "transcription/solve.h"
 
 namespace thrustsched::app {
 namespace {
 
+// Each restricted MILP within 2000 nodes: the first improvement MILP
+// (1182 slots) runs out of its 20,000 in a minute, finding 18 slots.
 Scenario Week() {
-  Scenario s = LoadScenario(std::string(THRUSTSCHED_DATA_DIR) +
-                            "/scenarios/hard/station_point_ideal6_15w_2030-05-01.json");
-  s.solve.threads = 1;
-  s.solve.time_limit_s = std::numeric_limits<double>::infinity();
-  s.solve.relative_gap = 1e-4;
-  // Each restricted MILP within 2000 nodes: the first improvement MILP
-  // (1182 slots) runs out of its 20,000 in a minute, finding 18 slots.
-  s.solve.max_nodes = 2000;
-  return s;
+  return DeterministicWeek(std::string(THRUSTSCHED_DATA_DIR) +
+                               "/scenarios/hard/station_point_ideal6_15w_2030-05-01.json",
+                           2000);
 }
 
 std::string Steps(const transcription::SearchReport& report) {
@@ -50,13 +47,7 @@ int Count(const std::string& text, const std::string& what) {
 }
 
 TEST(StationPointWeek, TheFiredThrustersNetHoldsTheOptimum) {
-  const Scenario s = Week();
-  auto solver = milp::MakeCbcSolver();
-  transcription::SolveScheduleOptions o;
-  o.build = s.build;
-  o.milp = s.solve;
-  o.check = s.check;
-  const transcription::ScheduleResult r = transcription::SolveSchedule(s.problem, *solver, o);
+  const transcription::ScheduleResult r = SolveWeek(Week());
   const std::string steps = Steps(r.search);
   ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << steps;
   const double step = r.solve.objective / 4.0;  // 4 slots of one thruster

@@ -1,6 +1,8 @@
 // Unit tests of the thrustsched-bench helpers: error metrics against closed
 // forms, log-log fits on exact power laws, the CSV round trip, the JSON merge
 // patch, medians and the benchmark matrix.
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -281,6 +283,46 @@ TEST(Matrix, SolverSpeedArmsAreNamedByTheirPath) {
   EXPECT_EQ(SolverPathIdSuffix("search_lazy_lp_unpresolved"), "-lazy-lp-unpresolved");
   EXPECT_EQ(SolverPathIdSuffix("cbc"), "-cbc");
   EXPECT_EQ(SolverPathIdSuffix(""), "-cbc");
+}
+
+// The random weeks: both arms of every week file of the folder (other files
+// ignored), to 1 % in the section's limit on 2 threads; none without the
+// folder or in --quick.
+TEST(Matrix, RandomWeeksRunBothArmsOfEveryWeekInTheFolder) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("bench_random_weeks_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  for (const char* f : {"rw_5_001_ideal6_failed.json", "rw_5_000_anzel4.json", "weeks.csv"}) {
+    std::FILE* out = std::fopen((dir / f).c_str(), "w");
+    ASSERT_NE(out, nullptr);
+    std::fclose(out);
+  }
+  MatrixOptions o;
+  o.scenario_dirs = {std::string(THRUSTSCHED_DATA_DIR) + "/scenarios",
+                     std::string(THRUSTSCHED_SOURCE_DIR) + "/benchmarks/bench/scenarios"};
+  auto random_ids = [&o] {
+    std::vector<std::string> ids;
+    for (const CaseSpec& c : BuildMatrix(o)) {
+      if (c.section != kSectionRandomWeeks) continue;
+      ids.push_back(c.id);
+      EXPECT_TRUE(c.search) << c.id;
+      EXPECT_EQ(c.threads, 2) << c.id;
+      EXPECT_EQ(c.time_limit_s, kRandomWeeksTimeLimitS) << c.id;
+      EXPECT_EQ(c.relative_gap, 0.01) << c.id;
+      EXPECT_EQ(c.scenario_path, o.random_weeks_dir + "/" + c.scenario + ".json") << c.id;
+    }
+    return ids;
+  };
+  EXPECT_TRUE(random_ids().empty());
+  o.random_weeks_dir = dir.string();
+  EXPECT_EQ(random_ids(),
+            (std::vector<std::string>{"random_weeks-rw_5_000_anzel4-2threads-search",
+                                      "random_weeks-rw_5_000_anzel4-2threads-previous",
+                                      "random_weeks-rw_5_001_ideal6_failed-2threads-search",
+                                      "random_weeks-rw_5_001_ideal6_failed-2threads-previous"}));
+  o.quick = true;
+  EXPECT_TRUE(random_ids().empty());
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Published, ThesisTablesAreSlotMultiples) {

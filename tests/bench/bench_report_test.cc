@@ -23,6 +23,7 @@
 #include "benchmarks/bench/matrix.h"
 #include "benchmarks/bench/report.h"
 #include "benchmarks/bench/report_format.h"
+#include "benchmarks/bench/report_random_weeks.h"
 #include "benchmarks/bench/report_transfer.h"
 #include "benchmarks/bench/results.h"
 
@@ -353,6 +354,75 @@ TEST(BenchReport, TransferSectionComparesEachFigureWithThePublishedOne) {
   std::ostringstream none;
   WriteTransfers(none, {other});
   EXPECT_NE(none.str().find("Not run."), std::string::npos);
+}
+
+// Section 11 from synthetic rows of three weeks: the distribution per arm
+// (a week without a schedule or above 1 % counts as not reached), the
+// per-preset targets, the ratio where both arms reached 1 %, and a bound of
+// one arm above the other arm's schedule named as inconsistent.
+TEST(BenchReport, RandomWeeksSectionGivesTheDistributionAndCrossChecksTheBounds) {
+  auto row = [](const std::string& week, bool previous) {
+    Row r;
+    r.Set("section", kSectionRandomWeeks);
+    r.Set("scenario", week);
+    r.Set("solver_path", previous ? kSearchPreviousPath.column : kSearchPath.column);
+    r.Set("status", "feasible");
+    return r;
+  };
+  auto solved = [](Row r, double t1, double objective, double bound) {
+    if (t1 > 0) r.Set("time_to_1pct_s", t1);
+    r.Set("objective", objective);
+    r.Set("consumption_l1_m_s", objective);
+    r.Set("best_bound", bound);
+    r.Set("gap", (objective - bound) / objective);
+    return r;
+  };
+  std::vector<Row> rows = {
+      solved(row("rw_9_000_anzel4", false), 2.0, 0.1, 0.0995),
+      solved(row("rw_9_000_anzel4", true), 6.0, 0.1002, 0.101),  // bound above 0.1
+      solved(row("rw_9_001_ideal6_failed", false), 40.0, 0.3, 0.2976),
+      solved(row("rw_9_001_ideal6_failed", true), -1, 0.31, 0.2945),  // 5 % at the limit
+      row("rw_9_002_anzel4", false),                                  // no schedule
+      solved(row("rw_9_002_anzel4", true), 12.0, 0.2, 0.199),
+  };
+  rows[4].Set("status", "no_solution_found");
+  Row other = rows[0];
+  other.Set("section", kSectionSolverSpeed);
+  other.Set("scenario", "not_a_random_week");
+  rows.push_back(other);
+  std::ostringstream md;
+  WriteRandomWeeks(md, rows);
+  const std::string s = md.str();
+  EXPECT_NE(s.find("## 11. Random weeks"), std::string::npos);
+  EXPECT_NE(s.find("| this release | 3 | 40.0 | not reached | not reached | 1 | 1 |"),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("| previous release | 3 | 12.0 | not reached | not reached | 0 | 1 |"),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("| 1 of 2 | 0 of 1 |"), std::string::npos) << s;
+  EXPECT_NE(s.find("on the 1 weeks both reached: median 3, geometric mean 3, range 3 to 3"),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("**inconsistent** on 1 of 2: rw_9_000_anzel4."), std::string::npos) << s;
+  EXPECT_NE(s.find("| rw_9_001_ideal6_failed | feasible | 40.0 | 0.3 | 0.80 % | not reached | "
+                   "5.00 % | - |"),
+            std::string::npos)
+      << s;
+  EXPECT_EQ(s.find("not_a_random_week"), std::string::npos);
+  std::ostringstream none;
+  WriteRandomWeeks(none, {other});
+  EXPECT_NE(none.str().find("Not run."), std::string::npos);
+}
+
+TEST(NearestRankQuantile, SmallestValueWithAtLeastQAtOrBelow) {
+  const std::vector<double> ten = {10, 9, 8, 7, 6, 5, 4, 3, 2, 1};
+  EXPECT_EQ(NearestRankQuantile(ten, 0.9), 9);
+  EXPECT_EQ(NearestRankQuantile(ten, 0.5), 5);
+  EXPECT_EQ(NearestRankQuantile(ten, 1.0), 10);
+  EXPECT_EQ(NearestRankQuantile(ten, 0.0), 1);
+  EXPECT_EQ(NearestRankQuantile({1, std::nan(""), INFINITY}, 0.9), INFINITY);
+  EXPECT_TRUE(std::isnan(NearestRankQuantile({}, 0.5)));
 }
 
 TEST(MdTable, SplitsWideTablesRepeatingTheKeyColumns) {

@@ -680,6 +680,41 @@ TEST(CbcSolverTest, AbsoluteGapStopsTheSearch) {
   EXPECT_LT(r.wall_seconds, 30.0);  // HardKnapsack is not solved to 0 gap in minutes
 }
 
+// A bound proven elsewhere (SolveOptions::known_bound) ends the solve at the
+// first incumbent within the gap of it, with that bound (status feasible:
+// the proof is not the solver's): the
+// bound CBC itself reaches after 50 nodes (valid, and tighter than its own
+// on the way there), with the gap its incumbent then has, stops a second run
+// no later, at a point of that quality; a bound on the wrong side of CBC's
+// own changes nothing.
+TEST(CbcSolverTest, KnownBoundStopsAtTheFirstIncumbentWithinTheGap) {
+  SolveOptions o;
+  o.max_nodes = 50;
+  o.relative_gap = 0.0;
+  o.absolute_gap = 0.0;
+  const SolveResult alone = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  ASSERT_EQ(alone.status, SolveStatus::kFeasible) << alone.detail;
+  ASSERT_GT(alone.gap, 0.0);
+
+  SolveOptions known = o;
+  known.relative_gap = alone.gap * (1 + 1e-9);
+  known.known_bound = alone.best_bound;
+  const SolveResult stopped = MakeCbcSolver()->Solve(HardKnapsack(), known);
+  ASSERT_EQ(stopped.status, SolveStatus::kFeasible) << stopped.detail;
+  EXPECT_EQ(stopped.best_bound, alone.best_bound);
+  EXPECT_LE(stopped.gap, known.relative_gap);
+  EXPECT_LE(stopped.objective, alone.best_bound);  // maximisation
+  EXPECT_THAT(stopped.detail, HasSubstr("within the gap of the known bound"));
+  EXPECT_LE(stopped.nodes, alone.nodes);
+
+  o.known_bound = alone.best_bound + 10 * (alone.best_bound - alone.objective);
+  const SolveResult same = MakeCbcSolver()->Solve(HardKnapsack(), o);
+  EXPECT_EQ(same.status, SolveStatus::kFeasible);
+  EXPECT_EQ(same.objective, alone.objective);
+  EXPECT_EQ(same.best_bound, alone.best_bound);
+  EXPECT_THAT(same.detail, HasSubstr("node limit"));
+}
+
 // A node budget stops the search like a time limit, deterministically.
 TEST(CbcSolverTest, NodeLimitStopsTheSearch) {
   SolveOptions o;

@@ -171,6 +171,43 @@ TEST(ScheduleMilpTest, DecodeAndWarmStartAreConsistent) {
 // X0 = [10 km, 0, 0, 0, 0, 0] over 7 days is infeasible with the window
 // enforced from t0 (thesis §4.3.3); at a 10-min step, 2 days suffice to show
 // it. A soft window returns the least-violating schedule instead.
+// The least objective of a schedule that fires (a lower bound wherever
+// the zero schedule is infeasible): the minimum burn's slots of the cheapest
+// slot, one slot where a burn may be shorter (across the end, from the
+// history); the dearest schedule: every interval's max_simultaneous dearest
+// slots; neither where the slots do not carry the whole objective.
+TEST(ScheduleMilpTest, FiringObjectivesAreTheShortestBurnAndTheBusiestSchedule) {
+  const double slot = 0.265 / 4850 * 300;
+  ScheduleProblem p = ThesisTable41(1.0);
+  EXPECT_NEAR(ScheduleMilp(p, BuildOptions{}).least_firing_objective(), slot, 1e-15);
+  // The dearest: one thruster on in each of the 288 intervals (two if two may fire at once).
+  EXPECT_NEAR(ScheduleMilp(p, BuildOptions{}).dearest_schedule_objective(), 288 * slot, 1e-12);
+  ScheduleProblem two = p;
+  two.rules.max_simultaneous = 2;
+  EXPECT_NEAR(ScheduleMilp(two, BuildOptions{}).dearest_schedule_objective(), 576 * slot, 1e-12);
+  p.rules.min_burn_s = 780;  // 13 min: 3 slots of 5 min
+  EXPECT_NEAR(ScheduleMilp(p, BuildOptions{}).least_firing_objective(), 3 * slot, 1e-15);
+  for (const int variant : {0, 1}) {
+    ScheduleProblem q = p;
+    if (variant == 0) q.rules.allow_burn_across_end = true;
+    if (variant == 1) {
+      q.history = BoundaryHistory::AllOff(6);
+      q.history.on_for_s[2] = 300;  // +N on for 5 min at t0
+    }
+    EXPECT_NEAR(ScheduleMilp(q, BuildOptions{}).least_firing_objective(), slot, 1e-15) << variant;
+  }
+  ScheduleProblem soft = p;
+  soft.window.soft = true;
+  EXPECT_EQ(ScheduleMilp(soft, BuildOptions{}).least_firing_objective(),
+            -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(ScheduleMilp(soft, BuildOptions{}).dearest_schedule_objective(),
+            std::numeric_limits<double>::infinity());
+  ScheduleProblem impulsive = p;
+  impulsive.input_mode = InputMode::kImpulsive;
+  EXPECT_EQ(ScheduleMilp(impulsive, BuildOptions{}).least_firing_objective(),
+            -std::numeric_limits<double>::infinity());
+}
+
 TEST(ScheduleMilpTest, InfeasibleStartAndSoftWindow) {
   auto solver = milp::MakeCbcSolver();
   ScheduleProblem p = ThesisTable41(2.0);

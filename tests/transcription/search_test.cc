@@ -112,6 +112,32 @@ TEST(SearchSchedule, EitherLpMethodOfTheRelaxationProvesTheSameOptimum) {
   }
 }
 
+// Thesis Table 4.1 over one day needs less than one slot of thrust by the
+// LP; with burns of at least 13 min (3 slots) every schedule costs at least
+// 3 slots (ScheduleMilp::least_firing_objective), which the search proves at
+// its first 3-slot incumbent: the optimum CBC alone proves on the whole MILP.
+TEST(SearchSchedule, ABoundAboveZeroRaisesToTheShortestBurn) {
+  auto solver = milp::MakeCbcSolver();
+  const double slot = 0.265 / 4850 * 300;
+  ScheduleProblem p = ThesisTable41(1.0);
+  p.rules.min_burn_s = 780;
+  const ScheduleResult reference = CbcAlone(p, *solver);
+  ASSERT_EQ(reference.solve.status, milp::SolveStatus::kOptimal) << reference.solve.detail;
+  EXPECT_NEAR(reference.solve.objective, 3 * slot, 1e-9);
+  SolveScheduleOptions o;
+  o.milp = Exact();
+  const ScheduleResult r = SolveSchedule(p, *solver, o);
+  ASSERT_EQ(r.solve.status, milp::SolveStatus::kOptimal) << r.solve.detail;
+  EXPECT_NEAR(r.solve.objective, 3 * slot, 1e-9);
+  EXPECT_NEAR(r.solve.best_bound, 3 * slot, 1e-9);
+  EXPECT_LT(r.search.lp_bound, slot);  // the LP alone: less than one slot
+  EXPECT_GT(r.search.lp_bound, 0.0);
+  ASSERT_FALSE(r.search.steps.empty());
+  EXPECT_NE(r.search.steps.front().find("every schedule fires"), std::string::npos)
+      << r.search.steps.front();
+  EXPECT_TRUE(r.check.operational_ok) << r.check.Summary();
+}
+
 // On a problem with several burns the search and CBC alone agree, and the
 // search is deterministic (node limits only).
 TEST(SearchSchedule, AgreesWithCbcAloneAndIsDeterministic) {

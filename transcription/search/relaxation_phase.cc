@@ -1,6 +1,7 @@
 #include "transcription/search/relaxation_phase.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
@@ -42,14 +43,27 @@ class RelaxationPhase : public SearchPhase {
     }
     const milp::DualBound dual = milp::SafeDualBound(state.lp(), r.row_duals);
     if (state.report() != nullptr) state.report()->lp_bound = dual.bound;
+    const double dearest = state.milp().dearest_schedule_objective();
+    if (dual.bound > dearest + 1e-6 * std::max(1.0, std::abs(dearest))) {
+      // Weak duality: no schedule costs that much, so there is none.
+      state.SetFailed(milp::SolveStatus::kInfeasible);
+      state.Step("LP bound " + FormatG(dual.bound, 8) + " by " + method_note +
+                 " above the dearest schedule the rules allow (" + FormatG(dearest, 8) +
+                 "): infeasible");
+      return;
+    }
     state.SetRelaxation(std::move(r), dual);
     state.RaiseBound(dual.bound);
     const double bound = state.bound();
-    state.Step("LP bound " + FormatG(dual.bound, 8) +
-               (bound > dual.bound ? " (" + FormatG(bound, 8) + " on the objective step)"
-                                   : std::string()) +
-               " by " + method_note + " in " + FormatG(state.Elapsed() - t0, 3) + " s" +
-               dormant_note);
+    const bool firing = bound == state.milp().least_firing_objective() &&
+                        bound > milp::RoundBoundToStep(state.lp(), dual.bound, state.step());
+    state.Step(
+        "LP bound " + FormatG(dual.bound, 8) +
+        (firing
+             ? " (" + FormatG(bound, 8) + ": every schedule fires, its burns at least the minimum)"
+         : bound > dual.bound ? " (" + FormatG(bound, 8) + " on the objective step)"
+                              : std::string()) +
+        " by " + method_note + " in " + FormatG(state.Elapsed() - t0, 3) + " s" + dormant_note);
     state.Report(milp::SolvePhase::kPresolve, false);
   }
 

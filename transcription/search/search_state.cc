@@ -58,7 +58,14 @@ bool SearchState::Offer(Eigen::VectorXd x, const std::string& source) {
 }
 
 void SearchState::RaiseBound(double bound) {
-  const double rounded = milp::RoundBoundToStep(lp_, bound, step_);
+  double rounded = milp::RoundBoundToStep(lp_, bound, step_);
+  // Above the zero schedule's objective (with a margin far below any slot's
+  // cost), every schedule fires: at least the least firing objective.
+  const double least = milp_.least_firing_objective();
+  if (std::isfinite(least) && least > rounded &&
+      bound > lp_.objective_offset + 1e-6 * (least - lp_.objective_offset)) {
+    rounded = least;
+  }
   if (rounded > bound_) bound_ = rounded;
   if (has_incumbent() && bound_ > objective_) bound_ = objective_;
 }
@@ -128,6 +135,9 @@ milp::SolveOptions SearchState::SubOptions(bool global_bound) const {
   o.initial_solution.reset();
   o.complete_solution = nullptr;
   o.objective_step = step_;
+  // An incumbent within the gap of the search's bound ends the search, so
+  // it ends the sub-solve too (CBC alone would go on for its own bound).
+  o.known_bound = std::isfinite(bound_) ? bound_ : kNaN;
   const double offset = Elapsed();
   o.progress = nullptr;
   if (options_.progress) {
